@@ -1,0 +1,101 @@
+"""Browser-test fixtures: a real workbench server on a free port and headless Chromium.
+
+Playwright drives Debian's /usr/bin/chromium (`playwright install` cannot download here).
+With CI=true a missing browser fails the run instead of skipping. A failing test saves a
+screenshot and the page HTML under tests/e2e/artifacts/.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from workbench.gui.app import WorkbenchApp, start_server
+from workbench.service import Workbench
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM = os.environ.get("WORKBENCH_CHROMIUM", "/usr/bin/chromium")
+ARTIFACTS = Path(__file__).resolve().parent / "artifacts"
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+    "--disable-quic",
+]
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> Iterator[None]:
+    outcome = yield
+    rep = outcome.get_result()  # type: ignore[attr-defined]
+    setattr(item, f"rep_{rep.when}", rep)
+
+
+@pytest.fixture(scope="session")
+def browser() -> Iterator[object]:
+    if not Path(CHROMIUM).is_file():
+        if os.environ.get("CI") == "true":
+            pytest.fail(f"{CHROMIUM} is missing; .ci/run installs Debian's chromium")
+        pytest.skip(f"{CHROMIUM} is missing (apt-get install chromium)")
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def app() -> Iterator[WorkbenchApp]:
+    wb = Workbench.open(ROOT / "projects" / "mz07_cell.json")
+    port = free_port()
+    server = start_server("127.0.0.1", port)
+    application = WorkbenchApp(server, wb)
+    try:
+        yield application
+    finally:
+        server.stop()
+
+
+@pytest.fixture
+def page(browser: object, app: WorkbenchApp, request: pytest.FixtureRequest) -> Iterator[object]:
+    context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
+    pg = context.new_page()
+    port = app.server.get_port()
+    pg.goto(f"http://127.0.0.1:{port}/?hideViserLogo"
+            "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45")
+    wait_for(lambda: len(app.server.get_clients()) > 0, what="the page to connect")
+    pg.get_by_role("tab", name="Robot").wait_for(timeout=20_000)
+    yield pg
+    rep = getattr(request.node, "rep_call", None)
+    if rep is not None and rep.failed:
+        ARTIFACTS.mkdir(exist_ok=True)
+        pg.screenshot(path=str(ARTIFACTS / f"{request.node.name}.png"))
+        (ARTIFACTS / f"{request.node.name}.html").write_text(pg.content())
+    context.close()
+
+
+def wait_for(predicate, *, timeout: float = 15.0, what: str = "condition") -> None:  # type: ignore[no-untyped-def]
+    """Poll `predicate` until it is true; fail naming `what` after `timeout` seconds."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return
+        time.sleep(0.05)
+    pytest.fail(f"timed out after {timeout} s waiting for {what}")

@@ -1,0 +1,71 @@
+"""The Robot tab in a real Chromium: jog by slider, collision colouring, project upload/download."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tests_e2e_helpers import canvas_png, set_slider  # type: ignore[import-not-found]
+from workbench.gui.app import WorkbenchApp
+from workbench.gui.scene import COLLISION_COLOR, ROBOT_COLOR
+
+pytestmark = pytest.mark.e2e
+DOCS = Path(__file__).resolve().parents[2] / "docs"
+
+
+def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+    from conftest import wait_for  # type: ignore[import-not-found]
+
+    sliders = page.get_by_role("slider")
+    assert sliders.count() >= 6
+    before = canvas_png(page)
+    DOCS.mkdir(exist_ok=True)
+    (DOCS / "screenshot.png").write_bytes(page.screenshot())
+
+    set_slider(page, "J1 [deg]", 35.0)
+    wait_for(lambda: abs(np.degrees(app.wb.joints[0]) - 35.0) < 1e-6, what="J1 = 35 deg on the server")
+    # The link poses in the scene follow the server's joints.
+    T = app.wb.link_poses()[1]
+    node = app.scene.links["link1"]
+    assert np.allclose(node.position, T[:3, 3], atol=1e-6)
+    page.wait_for_timeout(800)
+    after = canvas_png(page)
+    assert before != after, "the 3D view did not change after moving J1"
+
+
+def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+    from conftest import wait_for  # type: ignore[import-not-found]
+
+    # J2 forward drives the arm into the table in front of the robot.
+    set_slider(page, "J2 [deg]", 60.0)
+    wait_for(lambda: app.wb.collision_status().in_collision, what="a collision on the server")
+    hit = app.wb.collision_status().colliding_bodies()
+    assert any(tuple(app.scene.links[n].color) == COLLISION_COLOR for n in hit if n in app.scene.links)
+    free = [n for n in app.scene.links if n not in hit and n != "tool"]
+    assert all(tuple(app.scene.links[n].color) == ROBOT_COLOR for n in free)
+    page.get_by_text("Collision:").first.wait_for(timeout=10_000)
+
+
+def test_upload_bad_project_shows_field_and_keeps_state(page, app: WorkbenchApp, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    page.get_by_role("tab", name="Project").click()
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps({"schema_version": 1, "cell": {"objects": [
+        {"name": "a", "shape": "box", "size": [1, 2], "pose": {"xyz": [0, 0, 0]}}]}}))
+    name_before = app.wb.project.name
+    with page.expect_file_chooser() as fc:
+        page.get_by_role("button", name="Load project JSON").click()
+    fc.value.set_files(str(bad))
+    page.get_by_text("cell.objects[0].size").first.wait_for(timeout=10_000)
+    assert app.wb.project.name == name_before
+
+
+def test_download_gives_the_current_project(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+    page.get_by_role("tab", name="Project").click()
+    with page.expect_download() as dl:
+        page.get_by_role("button", name="Download project JSON").click()
+    data = json.loads(Path(dl.value.path()).read_text())
+    assert data == json.loads(app.wb.to_json())
+    assert data["robot"]["preset"] == "mz07"

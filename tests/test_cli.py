@@ -1,0 +1,54 @@
+"""The command line: check, serve on a busy port, and clean one-line errors without tracebacks."""
+
+from __future__ import annotations
+
+import json
+import socket
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run(*args: str, timeout: float = 120) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "workbench", *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+def test_check_example_is_collision_free() -> None:
+    res = run("check", "projects/mz07_cell.json")
+    assert res.returncode == 0, res.stderr
+    assert "collision-free" in res.stdout
+
+
+def test_check_bad_project_gives_one_line_reason(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps({"schema_version": 1, "robot": {"preset": "mz07", "bogus": 1}}))
+    res = run("check", str(bad))
+    assert res.returncode == 2
+    assert "Traceback" not in res.stderr
+    assert "robot.bogus: unknown field" in res.stderr
+    bad.write_text('{"schema_version": 1,')
+    res = run("check", str(bad))
+    assert res.returncode == 2 and "not valid JSON at line 1" in res.stderr
+
+
+def test_check_colliding_configuration_exits_1(tmp_path: Path) -> None:
+    data = json.loads((ROOT / "projects" / "mz07_cell.json").read_text())
+    data["robot"]["joints"] = [0, 60, 0, 0, 0, 0]
+    path = tmp_path / "hit.json"
+    path.write_text(json.dumps(data))
+    res = run("check", str(path))
+    assert res.returncode == 1 and "table" in res.stdout
+
+
+def test_serve_on_busy_port_fails_clearly() -> None:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        port = s.getsockname()[1]
+        res = run("serve", "projects/mz07_cell.json", "--port", str(port), timeout=60)
+    assert res.returncode == 2
+    assert f"cannot listen on 127.0.0.1:{port}" in res.stderr and "--port" in res.stderr
+    assert "Traceback" not in res.stderr

@@ -1,0 +1,141 @@
+"""Exact collision and distance checks with python-fcl: moving bodies against a static cell.
+
+python-fcl meshes are surfaces: a body wholly inside a closed mesh reports no collision
+(FACTS.md). Pairs that fcl calls free but whose bounding boxes overlap get a containment
+test (one vertex of each inside the other), so enclosure counts as collision.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import fcl
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+
+from workbench.collision.shapes import Solid, fcl_transform
+from workbench.errors import InputError
+
+
+@dataclass(frozen=True)
+class CollisionReport:
+    """Result of one check: colliding pairs by name and the clearance of the rest [m]."""
+
+    colliding: tuple[tuple[str, str], ...]
+    min_distance: float  # smallest distance over checked pairs; 0 when any pair collides
+    closest_pair: tuple[str, str] | None
+    pairs_checked: int
+
+    @property
+    def in_collision(self) -> bool:
+        """Return True when any pair collides."""
+        return bool(self.colliding)
+
+    def colliding_bodies(self) -> set[str]:
+        """Return the names of all bodies in a colliding pair."""
+        return {name for pair in self.colliding for name in pair}
+
+
+class _Entry:
+    def __init__(self, solid: Solid) -> None:
+        self.solid = solid
+        self.obj = fcl.CollisionObject(solid.fcl_geometry(), fcl.Transform())
+        mesh = solid.to_trimesh()
+        self.mesh = mesh
+        self.local_bounds = np.asarray(mesh.bounds, float)
+        # A point on the surface, for the containment test.
+        self.probe = np.asarray(mesh.vertices[0], float)
+        self.T = np.eye(4)
+
+    def place(self, T: NDArray[np.float64]) -> None:
+        self.T = np.asarray(T, float)
+        self.obj.setTransform(fcl_transform(self.T))
+
+    def world_aabb(self) -> NDArray[np.float64]:
+        lo, hi = self.local_bounds
+        corners = np.array(list(itertools.product(*zip(lo, hi, strict=True))))
+        w = corners @ self.T[:3, :3].T + self.T[:3, 3]
+        return np.stack([w.min(0), w.max(0)])
+
+    def contains_world_point(self, p: NDArray[np.float64]) -> bool:
+        if self.solid.kind != "mesh" or not self.mesh.is_watertight:
+            return False  # fcl primitives are solids already; open meshes have no inside
+        local = (p - self.T[:3, 3]) @ self.T[:3, :3]
+        return bool(self.mesh.contains(local[None])[0])
+
+
+class CollisionScene:
+    """Moving bodies and static obstacles with the pairs to check between them.
+
+    `moving` bodies are placed on every `check`; `static` ones once. `self_pairs` are
+    pairs of moving-body names to check against each other; `ignore` lists
+    moving-static pairs never to check (e.g. a robot base bolted to its pedestal).
+    """
+
+    def __init__(
+        self,
+        moving: list[Solid],
+        static: list[tuple[Solid, NDArray[np.float64]]],
+        *,
+        self_pairs: list[tuple[str, str]] = (),  # type: ignore[assignment]
+        ignore: list[tuple[str, str]] = (),  # type: ignore[assignment]
+    ) -> None:
+        names = [s.name for s in moving] + [s.name for s, _ in static]
+        dupes = {n for n in names if names.count(n) > 1}
+        if dupes:
+            raise InputError(f"body names must be unique, repeated: {sorted(dupes)}")
+        self.moving = {s.name: _Entry(s) for s in moving}
+        self.static = {}
+        for solid, T in static:
+            entry = _Entry(solid)
+            entry.place(T)
+            self.static[solid.name] = entry
+        skip = {frozenset(p) for p in ignore}
+        self.pairs: list[tuple[str, str]] = [
+            (m, s) for m in self.moving for s in self.static if frozenset((m, s)) not in skip
+        ]
+        for a, b in self_pairs:
+            if a not in self.moving or b not in self.moving:
+                raise InputError(f"self-collision pair ({a}, {b}) names an unknown moving body")
+            self.pairs.append((a, b))
+
+    def _entry(self, name: str) -> _Entry:
+        return self.moving.get(name) or self.static[name]
+
+    def check(
+        self, poses: dict[str, NDArray[np.float64]], *, distance: bool = True
+    ) -> CollisionReport:
+        """Return the report for moving bodies placed at `poses` (name -> (4, 4) world pose)."""
+        for name, T in poses.items():
+            self.moving[name].place(T)
+        colliding: list[tuple[str, str]] = []
+        best, best_pair = np.inf, None
+        request = fcl.CollisionRequest()
+        dist_request = fcl.DistanceRequest()
+        for a, b in self.pairs:
+            ea, eb = self._entry(a), self._entry(b)
+            hit = fcl.collide(ea.obj, eb.obj, request, fcl.CollisionResult()) > 0
+            if not hit and _aabbs_overlap(ea.world_aabb(), eb.world_aabb()):
+                hit = eb.contains_world_point(ea.T[:3, :3] @ ea.probe + ea.T[:3, 3]) or (
+                    ea.contains_world_point(eb.T[:3, :3] @ eb.probe + eb.T[:3, 3])
+                )
+            if hit:
+                colliding.append((a, b))
+                best, best_pair = 0.0, (a, b)
+                continue
+            if distance and best > 0:
+                d = fcl.distance(ea.obj, eb.obj, dist_request, fcl.DistanceResult())
+                if d < best:
+                    best, best_pair = max(float(d), 0.0), (a, b)
+        return CollisionReport(tuple(colliding), float(best), best_pair, len(self.pairs))
+
+
+def _aabbs_overlap(a: NDArray[np.float64], b: NDArray[np.float64]) -> bool:
+    return bool(np.all(a[0] <= b[1]) and np.all(b[0] <= a[1]))
+
+
+def solid_from_trimesh(name: str, mesh: trimesh.Trimesh) -> Solid:
+    """Return a mesh `Solid` named `name`."""
+    return Solid(name=name, kind="mesh", mesh=mesh)

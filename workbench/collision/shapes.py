@@ -1,0 +1,77 @@
+"""Collision shapes: named solids (box, cylinder, mesh) and their python-fcl geometry."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import fcl
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+
+from workbench.errors import InputError, MeshError
+
+
+@dataclass(frozen=True)
+class Solid:
+    """A closed solid in its own frame [m]: a box (`size`), a z-axis cylinder or a mesh."""
+
+    name: str
+    kind: Literal["box", "cylinder", "mesh"]
+    size: tuple[float, float, float] | None = None
+    radius: float | None = None
+    height: float | None = None
+    mesh: trimesh.Trimesh | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if self.kind == "box" and (self.size is None or min(self.size) <= 0):
+            raise InputError(f"{self.name}: a box needs three positive edge lengths, got {self.size}")
+        if self.kind == "cylinder" and not (
+            self.radius and self.height and self.radius > 0 and self.height > 0
+        ):
+            raise InputError(f"{self.name}: a cylinder needs radius > 0 and height > 0")
+        if self.kind == "mesh":
+            check_mesh(self.mesh, self.name)
+
+    def to_trimesh(self) -> trimesh.Trimesh:
+        """Return a triangle mesh of the solid in its own frame [m]."""
+        if self.kind == "box":
+            return trimesh.creation.box(extents=self.size)
+        if self.kind == "cylinder":
+            return trimesh.creation.cylinder(radius=self.radius, height=self.height, sections=32)
+        assert self.mesh is not None
+        return self.mesh
+
+    def fcl_geometry(self) -> fcl.CollisionGeometry:
+        """Return the python-fcl geometry: solid primitives for box and cylinder, a BVH surface for meshes."""
+        if self.kind == "box":
+            return fcl.Box(*self.size)  # type: ignore[misc]
+        if self.kind == "cylinder":
+            return fcl.Cylinder(self.radius, self.height)
+        return bvh_model(self.to_trimesh())
+
+
+def check_mesh(mesh: trimesh.Trimesh | None, name: str) -> trimesh.Trimesh:
+    """Return `mesh` if usable for collision checks; raise `MeshError` naming `name` otherwise."""
+    if mesh is None or not isinstance(mesh, trimesh.Trimesh):
+        raise MeshError(f"{name}: expected a triangle mesh, got {type(mesh).__name__}")
+    if len(mesh.faces) == 0:
+        raise MeshError(f"{name}: the mesh has no triangles")
+    if not np.all(np.isfinite(mesh.vertices)):
+        raise MeshError(f"{name}: the mesh has NaN or infinite vertex coordinates")
+    return mesh
+
+
+def bvh_model(mesh: trimesh.Trimesh) -> fcl.BVHModel:
+    """Return a python-fcl BVH (a surface, not a solid) of `mesh`."""
+    model = fcl.BVHModel()
+    model.beginModel(len(mesh.vertices), len(mesh.faces))
+    model.addSubModel(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int32))
+    model.endModel()
+    return model
+
+
+def fcl_transform(T: NDArray[np.float64]) -> fcl.Transform:
+    """Return a python-fcl transform from a (4, 4) matrix."""
+    return fcl.Transform(np.asarray(T[:3, :3], float), np.asarray(T[:3, 3], float))

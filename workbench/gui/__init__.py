@@ -1,0 +1,1 @@
+"""The browser GUI (viser): a thin adapter over `workbench.service`."""

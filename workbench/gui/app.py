@@ -1,0 +1,89 @@
+"""The workbench GUI: one viser server over one `Workbench`."""
+
+from __future__ import annotations
+
+import logging
+import socket
+import threading
+import time
+from pathlib import Path
+
+import viser
+
+from workbench.errors import ServerError
+from workbench.gui.jog_panel import JogPanel
+from workbench.gui.project_panel import ProjectPanel
+from workbench.gui.scene import RobotScene
+from workbench.service import Workbench
+
+log = logging.getLogger("workbench.gui")
+
+
+def ensure_port_free(host: str, port: int) -> None:
+    """Raise ServerError when `host:port` cannot be bound (viser would silently move on)."""
+    if not 0 < port < 65536:
+        raise ServerError(f"--port: {port} is not a valid port (1..65535)")
+    with socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET, socket.SOCK_STREAM) as sock:
+        try:
+            sock.bind((host, port))
+        except OSError as exc:
+            raise ServerError(
+                f"cannot listen on {host}:{port}: {exc.strerror}. Stop the other program using"
+                f" port {port}, or pick another with --port."
+            ) from None
+
+
+def start_server(host: str = "127.0.0.1", port: int = 8080) -> viser.ViserServer:
+    """Return a running viser server bound exactly to `host:port`; raises ServerError otherwise."""
+    ensure_port_free(host, port)
+    server = viser.ViserServer(host=host, port=port, label="Robot workbench", verbose=False)
+    if server.get_port() != port:
+        actual = server.get_port()
+        server.stop()
+        raise ServerError(f"port {port} was taken while starting (viser moved to {actual}); retry")
+    return server
+
+
+class WorkbenchApp:
+    """Scene and panels of one workbench on one server; rebuilt when the project is replaced."""
+
+    def __init__(self, server: viser.ViserServer, wb: Workbench) -> None:
+        self.server = server
+        self.wb = wb
+        self.lock = threading.RLock()
+        server.scene.set_up_direction("+z")
+        server.scene.add_grid("/grid", width=3.0, height=3.0, cell_size=0.1, plane="xy",
+                              position=(0.0, 0.0, 0.0005))
+        server.gui.configure_theme(control_width="large", dark_mode=False)
+        self.tabs = server.gui.add_tab_group()
+        self.robot_tab = self.tabs.add_tab("Robot")
+        self.project_tab = self.tabs.add_tab("Project")
+        self.scene = RobotScene(server, wb)
+        with self.robot_tab:
+            self.jog = JogPanel(server, wb, on_moved=self.scene.update)
+        with self.project_tab:
+            self.project_panel = ProjectPanel(server, wb, on_replaced=self.rebuild)
+
+    def rebuild(self) -> None:
+        """Recreate the scene and jog panel after the workbench switched projects."""
+        with self.lock:
+            self.jog.remove()
+            self.scene.clear()
+            self.scene.build()
+            with self.robot_tab:
+                self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
+
+
+def serve(project: str | Path | None, *, host: str = "127.0.0.1", port: int = 8080) -> None:
+    """Serve the workbench on `host:port` until interrupted (Ctrl-C)."""
+    logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
+    wb = Workbench.open(project) if project is not None else Workbench.from_dict({"schema_version": 1})
+    server = start_server(host, port)
+    WorkbenchApp(server, wb)
+    shown = "localhost" if host in ("127.0.0.1", "0.0.0.0") else host
+    print(f"workbench: serving {wb.project.name!r} on http://{shown}:{port}", flush=True)
+    try:
+        while True:
+            time.sleep(3600)
+    finally:
+        server.stop()

@@ -1,0 +1,132 @@
+"""The "Robot" tab: joint sliders [deg], the TCP gizmo driving IK, the IK configurations, status."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import viser
+
+from workbench.errors import UnreachableError
+from workbench.geometry.transforms import make_transform, matrix_to_rpy, matrix_to_wxyz, wxyz_to_matrix
+from workbench.gui.notify import guarded
+from workbench.service import Workbench
+
+DEG = 180.0 / np.pi
+
+
+class JogPanel:
+    """Jog controls bound to one workbench; `on_moved` redraws the scene after each change."""
+
+    def __init__(self, server: viser.ViserServer, wb: Workbench, on_moved: Callable[[], None]) -> None:
+        self.server = server
+        self.wb = wb
+        self.on_moved = on_moved
+        self._syncing = False
+        self.handles: list[viser.GuiInputHandle] = []  # type: ignore[type-arg]
+        self.build()
+
+    def build(self) -> None:
+        """Create the sliders, dropdown, gizmo and status for the current project."""
+        s, wb = self.server, self.wb
+        q = wb.joints * DEG
+        self.sliders = []
+        for j in range(wb.robot.dof):
+            lo, hi = wb.robot.limits[j] * DEG
+            slider = s.gui.add_slider(f"J{j + 1} [deg]", min=float(np.floor(lo * 10) / 10),
+                                      max=float(np.ceil(hi * 10) / 10), step=0.1,
+                                      initial_value=float(np.clip(q[j], lo, hi)))
+            slider.on_update(guarded(s, f"Joint {j + 1}")(self._on_slider))
+            self.sliders.append(slider)
+        self.config = s.gui.add_dropdown("IK configuration", options=("current",),
+                                         initial_value="current",
+                                         hint="Arm configurations that reach the current TCP pose")
+        self.config.on_update(guarded(s, "IK configuration")(self._on_config))
+        self.status = s.gui.add_markdown("")
+        self.handles = [*self.sliders, self.config, self.status]
+        self.gizmo = s.scene.add_transform_controls("/tcp_gizmo", scale=0.18, depth_test=False)
+        self.gizmo.on_update(guarded(s, "Move TCP")(self._on_gizmo))
+        self.refresh()
+
+    def remove(self) -> None:
+        """Remove every handle (before the project is replaced)."""
+        for h in self.handles:
+            h.remove()
+        self.gizmo.remove()
+
+    # -- callbacks ----------------------------------------------------------------------
+    def _on_slider(self, _event: object) -> None:
+        if self._syncing:
+            return
+        self.wb.set_joints(np.array([sl.value for sl in self.sliders]) / DEG)
+        self.refresh()
+
+    def _on_config(self, _event: object) -> None:
+        if self._syncing or self.config.value == "current":
+            return
+        index = list(self.config.options).index(self.config.value) - 1
+        self.wb.move_tcp(self.wb.tcp_pose(), configuration=index)
+        self.refresh()
+
+    def _on_gizmo(self, event: viser.TransformControlsEvent) -> None:
+        # IK is committed on release: during the drag only the gizmo moves.
+        if event.phase != "end":
+            return
+        T = make_transform(wxyz_to_matrix(np.asarray(self.gizmo.wxyz)), np.asarray(self.gizmo.position))
+        try:
+            self.wb.move_tcp(T)
+        except UnreachableError:
+            self.refresh()  # the arm stays; put the gizmo back on the TCP
+            raise
+        self.refresh()
+
+    # -- state -> widgets ---------------------------------------------------------------
+    def refresh(self) -> None:
+        """Put the sliders, gizmo, dropdown and status in line with the workbench's state."""
+        wb = self.wb
+        q = wb.joints * DEG
+        T = wb.tcp_pose()
+        try:
+            sols = wb.ik_solutions(T)
+        except UnreachableError:
+            sols = []
+        labels = [f"{i + 1}: {s.label}" for i, s in enumerate(sols)]
+        self._syncing = True
+        try:
+            for slider, v in zip(self.sliders, q, strict=True):
+                if abs(slider.value - v) > 1e-9:
+                    slider.value = float(v)
+            self.config.options = ("current", *labels)
+            self.config.value = "current"
+        finally:
+            self._syncing = False
+        self.gizmo.wxyz = tuple(matrix_to_wxyz(T[:3, :3]))
+        self.gizmo.position = tuple(T[:3, 3])
+        self.on_moved()
+        self.status.content = self._status_text(T, len(sols))
+
+    def _status_text(self, T: np.ndarray, n_solutions: int) -> str:
+        wb = self.wb
+        xyz = T[:3, 3] * 1000
+        rpy = matrix_to_rpy(T[:3, :3]) * DEG
+        report = wb.collision_status()
+        if report.in_collision:
+            pairs = ", ".join(f"{a}–{b}" for a, b in report.colliding)
+            coll = f"**Collision:** {pairs}"
+        else:
+            pair = " – ".join(report.closest_pair) if report.closest_pair else "none"
+            coll = f"Collision-free, clearance **{report.min_distance * 1000:.1f} mm** ({pair})"
+        lines = [
+            f"TCP [mm]: {xyz[0]:.1f}, {xyz[1]:.1f}, {xyz[2]:.1f}",
+            f"RPY [deg]: {rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}",
+            f"IK solutions: {n_solutions}",
+            coll,
+        ]
+        try:
+            sing = wb.singularities()
+            near = [k for k in ("wrist", "elbow", "shoulder") if getattr(sing, k, False)]
+            if near:
+                lines.append(f"**Near singularity:** {', '.join(near)}")
+        except Exception:  # singularity analysis is advisory
+            pass
+        return "  \n".join(lines)

@@ -1,0 +1,48 @@
+"""Error reporting in the browser: every callback's WorkbenchError becomes a notification."""
+
+from __future__ import annotations
+
+import functools
+import logging
+import traceback
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import viser
+
+from workbench.errors import WorkbenchError
+
+log = logging.getLogger("workbench.gui")
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+def notify(server: viser.ViserServer, client: viser.ClientHandle | None, title: str, body: str,
+           *, color: str = "red") -> None:
+    """Show a notification to `client`, or to every client when it is None."""
+    targets = [client] if client is not None else list(server.get_clients().values())
+    for c in targets:
+        c.add_notification(title, body, color=color, with_close_button=True,  # type: ignore[arg-type]
+                           auto_close_seconds=None if color == "red" else 6.0)
+
+
+def guarded(server: viser.ViserServer, title: str) -> Callable[[F], F]:
+    """Return a decorator that turns errors raised by a GUI callback into notifications."""
+
+    def wrap(func: F) -> F:
+        @functools.wraps(func)
+        def inner(event: Any) -> Any:
+            client = getattr(event, "client", None)
+            try:
+                return func(event)
+            except WorkbenchError as exc:
+                log.info("%s: %s", title, exc)
+                notify(server, client, title, str(exc))
+            except Exception as exc:  # a bug: still tell the user, and log the traceback
+                log.error("%s failed:\n%s", title, traceback.format_exc())
+                notify(server, client, f"{title}: internal error",
+                       f"{type(exc).__name__}: {exc}. This is a bug; the log has the traceback.")
+            return None
+
+        return inner  # type: ignore[return-value]
+
+    return wrap

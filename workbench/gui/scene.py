@@ -1,0 +1,87 @@
+"""Scene nodes of the robot, its tool and the cell; moved by pose, recoloured on collision."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+import viser
+from numpy.typing import NDArray
+
+from workbench.geometry.transforms import matrix_to_wxyz
+from workbench.service import Workbench
+
+ROBOT_COLOR = (235, 235, 240)
+COLLISION_COLOR = (230, 40, 40)
+
+
+def _pose_kwargs(T: NDArray[np.float64]) -> dict[str, tuple[float, ...]]:
+    return {"wxyz": tuple(matrix_to_wxyz(T[:3, :3])), "position": tuple(T[:3, 3])}
+
+
+def _add_mesh(server: viser.ViserServer, name: str, mesh: trimesh.Trimesh,
+              color: tuple[int, int, int], T: NDArray[np.float64]) -> viser.MeshHandle:
+    return server.scene.add_mesh_simple(
+        name, np.asarray(mesh.vertices, np.float32), np.asarray(mesh.faces, np.uint32),
+        color=color, flat_shading=False, **_pose_kwargs(T),
+    )
+
+
+class RobotScene:
+    """The 3D nodes of one workbench: cell bodies, robot links, tool and TCP frame."""
+
+    def __init__(self, server: viser.ViserServer, wb: Workbench) -> None:
+        self.server = server
+        self.wb = wb
+        self.nodes: list[viser.SceneNodeHandle] = []
+        self.links: dict[str, viser.MeshHandle] = {}
+        self.build()
+
+    def build(self) -> None:
+        """Create every node for the current project (after `clear`, or the first time)."""
+        wb, s = self.wb, self.server
+        for body in wb.cell:
+            self.nodes.append(_add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color,
+                                        body.T_world_body))
+        poses = wb.link_poses()
+        names = wb.checker.link_names
+        for name, mesh, T in zip(names, wb.setup.link_meshes, poses, strict=True):
+            h = _add_mesh(s, f"/robot/{name}", mesh, ROBOT_COLOR, T)
+            self.links[name] = h
+            self.nodes.append(h)
+        if wb.setup.tool_mesh is not None:
+            color = tuple(wb.project.tool.color)
+            h = _add_mesh(s, "/robot/tool", wb.setup.tool_mesh, color, poses[-1])  # type: ignore[arg-type]
+            self.links["tool"] = h
+            self.nodes.append(h)
+        self.tcp_frame = s.scene.add_frame("/tcp", axes_length=0.08, axes_radius=0.004,
+                                           **_pose_kwargs(wb.tcp_pose()))
+        self.nodes.append(self.tcp_frame)
+        self.update()
+
+    def clear(self) -> None:
+        """Remove every node (before a project is replaced)."""
+        for h in self.nodes:
+            h.remove()
+        self.nodes.clear()
+        self.links.clear()
+
+    def update(self) -> None:
+        """Move the robot to the workbench's joints and colour colliding bodies red."""
+        wb = self.wb
+        poses = wb.link_poses()
+        report = wb.collision_status()
+        hit = report.colliding_bodies()
+        tool_color = tuple(wb.project.tool.color)
+        with self.server.atomic():
+            for i, name in enumerate(wb.checker.link_names):
+                h = self.links[name]
+                kw = _pose_kwargs(poses[i])
+                h.wxyz, h.position = kw["wxyz"], kw["position"]
+                h.color = COLLISION_COLOR if name in hit else ROBOT_COLOR
+            if "tool" in self.links:
+                h = self.links["tool"]
+                kw = _pose_kwargs(poses[-1])
+                h.wxyz, h.position = kw["wxyz"], kw["position"]
+                h.color = COLLISION_COLOR if "tool" in hit else tool_color
+            kw = _pose_kwargs(wb.tcp_pose())
+            self.tcp_frame.wxyz, self.tcp_frame.position = kw["wxyz"], kw["position"]

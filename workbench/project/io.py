@@ -1,0 +1,191 @@
+"""Loading (parse, migrate, validate) and atomic saving of project files."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from pydantic import ValidationError
+
+from workbench.errors import ProjectError, SchemaVersionError
+from workbench.project.models import SCHEMA_VERSION, Project
+
+# Migrations from version N to N + 1, applied in order on the parsed JSON.
+MIGRATIONS: dict[int, Callable[[dict[str, Any]], dict[str, Any]]] = {}
+
+
+def field_path(loc: tuple[int | str, ...]) -> str:
+    """Return a JSON path such as ``cell.objects[2].pose.xyz`` for a pydantic error location."""
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        elif str(part).startswith("function-after") or str(part).startswith("function-before"):
+            continue
+        else:
+            out += ("." if out else "") + str(part)
+    return out or "(top level)"
+
+
+def _message(err: dict[str, Any]) -> str:
+    msg = str(err["msg"])
+    for prefix in ("Value error, ", "Assertion failed, "):
+        msg = msg.removeprefix(prefix)
+    if err["type"] == "extra_forbidden":
+        msg = "unknown field; remove it or check its spelling"
+    elif err["type"] == "finite_number":
+        msg = "must be a finite number (NaN and infinity are not allowed)"
+    elif err["type"] == "missing":
+        msg = "required field is missing"
+    elif err["type"] == "literal_error" and err["loc"] == ("schema_version",):
+        msg = f"unsupported schema_version; this build reads {SCHEMA_VERSION}"
+    return msg
+
+
+def problems_from(error: ValidationError) -> list[tuple[str, str]]:
+    """Return ``(field path, message)`` pairs from a pydantic validation error."""
+    return [(field_path(tuple(e["loc"])), _message(dict(e))) for e in error.errors()]
+
+
+def _reject_nonfinite(value: str) -> float:
+    raise ValueError(f"{value} is not allowed")
+
+
+def _migrate(data: dict[str, Any]) -> dict[str, Any]:
+    if "schema_version" not in data:
+        raise SchemaVersionError(
+            f'schema_version: missing; add "schema_version": {SCHEMA_VERSION} at the top level',
+            [("schema_version", "required field is missing")],
+        )
+    version = data["schema_version"]
+    if not isinstance(version, int) or isinstance(version, bool):
+        raise SchemaVersionError(
+            f"schema_version: expected an integer, got {version!r}",
+            [("schema_version", "expected an integer")],
+        )
+    if version > SCHEMA_VERSION:
+        raise SchemaVersionError(
+            f"schema_version: {version} was written by a newer workbench; this build reads up to"
+            f" {SCHEMA_VERSION}. Upgrade the workbench to open it.",
+            [("schema_version", "newer than supported")],
+        )
+    if version < 1:
+        raise SchemaVersionError(
+            f"schema_version: {version} is not a released format (the first is 1)",
+            [("schema_version", "unknown old version")],
+        )
+    while version < SCHEMA_VERSION:
+        data = MIGRATIONS[version](data)
+        version += 1
+        data["schema_version"] = version
+    return data
+
+
+def project_from_dict(data: object, *, source: str = "project") -> Project:
+    """Return a validated `Project` from parsed JSON; raises `ProjectError` naming each bad field."""
+    if not isinstance(data, dict):
+        raise ProjectError(
+            f"{source}: expected a JSON object at the top level, got {type(data).__name__}"
+        )
+    data = _migrate(dict(data))
+    try:
+        return Project.model_validate(data)
+    except ValidationError as exc:
+        problems = problems_from(exc)
+        lines = "\n".join(f"  {path}: {msg}" for path, msg in problems)
+        raise ProjectError(f"{source}: {len(problems)} problem(s)\n{lines}", problems) from None
+
+
+def parse_project_json(text: str | bytes, *, source: str = "project") -> Project:
+    """Return a validated `Project` from JSON text; broken JSON names the line and column."""
+    try:
+        data = json.loads(text, parse_constant=_reject_nonfinite)
+    except json.JSONDecodeError as exc:
+        raise ProjectError(
+            f"{source}: not valid JSON at line {exc.lineno} column {exc.colno}: {exc.msg}",
+            [("(file)", exc.msg)],
+        ) from None
+    except ValueError as exc:  # NaN / Infinity literals
+        raise ProjectError(
+            f"{source}: {exc}; numbers must be finite", [("(file)", str(exc))]
+        ) from None
+    except UnicodeDecodeError as exc:
+        raise ProjectError(f"{source}: not UTF-8 text ({exc})") from None
+    return project_from_dict(data, source=source)
+
+
+def load_project(path: str | os.PathLike[str]) -> Project:
+    """Return the validated `Project` stored at `path`."""
+    p = Path(path)
+    try:
+        text = p.read_bytes()
+    except FileNotFoundError:
+        raise ProjectError(f"{p}: no such file") from None
+    except OSError as exc:
+        raise ProjectError(f"{p}: cannot read ({exc.strerror})") from None
+    return parse_project_json(text, source=str(p))
+
+
+def project_to_json(project: Project) -> str:
+    """Return the project as pretty JSON text (stable key order, trailing newline)."""
+    data = project.model_dump(mode="json", exclude_none=True)
+    for v in _numbers(data):
+        if not math.isfinite(v):  # guarded by the models; a second line of defence
+            raise ProjectError("refusing to save a non-finite number")
+    return json.dumps(data, indent=2) + "\n"
+
+
+def _numbers(obj: object) -> list[float]:
+    if isinstance(obj, float):
+        return [obj]
+    if isinstance(obj, dict):
+        return [x for v in obj.values() for x in _numbers(v)]
+    if isinstance(obj, list):
+        return [x for v in obj for x in _numbers(v)]
+    return []
+
+
+def atomic_write_text(path: str | os.PathLike[str], text: str) -> None:
+    """Write `text` to `path` atomically: temporary file in the same folder, fsync, rename."""
+    p = Path(path)
+    folder = p.parent if str(p.parent) else Path(".")
+    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, p)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    try:
+        dir_fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(dir_fd)
+    finally:
+        os.close(dir_fd)
+
+
+def save_project(project: Project, path: str | os.PathLike[str]) -> None:
+    """Save `project` to `path` atomically (a crash mid-save leaves the old file intact)."""
+    text = project_to_json(project)
+    try:
+        atomic_write_text(path, text)
+    except OSError as exc:
+        raise ProjectError(f"{path}: cannot save ({exc.strerror})") from None
+
+
+def json_schema() -> dict[str, Any]:
+    """Return the JSON Schema of the project file."""
+    schema = Project.model_json_schema()
+    schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
+    schema["title"] = "Robot workbench project"
+    return schema

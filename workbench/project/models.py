@@ -1,0 +1,154 @@
+"""Pydantic models of the project file (schema version 1): millimetres and degrees.
+
+Every model forbids unknown fields and non-finite numbers, so a typo or a NaN in a
+project file is reported with its JSON path instead of being ignored.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, model_validator
+
+SCHEMA_VERSION = 1
+PRESETS = ("mz07",)
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, validate_assignment=True)
+
+
+def _vector(n: int, what: str) -> AfterValidator:
+    def check(v: list[float]) -> list[float]:
+        if len(v) != n:
+            raise ValueError(f"expected {n} numbers {what}, got {len(v)}")
+        return v
+
+    return AfterValidator(check)
+
+
+Vec3mm = Annotated[list[float], _vector(3, "[mm, mm, mm]")]
+Vec3deg = Annotated[list[float], _vector(3, "[roll, pitch, yaw] in degrees")]
+Positive = Annotated[float, Field(gt=0)]
+
+
+def _color(v: list[int]) -> list[int]:
+    if len(v) != 3 or any(not 0 <= c <= 255 for c in v):
+        raise ValueError(f"expected 3 integers 0..255 [r, g, b], got {v}")
+    return v
+
+
+Color = Annotated[list[int], AfterValidator(_color)]
+
+
+class Pose(_Model):
+    """A rigid pose: position [mm] and R = Rz(yaw) Ry(pitch) Rx(roll) [deg]."""
+
+    xyz: Vec3mm = Field(default_factory=lambda: [0.0, 0.0, 0.0])
+    rpy: Vec3deg = Field(default_factory=lambda: [0.0, 0.0, 0.0])
+
+
+class DHRow(_Model):
+    """One standard DH row Rz(theta + offset) Tz(d) Tx(a) Rx(alpha) with its joint limits."""
+
+    theta_offset: float = 0.0  # deg
+    d: float  # mm
+    a: float  # mm
+    alpha: float  # deg
+    min: float  # deg
+    max: float  # deg
+
+    @model_validator(mode="after")
+    def _limits_ordered(self) -> DHRow:
+        if not self.min < self.max:
+            raise ValueError(f"joint limits need min < max, got min={self.min}, max={self.max}")
+        return self
+
+
+class Robot(_Model):
+    """The robot: exactly one of `preset`, `dh` or `urdf`, placed at `base` in the world."""
+
+    name: str = "robot"
+    preset: Literal["mz07"] | None = None
+    dh: list[DHRow] | None = None
+    urdf: str | None = None  # path, relative to the project file
+    base: Pose = Field(default_factory=Pose)
+    joints: list[float] | None = None  # deg (rad for none): the stored configuration
+    max_velocity: list[Positive] | None = None  # deg/s per joint
+    max_acceleration: list[Positive] | None = None  # deg/s^2 per joint
+    max_jerk: list[Positive] | None = None  # deg/s^3 per joint
+    link_meshes: list[str | None] | None = None  # optional mesh per link (base first)
+
+    @model_validator(mode="after")
+    def _one_source(self) -> Robot:
+        given = [k for k in ("preset", "dh", "urdf") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise ValueError(
+                "give exactly one of 'preset' (e.g. \"mz07\"), 'dh' (rows of theta_offset, d, a,"
+                f" alpha, min, max) or 'urdf' (a file path); got {given or 'none'}"
+            )
+        if self.dh is not None and len(self.dh) == 0:
+            raise ValueError("'dh' needs at least one row")
+        return self
+
+
+class Tool(_Model):
+    """The tool on the flange: TCP pose in the flange frame, optional mesh or box shape."""
+
+    name: str = "tool"
+    tcp: Pose = Field(default_factory=Pose)
+    mesh: str | None = None  # path relative to the project file, in the flange frame
+    mesh_scale: Positive = 0.001  # mesh units -> m (files are usually in mm)
+    size: Vec3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
+    color: Color = Field(default_factory=lambda: [200, 200, 210])
+
+
+class CellObject(_Model):
+    """A named obstacle or fixture of the cell: a box, a cylinder or a mesh, at `pose`."""
+
+    name: str
+    shape: Literal["box", "cylinder", "mesh"]
+    pose: Pose = Field(default_factory=Pose)
+    size: Vec3mm | None = None  # box edge lengths [mm]
+    radius: Positive | None = None  # cylinder [mm]
+    height: Positive | None = None  # cylinder, along its z [mm]
+    path: str | None = None  # mesh file, relative to the project file
+    scale: Positive = 0.001  # mesh units -> m
+    color: Color = Field(default_factory=lambda: [170, 170, 170])
+    collide: bool = True
+
+    @model_validator(mode="after")
+    def _shape_fields(self) -> CellObject:
+        need = {"box": ("size",), "cylinder": ("radius", "height"), "mesh": ("path",)}[self.shape]
+        missing = [k for k in need if getattr(self, k) is None]
+        if missing:
+            raise ValueError(f"a {self.shape} needs {', '.join(repr(k) for k in missing)}")
+        if self.size is not None and any(s <= 0 for s in self.size):
+            raise ValueError(f"box size must be positive [mm], got {self.size}")
+        return self
+
+
+class Cell(_Model):
+    """Everything around the robot."""
+
+    objects: list[CellObject] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _unique_names(self) -> Cell:
+        seen: set[str] = set()
+        for obj in self.objects:
+            if obj.name in seen:
+                raise ValueError(f"object names must be unique; {obj.name!r} appears twice")
+            seen.add(obj.name)
+        return self
+
+
+class Project(_Model):
+    """A workbench project file."""
+
+    schema_version: Literal[1] = SCHEMA_VERSION
+    name: str = "untitled"
+    description: str = ""
+    robot: Robot = Field(default_factory=lambda: Robot(preset="mz07"))
+    tool: Tool = Field(default_factory=Tool)
+    cell: Cell = Field(default_factory=Cell)

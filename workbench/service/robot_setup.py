@@ -1,0 +1,125 @@
+"""Building the robot, its link meshes and its tool from the project's robot and tool sections."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+
+from workbench.errors import ProjectError
+from workbench.project.models import Robot, Tool
+from workbench.service.convert import DEG, MM, load_mesh_file, pose_to_matrix
+
+
+@dataclass(frozen=True)
+class RobotSetup:
+    """A robot ready to use: kinematics, link meshes (base first), tool mesh and frames."""
+
+    model: Any  # DHRobot or URDFRobot: fk, ik, link_transforms, limits, dof
+    link_meshes: list[trimesh.Trimesh]
+    T_world_base: NDArray[np.float64]
+    T_flange_tcp: NDArray[np.float64]
+    tool_mesh: trimesh.Trimesh | None
+    q0: NDArray[np.float64]
+
+
+def _per_joint(values: list[float] | None, dof: int, field: str) -> NDArray[np.float64] | None:
+    if values is None:
+        return None
+    if len(values) != dof:
+        raise ProjectError(
+            f"{field}: expected {dof} values (one per joint), got {len(values)}",
+            [(field, f"expected {dof} values")],
+        )
+    return np.asarray(values, float) * DEG
+
+
+def build_robot_model(spec: Robot, base_dir: Path) -> Any:
+    """Return the kinematic model (DHRobot or URDFRobot) of the project's robot section."""
+    from workbench.kinematics import DHRobot
+
+    if spec.preset is not None:
+        return DHRobot.mz07()
+    if spec.dh is not None:
+        rows = np.array([[r.theta_offset * DEG, r.d * MM, r.a * MM, r.alpha * DEG] for r in spec.dh])
+        limits = np.array([[r.min * DEG, r.max * DEG] for r in spec.dh])
+        return DHRobot(rows, limits, name=spec.name)
+    from workbench.kinematics import URDFRobot
+
+    assert spec.urdf is not None
+    p = Path(spec.urdf)
+    if not p.is_absolute():
+        p = base_dir / p
+    if not p.is_file():
+        raise ProjectError(
+            f"robot.urdf: file not found: {p}; fix the path (relative to the project file)",
+            [("robot.urdf", "file not found")],
+        )
+    return URDFRobot.from_file(p)
+
+
+def build_tool_mesh(tool: Tool, T_flange_tcp: NDArray[np.float64], base_dir: Path) -> trimesh.Trimesh | None:
+    """Return the tool's mesh in the flange frame [m]: the file, a box, or a rod to the TCP."""
+    if tool.mesh is not None:
+        return load_mesh_file(tool.mesh, base_dir, tool.mesh_scale, "tool.mesh")
+    if tool.size is not None:
+        ext = np.asarray(tool.size, float) * MM
+        box = trimesh.creation.box(extents=ext)
+        box.apply_translation([0.0, 0.0, ext[2] / 2])
+        return box
+    tip = T_flange_tcp[:3, 3]
+    length = float(np.linalg.norm(tip))
+    if length < 1e-3:
+        return None
+    # A rod from the flange to the TCP, a little short of it so that touching a part at the
+    # TCP is not a collision of the tool.
+    rod = trimesh.creation.cylinder(radius=0.012, segment=[[0, 0, 0], tip * (1 - 0.01 / length)])
+    return rod
+
+
+def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
+    """Return the robot setup for the project's robot and tool sections."""
+    from workbench.kinematics.link_shapes import link_meshes
+
+    model = build_robot_model(spec, base_dir)
+    dof = model.dof
+    for name in ("max_velocity", "max_acceleration", "max_jerk"):
+        values = _per_joint(getattr(spec, name), dof, f"robot.{name}")
+        if values is not None:
+            setattr(model, name, values)
+    meshes = list(link_meshes(model))
+    if spec.link_meshes is not None:
+        if len(spec.link_meshes) != dof + 1:
+            raise ProjectError(
+                f"robot.link_meshes: expected {dof + 1} entries (base first, null keeps the"
+                f" generated mesh), got {len(spec.link_meshes)}",
+                [("robot.link_meshes", f"expected {dof + 1} entries")],
+            )
+        for i, path in enumerate(spec.link_meshes):
+            if path is not None:
+                meshes[i] = load_mesh_file(path, base_dir, 0.001, f"robot.link_meshes[{i}]")
+    q0 = _per_joint(spec.joints, dof, "robot.joints")
+    if q0 is None:
+        q0 = np.clip(np.zeros(dof), model.limits[:, 0], model.limits[:, 1])
+    lo, hi = model.limits[:, 0], model.limits[:, 1]
+    bad = np.flatnonzero((q0 < lo - 1e-12) | (q0 > hi + 1e-12))
+    if bad.size:
+        j = int(bad[0])
+        msg = (
+            f"{q0[j] / DEG:.3f} deg is outside the joint limits"
+            f" [{lo[j] / DEG:.3f}, {hi[j] / DEG:.3f}] deg; move it inside"
+        )
+        raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])
+    T_flange_tcp = pose_to_matrix(tool.tcp)
+    return RobotSetup(
+        model=model,
+        link_meshes=meshes,
+        T_world_base=pose_to_matrix(spec.base),
+        T_flange_tcp=T_flange_tcp,
+        tool_mesh=build_tool_mesh(tool, T_flange_tcp, base_dir),
+        q0=q0,
+    )

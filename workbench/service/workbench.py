@@ -1,0 +1,242 @@
+"""`Workbench`: one session over one project — the public API that the GUI, CLI and scripts use."""
+
+from __future__ import annotations
+
+import os
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.collision import CollisionReport, RobotCollisionChecker
+from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
+from workbench.geometry.transforms import invert_transform
+from workbench.project import (
+    Project,
+    load_project,
+    project_from_dict,
+    project_to_json,
+    save_project,
+)
+from workbench.service.cell import CellBody, build_cell
+from workbench.service.convert import DEG
+from workbench.service.robot_setup import RobotSetup, build_robot
+
+
+@dataclass(frozen=True)
+class IKSolution:
+    """One inverse-kinematics solution [rad] with a human label of its configuration."""
+
+    q: NDArray[np.float64]
+    label: str
+
+
+def _as_vector(value: ArrayLike, n: int, name: str) -> NDArray[np.float64]:
+    arr = np.asarray(value, dtype=float)
+    if arr.shape != (n,):
+        raise InputError(f"{name}: expected {n} values, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"{name}: values must be finite, got {arr.tolist()}")
+    return arr
+
+
+def _as_pose(T: ArrayLike, name: str) -> NDArray[np.float64]:
+    arr = np.asarray(T, dtype=float)
+    if arr.shape != (4, 4):
+        raise InputError(f"{name}: expected a (4, 4) transform, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"{name}: the transform has NaN or infinite entries")
+    R = arr[:3, :3]
+    if not np.allclose(R.T @ R, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
+        raise InputError(f"{name}: the rotation part is not a rotation matrix")
+    return arr
+
+
+class Workbench:
+    """One open project: its robot, tool and cell, the robot's state, and the checks on it.
+
+    Units are SI (m, rad). Every method raises a `WorkbenchError` subclass on bad input.
+    """
+
+    def __init__(self, project: Project, *, base_dir: str | os.PathLike[str] | None = None) -> None:
+        self._lock = threading.RLock()
+        self.base_dir = Path(base_dir) if base_dir is not None else Path.cwd()
+        self.path: Path | None = None
+        self._load(project)
+
+    # -- construction -----------------------------------------------------------------
+    @classmethod
+    def open(cls, path: str | os.PathLike[str]) -> Workbench:
+        """Return a workbench on the project file at `path` (validated; raises WorkbenchError)."""
+        project = load_project(path)
+        wb = cls(project, base_dir=Path(path).resolve().parent)
+        wb.path = Path(path)
+        return wb
+
+    @classmethod
+    def from_dict(
+        cls, data: dict[str, Any], *, base_dir: str | os.PathLike[str] | None = None
+    ) -> Workbench:
+        """Return a workbench on a parsed project (the JSON as a dict)."""
+        return cls(project_from_dict(data), base_dir=base_dir)
+
+    def _load(self, project: Project) -> None:
+        robot = build_robot(project.robot, project.tool, self.base_dir)
+        cell = build_cell(project.cell.objects, self.base_dir)
+        checker = RobotCollisionChecker(
+            robot.model,
+            robot.link_meshes,
+            T_world_base=robot.T_world_base,
+            tool=robot.tool_mesh,
+            cell=[(b.solid, b.T_world_body) for b in cell if b.collide],
+            q_reference=robot.q0,
+        )
+        # Swap only when everything above succeeded: a bad project never half-replaces a good one.
+        self._project = project
+        self._robot = robot
+        self._cell = cell
+        self._checker = checker
+        self._q = robot.q0.copy()
+        self._report: CollisionReport | None = None
+
+    def replace_project(self, project: Project) -> None:
+        """Switch to another project; on any error the current one stays as it was."""
+        with self._lock:
+            self._load(project)
+
+    # -- project ----------------------------------------------------------------------
+    @property
+    def project(self) -> Project:
+        """Return the pydantic project, with the robot's current joints written into it."""
+        self._project.robot.joints = [float(v) for v in self._q / DEG]
+        return self._project
+
+    def to_json(self) -> str:
+        """Return the project as JSON text (as `save` writes it)."""
+        return project_to_json(self.project)
+
+    def save(self, path: str | os.PathLike[str] | None = None) -> Path:
+        """Save the project atomically to `path` (default: where it was opened); return the path."""
+        target = Path(path) if path is not None else self.path
+        if target is None:
+            raise InputError("save: no path given and the project was not opened from a file")
+        save_project(self.project, target)
+        self.path = target
+        return target
+
+    # -- robot ------------------------------------------------------------------------
+    @property
+    def robot(self) -> Any:
+        """Return the kinematic model (`DHRobot` or `URDFRobot`)."""
+        return self._robot.model
+
+    @property
+    def setup(self) -> RobotSetup:
+        """Return the robot setup: link meshes, tool mesh, base and TCP frames."""
+        return self._robot
+
+    @property
+    def cell(self) -> list[CellBody]:
+        """Return the cell's bodies."""
+        return list(self._cell)
+
+    @property
+    def joints(self) -> NDArray[np.float64]:
+        """Return the robot's current joint values [rad] (a copy)."""
+        return self._q.copy()
+
+    def set_joints(self, q: ArrayLike) -> None:
+        """Move the robot to joints `q` [rad]; raises JointLimitError naming the joint."""
+        model = self._robot.model
+        q = _as_vector(q, model.dof, "joints")
+        lo, hi = model.limits[:, 0], model.limits[:, 1]
+        bad = np.flatnonzero((q < lo - 1e-9) | (q > hi + 1e-9))
+        if bad.size:
+            j = int(bad[0])
+            raise JointLimitError(
+                f"joint {j + 1}: {q[j] / DEG:.3f} deg is outside its limits"
+                f" [{lo[j] / DEG:.3f}, {hi[j] / DEG:.3f}] deg"
+            )
+        with self._lock:
+            self._q = np.clip(q, lo, hi)
+            self._report = None
+
+    def link_poses(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
+        """Return world poses (dof + 1, 4, 4) of the base and every link at `q` (default: current)."""
+        qq = self._q if q is None else _as_vector(q, self.robot.dof, "q")
+        return self._robot.T_world_base @ self.robot.link_transforms(qq)
+
+    def tcp_pose(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
+        """Return the TCP's world pose (4, 4) [m] at `q` (default: current joints)."""
+        return self.link_poses(q)[-1] @ self._robot.T_flange_tcp
+
+    def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
+        """Return every IK solution (at most 8) that puts the TCP at `T_world_tcp`, nearest first."""
+        T = _as_pose(T_world_tcp, "T_world_tcp")
+        T_base_flange = (
+            invert_transform(self._robot.T_world_base) @ T @ invert_transform(self._robot.T_flange_tcp)
+        )
+        sols = np.asarray(self.robot.ik(T_base_flange, q_near=self._q), float).reshape(-1, self.robot.dof)
+        if len(sols) == 0:
+            raise UnreachableError(
+                "the TCP pose is unreachable: no inverse-kinematics solution within the joint limits"
+            )
+        return [IKSolution(q=s, label=self.configuration_label(s)) for s in sols]
+
+    def configuration_label(self, q: ArrayLike) -> str:
+        """Return a label of the arm configuration of `q` (shoulder, elbow, wrist), e.g. 'front/up/noflip'."""
+        label = getattr(self.robot, "configuration_label", None)
+        if callable(label):
+            return str(label(np.asarray(q, float)))
+        return "solution"
+
+    def move_tcp(self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None) -> NDArray[np.float64]:
+        """Move the TCP to `T_world_tcp` and return the new joints [rad].
+
+        `configuration` picks a solution by index or label; by default the one nearest the
+        current joints. Unreachable poses raise UnreachableError and the robot stays.
+        """
+        sols = self.ik_solutions(T_world_tcp)
+        if configuration is None:
+            pick = sols[0]
+        elif isinstance(configuration, int):
+            if not 0 <= configuration < len(sols):
+                raise InputError(
+                    f"configuration: index {configuration} out of range; {len(sols)} solution(s) exist"
+                )
+            pick = sols[configuration]
+        else:
+            match = [s for s in sols if s.label == configuration]
+            if not match:
+                raise UnreachableError(
+                    f"configuration {configuration!r} cannot reach this pose; available:"
+                    f" {[s.label for s in sols]}"
+                )
+            pick = match[0]
+        self.set_joints(pick.q)
+        return self.joints
+
+    def singularities(self) -> Any:
+        """Return the singularity report of the current joints (wrist, elbow, shoulder)."""
+        fn = getattr(self.robot, "singularities", None)
+        if fn is None:
+            raise WorkbenchError("this robot model has no singularity analysis")
+        return fn(self._q)
+
+    # -- collision --------------------------------------------------------------------
+    @property
+    def checker(self) -> RobotCollisionChecker:
+        """Return the exact (python-fcl) robot-versus-cell checker."""
+        return self._checker
+
+    def collision_status(self, q: ArrayLike | None = None) -> CollisionReport:
+        """Return the collision report at `q` (default: current joints, cached)."""
+        if q is not None:
+            return self._checker.check(_as_vector(q, self.robot.dof, "q"))
+        with self._lock:
+            if self._report is None:
+                self._report = self._checker.check(self._q)
+            return self._report
