@@ -1,0 +1,191 @@
+"""Joint and linear moves turned into joint waypoints through IK, with blends, then timed.
+
+A linear move is sampled along its straight line (position) and slerp (orientation); each
+sample's IK solution is the one nearest the previous sample, so the configuration never
+changes branch; a jump larger than `max_joint_step` or an unreachable sample is an error
+naming the move and the sample. A zone > 0 between two linear moves replaces the corner by
+a quadratic Bezier curve that leaves the first line `zone` metres before the corner and
+joins the second line `zone` metres after it (shortened to half of either line).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.spatial.transform import Rotation, Slerp
+
+from workbench.errors import InputError, PlanningError, WorkbenchError
+from workbench.geometry.transforms import invert_transform, make_transform
+from workbench.motion.program import JOINT, LINEAR, Program
+from workbench.motion.trajectory import Trajectory, smooth_joint_path
+
+
+class Robot(Protocol):
+    """What the moves need from a robot: batched FK to the flange, IK, joint limits (6, 2)."""
+
+    limits: NDArray[np.float64]
+
+    def fk(self, q: ArrayLike) -> NDArray[np.float64]: ...
+
+    def ik(self, T: ArrayLike) -> NDArray[np.float64]: ...
+
+
+@dataclass(frozen=True, eq=False)
+class JointPath:
+    """Joint waypoints (M, 6) [rad] of a program; `move_index[k]` is the move waypoint k belongs to.
+
+    `stop_indices` are exact stops; `speed_limits` (M-1, 6) [rad/s] are per-segment joint
+    speed limits that realise each move's speed.
+    """
+
+    positions: NDArray[np.float64]
+    move_index: NDArray[np.int64]
+    stop_indices: tuple[int, ...]
+    speed_limits: NDArray[np.float64]
+
+
+def line_poses(T_a: NDArray, T_b: NDArray, step: float, angle_step: float) -> NDArray[np.float64]:
+    """Return poses (k, 4, 4) along the straight line a -> b, excluding a, including b."""
+    dist = float(np.linalg.norm(T_b[:3, 3] - T_a[:3, 3]))
+    rots = Rotation.from_matrix(np.stack([T_a[:3, :3], T_b[:3, :3]]))
+    angle = float((rots[0].inv() * rots[1]).magnitude())
+    n = max(1, int(np.ceil(max(dist / step, angle / angle_step))))
+    s = np.arange(1, n + 1) / n
+    R = Slerp([0.0, 1.0], rots)(s).as_matrix()
+    return make_transform(R, T_a[:3, 3] + s[:, None] * (T_b[:3, 3] - T_a[:3, 3]))
+
+
+def corner_poses(
+    T_in: NDArray, T_corner: NDArray, T_out: NDArray, step: float, angle_step: float
+) -> NDArray[np.float64]:
+    """Return poses (k, 4, 4) of the quadratic Bezier blend from T_in via T_corner to T_out."""
+    p0, p1, p2 = T_in[:3, 3], T_corner[:3, 3], T_out[:3, 3]
+    length = float(np.linalg.norm(p1 - p0) + np.linalg.norm(p2 - p1))
+    rots = Rotation.from_matrix(np.stack([T_in[:3, :3], T_out[:3, :3]]))
+    angle = float((rots[0].inv() * rots[1]).magnitude())
+    n = max(2, int(np.ceil(max(length / step, angle / angle_step))))
+    s = np.arange(1, n + 1) / n
+    pos = ((1 - s) ** 2)[:, None] * p0 + (2 * s * (1 - s))[:, None] * p1 + (s**2)[:, None] * p2
+    return make_transform(Slerp([0.0, 1.0], rots)(s).as_matrix(), pos)
+
+
+def follow_poses(
+    robot: Robot, T_base_flange: NDArray, q_prev: NDArray, *, max_joint_step: float, label: str
+) -> NDArray[np.float64]:
+    """Return joints (k, 6) [rad] for poses (k, 4, 4), each the IK solution nearest the last."""
+    out = np.empty((T_base_flange.shape[0], q_prev.shape[0]))
+    for k, T in enumerate(T_base_flange):
+        try:
+            sols = np.asarray(robot.ik(T), float).reshape(-1, q_prev.shape[0])
+        except WorkbenchError as exc:
+            raise PlanningError(
+                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m is unreachable ({exc})"
+            ) from exc
+        if sols.shape[0] == 0:
+            raise PlanningError(
+                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m is unreachable"
+            )
+        jump = np.max(np.abs(sols - q_prev), axis=1)
+        best = int(np.argmin(jump))
+        if jump[best] > max_joint_step:
+            raise PlanningError(
+                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m needs a joint jump of "
+                f"{jump[best]:.3f} rad (> max_joint_step {max_joint_step} rad): a configuration "
+                "flip or singularity; move the path or split it with a joint move"
+            )
+        q_prev = out[k] = sols[best]
+    return out
+
+
+def plan_program(
+    robot: Robot,
+    program: Program,
+    q_start: ArrayLike,
+    max_velocity: ArrayLike,
+    *,
+    T_flange_tcp: ArrayLike | None = None,
+    step: float = 0.005,
+    angle_step: float = np.radians(2.0),
+    max_joint_step: float = 0.2,
+) -> JointPath:
+    """Return the `JointPath` of `program` from joints `q_start` (6,) [rad].
+
+    Linear moves are sampled every `step` [m] / `angle_step` [rad]; `max_velocity` (6,)
+    [rad/s] is scaled by joint-move speed fractions, and capped for linear moves so the TCP
+    speed stays at most the move's speed.
+    """
+    T_ft = np.eye(4) if T_flange_tcp is None else np.asarray(T_flange_tcp, float)
+    T_tf = invert_transform(T_ft)
+    vmax = np.asarray(max_velocity, float)
+    q = np.asarray(q_start, float).reshape(-1)
+    if q.shape != (6,) or not np.all(np.isfinite(q)):
+        raise InputError(f"q_start must be 6 finite joint angles [rad], got {q_start!r}")
+    pts, owner, stops, seg_v = [q], [-1], [0], []
+    moves = program.moves
+    for m, mv in enumerate(moves):
+        label = f"move {m} ({mv.name or mv.kind})"
+        if mv.kind == JOINT:
+            new, v = mv.q[None], [mv.speed * vmax]
+        else:
+            # after a blend, the last waypoint is where the blend curve ended
+            T_from = np.asarray(robot.fk(pts[-1]), float) @ T_ft
+            T_to = mv.T
+            nxt = moves[m + 1] if m + 1 < len(moves) else None
+            if mv.zone > 0 and nxt is not None and nxt.kind == LINEAR:
+                len_in = max(float(np.linalg.norm(T_to[:3, 3] - T_from[:3, 3])), 1e-12)
+                len_out = max(float(np.linalg.norm(nxt.T[:3, 3] - T_to[:3, 3])), 1e-12)
+                r = min(mv.zone, 0.5 * len_in, 0.5 * len_out)
+                f_in, f_out = 1.0 - r / len_in, r / len_out
+                T_in = _interp(T_from, T_to, f_in)
+                T_out = _interp(T_to, nxt.T, f_out)
+                poses = np.concatenate(
+                    [
+                        line_poses(T_from, T_in, step, angle_step),
+                        corner_poses(T_in, T_to, T_out, step, angle_step),
+                    ]
+                )
+            else:
+                poses = line_poses(T_from, T_to, step, angle_step)
+            new = follow_poses(
+                robot, poses @ T_tf, pts[-1], max_joint_step=max_joint_step, label=label
+            )
+            pos = np.concatenate([T_from[None, :3, 3], poses[:, :3, 3]])
+            ds = np.maximum(np.linalg.norm(np.diff(pos, axis=0), axis=1), 1e-9)
+            dq = np.abs(np.diff(np.concatenate([pts[-1][None], new]), axis=0))
+            v = list(np.clip(dq * (mv.speed / ds)[:, None], 1e-3 * vmax, vmax))
+        for row in new:
+            pts.append(row)
+            owner.append(m)
+        seg_v.extend(v)
+        if mv.zone == 0.0:
+            stops.append(len(pts) - 1)
+    return JointPath(np.array(pts), np.array(owner), tuple(stops), np.array(seg_v))
+
+
+def _interp(T_a: NDArray, T_b: NDArray, f: float) -> NDArray[np.float64]:
+    rots = Rotation.from_matrix(np.stack([T_a[:3, :3], T_b[:3, :3]]))
+    R = Slerp([0.0, 1.0], rots)([f]).as_matrix()[0]
+    return make_transform(R, T_a[:3, 3] + f * (T_b[:3, 3] - T_a[:3, 3]))
+
+
+def time_program(
+    path: JointPath,
+    max_acceleration: ArrayLike,
+    max_jerk: ArrayLike,
+    *,
+    position_limits: ArrayLike | None = None,
+    dt: float = 0.004,
+) -> Trajectory:
+    """Return the jerk-limited `Trajectory` [s, rad] through a `JointPath`."""
+    return smooth_joint_path(
+        path.positions,
+        path.speed_limits,
+        max_acceleration,
+        max_jerk,
+        position_limits=position_limits,
+        exact_stop=path.stop_indices,
+        dt=dt,
+    )

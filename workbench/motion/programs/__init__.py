@@ -1,0 +1,20 @@
+"""Post-processors: robot programs (RAPID, KRL, FANUC LS, URScript) and joint samples (CSV, JSON)."""
+
+from __future__ import annotations
+
+from workbench.motion.programs.fanuc import to_ls
+from workbench.motion.programs.krl import to_krl
+from workbench.motion.programs.rapid import to_rapid
+from workbench.motion.programs.samples import load_csv, load_json, save_csv, save_json
+from workbench.motion.programs.urscript import to_urscript
+
+__all__ = [
+    "load_csv",
+    "load_json",
+    "save_csv",
+    "save_json",
+    "to_krl",
+    "to_ls",
+    "to_rapid",
+    "to_urscript",
+]

@@ -1,0 +1,85 @@
+"""Sampled joint trajectories as CSV and JSON (seconds, radians and degrees) that load back."""
+
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.errors import InputError
+
+FORMAT = "workbench.joint_samples"
+
+
+def _check(
+    times: ArrayLike, positions: ArrayLike
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    t = np.asarray(times, float).reshape(-1)
+    q = np.asarray(positions, float)
+    if q.ndim != 2 or q.shape[0] != t.shape[0]:
+        raise InputError(f"positions must be ({t.shape[0]}, dof) to match times, got {q.shape}")
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(q))):
+        raise InputError("times and positions must be finite numbers")
+    return t, q
+
+
+def _header(dof: int) -> list[str]:
+    return (
+        ["t [s]"]
+        + [f"q{k} [rad]" for k in range(1, dof + 1)]
+        + [f"q{k} [deg]" for k in range(1, dof + 1)]
+    )
+
+
+def save_csv(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
+    """Write samples to CSV: t [s], q1..qn [rad], q1..qn [deg]; floats round-trip exactly."""
+    t, q = _check(times, positions)
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(_header(q.shape[1]))
+        for ti, qi, di in zip(t, q, np.degrees(q), strict=True):
+            w.writerow([repr(float(ti)), *(repr(float(x)) for x in qi), *(f"{x:.6f}" for x in di)])
+
+
+def load_csv(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return (times [s] (n,), positions [rad] (n, dof)) from a CSV written by `save_csv`."""
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    if not rows or not rows[0] or rows[0][0] != "t [s]":
+        raise InputError(f"{path}: first row must be the header starting with 't [s]'")
+    head = rows[0]
+    rad = [k for k, h in enumerate(head) if h.endswith("[rad]")]
+    try:
+        data = np.array([[float(r[0])] + [float(r[k]) for k in rad] for r in rows[1:]], float)
+    except (ValueError, IndexError) as exc:
+        raise InputError(f"{path}: every row needs numbers under {head}") from exc
+    return data[:, 0].copy(), data[:, 1:].reshape(len(rows) - 1, len(rad))
+
+
+def save_json(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
+    """Write samples to JSON with keys t_s, q_rad and q_deg (lists of rows)."""
+    t, q = _check(times, positions)
+    doc = {
+        "format": FORMAT,
+        "version": 1,
+        "units": {"t_s": "s", "q_rad": "rad", "q_deg": "deg"},
+        "t_s": t.tolist(),
+        "q_rad": q.tolist(),
+        "q_deg": np.round(np.degrees(q), 6).tolist(),
+    }
+    Path(path).write_text(json.dumps(doc))
+
+
+def load_json(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return (times [s] (n,), positions [rad] (n, dof)) from a JSON written by `save_json`."""
+    try:
+        doc = json.loads(Path(path).read_text())
+    except json.JSONDecodeError as exc:
+        raise InputError(f"{path}: not valid JSON ({exc})") from exc
+    if not isinstance(doc, dict) or doc.get("format") != FORMAT:
+        raise InputError(f"{path}: 'format' must be {FORMAT!r}")
+    t, q = np.asarray(doc["t_s"], float), np.asarray(doc["q_rad"], float)
+    return _check(t, q.reshape(t.shape[0], -1))
