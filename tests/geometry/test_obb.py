@@ -1,0 +1,149 @@
+"""OBB and the separating-axis test against python-fcl (box-box) and brute force."""
+
+from __future__ import annotations
+
+import fcl
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from workbench.errors import InputError
+from workbench.geometry import OBB, obb_overlap
+
+
+def random_boxes(rng: np.random.Generator, n: int, spread: float = 1.2) -> OBB:
+    return OBB(
+        rng.uniform(-spread, spread, (n, 3)),
+        Rotation.random(n, random_state=rng).as_matrix(),
+        rng.uniform(0.05, 0.6, (n, 3)),
+    )
+
+
+def fcl_collide(a: OBB, b: OBB) -> np.ndarray:
+    out = np.empty(len(a), dtype=bool)
+    req = fcl.CollisionRequest()
+    for i in range(len(a)):
+        oa = fcl.CollisionObject(
+            fcl.Box(*(2 * a.half_extents[i])), fcl.Transform(a.rotation[i], a.center[i])
+        )
+        ob = fcl.CollisionObject(
+            fcl.Box(*(2 * b.half_extents[i])), fcl.Transform(b.rotation[i], b.center[i])
+        )
+        out[i] = fcl.collide(oa, ob, req, fcl.CollisionResult()) > 0
+    return out
+
+
+def slow_separation(a: OBB, b: OBB) -> float:
+    """Largest gap [m] over the 15 unit axes, one by one (positive: separated)."""
+    A, B = a.rotation, b.rotation
+    axes = [A[:, i] for i in range(3)] + [B[:, j] for j in range(3)]
+    axes += [np.cross(A[:, i], B[:, j]) for i in range(3) for j in range(3)]
+    best = -np.inf
+    for ax in axes:
+        n = np.linalg.norm(ax)
+        if n < 1e-9:
+            continue
+        ax = ax / n
+        ra = np.sum(a.half_extents * np.abs(A.T @ ax))
+        rb = np.sum(b.half_extents * np.abs(B.T @ ax))
+        best = max(best, abs(ax @ (b.center - a.center)) - ra - rb)
+    return best
+
+
+def test_overlap_equals_fcl_on_random_pairs() -> None:
+    rng = np.random.default_rng(0)
+    n = 10_000
+    a, b = random_boxes(rng, n, 0.7), random_boxes(rng, n, 0.7)
+    # A fifth of the pairs share their orientation: every edge pair is parallel.
+    a = OBB(a.center, np.concatenate([b.rotation[: n // 5], a.rotation[n // 5 :]]), a.half_extents)
+    ours, theirs = obb_overlap(a, b), fcl_collide(a, b)
+    assert 0.2 < ours.mean() < 0.8
+    for i in np.nonzero(ours != theirs)[0]:
+        assert abs(slow_separation(a[i], b[i])) < 1e-9
+
+
+def test_touching_and_parallel_faces() -> None:
+    R = Rotation.from_euler("xyz", [0.3, -0.2, 0.7]).as_matrix()
+    e = np.array([0.5, 0.2, 0.1])
+    for gap, expect in ((0.0, True), (-1e-6, True), (1e-6, False)):
+        # B sits on A's +x face, rotated identically: all 9 cross axes degenerate.
+        cb = R @ np.array([1.0 + gap, 0.05, 0.0])
+        assert bool(obb_overlap(OBB(np.zeros(3), R, e), OBB(cb, R, e))) is expect
+    # Crossed edges (classic edge-edge case): separated only along a cross axis.
+    a = OBB(np.zeros(3), np.eye(3), [1, 1, 1])
+    Rb = Rotation.from_euler("xz", [45, 45], degrees=True).as_matrix()
+    b = OBB([2.05, 2.05, 0], Rb, [1, 1, 1])
+    assert bool(obb_overlap(a, b)) == fcl_collide(a.reshape(1), b.reshape(1))[0]
+
+
+def test_overlap_matches_brute_force_points_and_planes() -> None:
+    rng = np.random.default_rng(1)
+    a, b = random_boxes(rng, 60, spread=0.9), random_boxes(rng, 60, spread=0.9)
+    ours = obb_overlap(a, b)
+    g = np.linspace(-1, 1, 21)
+    grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3)
+    k = np.arange(20_000) + 0.5
+    phi, z = k * np.pi * (3 - np.sqrt(5)), 1 - 2 * k / 20_000
+    dirs = np.c_[np.sqrt(1 - z * z) * np.cos(phi), np.sqrt(1 - z * z) * np.sin(phi), z]
+    conclusive = 0
+    for i in range(60):
+        pts = a.center[i] + (grid * a.half_extents[i]) @ a.rotation[i].T
+        if b[i].contains(pts, tol=0).any():
+            assert ours[i]
+            conclusive += 1
+            continue
+        ca, cb = a[i].corners() @ dirs.T, b[i].corners() @ dirs.T
+        if np.any((ca.max(0) < cb.min(0)) | (cb.max(0) < ca.min(0))):
+            assert not ours[i]
+            conclusive += 1
+    assert conclusive >= 50
+
+
+def test_broadcast_over_batch_dims() -> None:
+    rng = np.random.default_rng(2)
+    a, b = random_boxes(rng, 7), random_boxes(rng, 5)
+    grid = obb_overlap(a.reshape(7, 1), b.reshape(1, 5))
+    assert grid.shape == (7, 5)
+    for i in range(7):
+        for j in range(5):
+            assert grid[i, j] == obb_overlap(a[i], b[j])
+
+
+def test_helpers_transformed_corners_from_points_record() -> None:
+    rng = np.random.default_rng(3)
+    box = random_boxes(rng, 4)
+    T = np.eye(4)
+    T[:3, :3] = Rotation.from_euler("zyx", [0.4, 0.1, -0.3]).as_matrix()
+    T[:3, 3] = [0.1, -2.0, 0.5]
+    moved = box.transformed(T)
+    np.testing.assert_allclose(moved.corners(), box.corners() @ T[:3, :3].T + T[:3, 3], atol=1e-12)
+    # from_points contains its points and recovers a box from its own corners.
+    pts = rng.normal(size=(200, 3)) * [0.3, 0.1, 0.02]
+    fit = OBB.from_points(pts)
+    assert fit.contains(pts).all()
+    refit = OBB.from_points(box[0].corners(), rotations=box.rotation[0][None])
+    np.testing.assert_allclose(refit.volume(), box[0].volume(), rtol=1e-9)
+    rec = box.record()
+    assert rec.shape == (4, 18)
+    back = OBB.from_record(rec)
+    np.testing.assert_allclose(back.corners(), box.corners(), atol=1e-12)
+    origin = box.center + 0.01
+    back2 = OBB.from_record(box.record(origin))
+    np.testing.assert_allclose(back2.corners(), box.corners(), atol=1e-12)
+    np.testing.assert_allclose(box.record(origin)[:, :3], origin)
+
+
+@pytest.mark.parametrize(
+    "center, rotation, half, word",
+    [
+        ([np.nan, 0, 0], np.eye(3), [1, 1, 1], "center"),
+        ([0, 0], np.eye(3), [1, 1, 1], "center"),
+        ([0, 0, 0], 2 * np.eye(3), [1, 1, 1], "rotation"),
+        ([0, 0, 0], -np.eye(3), [1, 1, 1], "rotation"),
+        ([0, 0, 0], np.eye(3), [1, -1, 1], "half_extents"),
+        (np.zeros((2, 3)), np.eye(3), np.ones((3, 3)), "batch"),
+    ],
+)
+def test_bad_input(center, rotation, half, word) -> None:
+    with pytest.raises(InputError, match=word):
+        OBB(center, rotation, half)

@@ -1,0 +1,148 @@
+"""OBB tree (§2.1 split rules) and its DFS check against brute force and python-fcl."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+import fcl
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from workbench.errors import InputError
+from workbench.geometry import OBB, obb_overlap
+from workbench.geometry.transforms import make_transform, rot_z
+from workbench.sheetmetal import SheetMetalPart
+
+_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
+_tp = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_tp)
+
+
+@pytest.fixture(scope="module")
+def seed_state():
+    return SheetMetalPart.from_spec(_tp.seed_spec()).fold(6)
+
+
+def random_obstacles(rng: np.random.Generator, n: int, spread: float) -> OBB:
+    return OBB(
+        rng.uniform(-spread, spread, (n, 3)),
+        Rotation.random(n, random_state=rng).as_matrix(),
+        rng.uniform(0.005, 0.08, (n, 3)),
+    )
+
+
+def random_poses(rng: np.random.Generator, n: int, spread: float) -> np.ndarray:
+    return make_transform(
+        Rotation.random(n, random_state=rng).as_matrix(), rng.uniform(-spread, spread, (n, 3))
+    )
+
+
+def test_tree_follows_fig8_split(seed_state) -> None:
+    tree = seed_state.obb_tree("1")
+    names = [tuple(seed_state.part.flanges[f].name for f in s) for s in tree.flanges]
+    root_children = [
+        names[c]
+        for c in tree.child_index[tree.child_start[0] : tree.child_start[0] + tree.child_count[0]]
+    ]
+    assert sorted(root_children) == sorted([("1",), ("2", "3"), ("4", "5"), ("6",), ("7",)])
+    assert names.count(("2",)) == names.count(("3",)) == 1 and max(tree.level) == 2
+    # Every node's box contains the boxes of the flanges below it.
+    corners = tree.boxes.corners()
+    for node, flanges in enumerate(tree.flanges):
+        leaf_nodes = [int(np.nonzero(tree.leaf_flange == f)[0][0]) for f in flanges]
+        assert tree.boxes[node].contains(corners[leaf_nodes].reshape(-1, 3), tol=1e-9).all()
+    # Grasping another flange: its frame is the tree's frame, the root's first child is its leaf.
+    t3 = seed_state.obb_tree("3")
+    assert t3.flanges[t3.child_index[t3.child_start[0]]] == (2,)
+    assert seed_state.obb_tree("3") is t3  # cached: rebuilt only with the bend state
+
+
+def test_tree_verdict_equals_brute_force_on_random_placements(seed_state) -> None:
+    rng = np.random.default_rng(0)
+    tree = seed_state.obb_tree("1")
+    obstacles = random_obstacles(rng, 4, 0.05)
+    T = random_poses(rng, 10_000, 0.3)
+    rep = tree.collide_frames(obstacles, T)
+    flat = tree.flat_collide_frames(obstacles, T)
+    # Brute force: every flange box in the world against every obstacle, all at once.
+    leaves = tree.boxes[tree.leaves].reshape(1, -1, 1).transformed(T[:, None, None])
+    brute = obb_overlap(leaves, obstacles.reshape(1, 1, -1))  # (F, flanges, obstacles)
+    assert 0.1 < brute.any(axis=(1, 2)).mean() < 0.9
+    np.testing.assert_array_equal(rep.collides, brute.any(axis=(1, 2)))
+    np.testing.assert_array_equal(flat.collides, rep.collides)
+    got = np.zeros_like(brute)
+    got[rep.hits[:, 0], rep.hits[:, 1], rep.hits[:, 2]] = True
+    np.testing.assert_array_equal(got, brute)
+    assert np.all(flat.n_obb_tests == 7 * 4)
+    # Single-frame DFS equals the batched run; python-fcl boxes agree on the first 300 frames.
+    for i in range(300):
+        one = tree.collide(obstacles, T[i])
+        assert one.collides == rep.collides[i] and one.n_obb_tests == rep.n_obb_tests[i]
+        assert set(one.hit_pairs) == set(map(tuple, np.argwhere(brute[i])))
+        fcl_hit = False
+        for f in range(7):
+            box = leaves[i, f, 0]
+            a = fcl.CollisionObject(
+                fcl.Box(*(2 * box.half_extents)), fcl.Transform(box.rotation, box.center)
+            )
+            for o in range(4):
+                b = fcl.CollisionObject(
+                    fcl.Box(*(2 * obstacles.half_extents[o])),
+                    fcl.Transform(obstacles.rotation[o], obstacles.center[o]),
+                )
+                fcl_hit |= fcl.collide(a, b, fcl.CollisionRequest()) > 0
+        assert fcl_hit == rep.collides[i]
+
+
+def test_tree_needs_a_third_of_flat_tests_on_free_transfer(seed_state) -> None:
+    tree = seed_state.obb_tree("1")
+    # A cell of boxes around a straight carry at 1 m height: fixtures off to the side.
+    rng = np.random.default_rng(1)
+    cell = OBB(
+        np.c_[
+            rng.uniform(-1, 1, 12),
+            rng.choice([-1, 1], 12) * rng.uniform(0.6, 1.0, 12),
+            rng.uniform(0, 2, 12),
+        ],
+        np.eye(3),
+        rng.uniform(0.05, 0.3, (12, 3)),
+    )
+    s = np.linspace(0, 1, 22)
+    T = make_transform(rot_z(s * np.pi), np.c_[np.cos(s * np.pi) - 0.5, 0 * s, 1 + 0 * s])
+    rep, flat = tree.collide_frames(cell, T), tree.flat_collide_frames(cell, T)
+    free = ~flat.collides
+    assert free.sum() >= 15
+    assert rep.n_obb_tests[free].sum() * 3 <= flat.n_obb_tests[free].sum()
+    one = tree.collide(cell, T[0])
+    assert one.nodes_tested == (0,) and one.nodes_hit == () and one.n_obb_tests == 12
+
+
+def test_hit_reports_flange_obstacle_and_nodes(seed_state) -> None:
+    tree = seed_state.obb_tree("1")
+    # A small block touching the outside of wall 6 (flange index 5) only.
+    box6 = tree.boxes[tree.leaves[5]]
+    probe = OBB(
+        box6.center + box6.rotation[:, 2] * (box6.half_extents[2] + 0.004),
+        box6.rotation,
+        [0.01, 0.01, 0.005],
+    )
+    far = OBB([5.0, 5, 5], np.eye(3), [0.1, 0.1, 0.1])
+    obstacles = OBB(
+        np.stack([far.center, probe.center]),
+        np.stack([far.rotation, probe.rotation]),
+        np.stack([far.half_extents, probe.half_extents]),
+    )
+    rep = tree.collide(obstacles, np.eye(4))
+    assert rep.collides and rep.hit_flanges == (5,) and rep.hit_obstacles == (1,)
+    assert 0 in rep.nodes_hit and tree.leaves[5] in rep.nodes_hit
+    assert rep.n_obb_tests < tree.flat_collide(obstacles, np.eye(4)).n_obb_tests
+
+
+def test_bad_input(seed_state) -> None:
+    tree = seed_state.obb_tree(0)
+    with pytest.raises(InputError, match="T_world_grasp"):
+        tree.collide(OBB(np.zeros(3), np.eye(3), np.ones(3)), np.eye(3))
+    with pytest.raises(InputError, match="obstacles"):
+        tree.collide([1, 2, 3], np.eye(4))  # type: ignore[arg-type]

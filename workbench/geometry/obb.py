@@ -1,0 +1,238 @@
+"""Oriented bounding boxes (OBB) and the exact 15-axis separating-axis overlap test, batched.
+
+An `OBB` is a box with centre `center` (..., 3) [m], axes given by the columns of
+`rotation` (..., 3, 3) (box frame -> parent frame) and half side lengths
+`half_extents` (..., 3) [m]. All arrays share (broadcast to) one batch shape.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.errors import InputError
+
+# Added to |R| so that near-parallel edge pairs (cross-product axis ~ 0) never report a
+# false separation from rounding noise (Gottschalk 1996; Ericson, RTCD §4.4.1).
+SAT_EPS = 1e-12
+
+_I1 = np.array([1, 2, 0])
+_I2 = np.array([2, 0, 1])
+
+
+def _as_float(name: str, value: ArrayLike, tail: tuple[int, ...]) -> NDArray[np.float64]:
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"OBB {name}: expected numbers, got {value!r}") from exc
+    if arr.ndim < len(tail) or arr.shape[arr.ndim - len(tail) :] != tail:
+        raise InputError(
+            f"OBB {name}: expected shape (..., {', '.join(map(str, tail))}), got {arr.shape}"
+        )
+    if not np.all(np.isfinite(arr)):
+        raise InputError(f"OBB {name}: contains NaN or inf")
+    return arr
+
+
+@dataclass(frozen=True, eq=False)
+class OBB:
+    """Oriented boxes: centre [m], rotation (columns = box axes), half extents [m]; batched."""
+
+    center: NDArray[np.float64]
+    rotation: NDArray[np.float64]
+    half_extents: NDArray[np.float64]
+
+    def __post_init__(self) -> None:
+        c = _as_float("center", self.center, (3,))
+        r = _as_float("rotation", self.rotation, (3, 3))
+        e = _as_float("half_extents", self.half_extents, (3,))
+        if np.any(e < 0):
+            raise InputError(f"OBB half_extents: must be >= 0 m, got min {e.min():.6g}")
+        ortho = np.swapaxes(r, -1, -2) @ r - np.eye(3)
+        if r.size and (np.max(np.abs(ortho)) > 1e-6 or np.min(np.linalg.det(r)) < 0):
+            raise InputError("OBB rotation: must be proper orthonormal (R^T R = I, det R = +1)")
+        try:
+            shape = np.broadcast_shapes(c.shape[:-1], r.shape[:-2], e.shape[:-1])
+        except ValueError as exc:
+            raise InputError(
+                f"OBB batch shapes differ: center {c.shape}, rotation {r.shape}, "
+                f"half_extents {e.shape}"
+            ) from exc
+        object.__setattr__(self, "center", np.broadcast_to(c, shape + (3,)))
+        object.__setattr__(self, "rotation", np.broadcast_to(r, shape + (3, 3)))
+        object.__setattr__(self, "half_extents", np.broadcast_to(e, shape + (3,)))
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Return the batch shape."""
+        return self.center.shape[:-1]
+
+    def __len__(self) -> int:
+        return self.shape[0] if self.shape else 1
+
+    def __getitem__(self, index: Any) -> OBB:
+        """Return the boxes selected by `index` over the batch dimensions."""
+        if not self.shape:
+            raise InputError("OBB: cannot index a single (unbatched) box")
+        return OBB(self.center[index], self.rotation[index], self.half_extents[index])
+
+    def reshape(self, *shape: int) -> OBB:
+        """Return the same boxes with batch shape `shape`."""
+        return OBB(
+            self.center.reshape(shape + (3,)),
+            self.rotation.reshape(shape + (3, 3)),
+            self.half_extents.reshape(shape + (3,)),
+        )
+
+    def transformed(self, T: ArrayLike) -> OBB:
+        """Return the boxes moved by rigid transforms T (..., 4, 4) (T maps parent -> new parent)."""
+        T = _as_float("transform", T, (4, 4))
+        R, p = T[..., :3, :3], T[..., :3, 3]
+        return OBB((R @ self.center[..., None])[..., 0] + p, R @ self.rotation, self.half_extents)
+
+    def corners(self) -> NDArray[np.float64]:
+        """Return the 8 corners (..., 8, 3) [m], index bits (x, y, z) = (1, 2, 4)."""
+        signs = np.array([[(i >> k) & 1 for k in range(3)] for i in range(8)], float) * 2 - 1
+        local = signs * self.half_extents[..., None, :]  # (..., 8, 3)
+        return self.center[..., None, :] + local @ np.swapaxes(self.rotation, -1, -2)
+
+    def volume(self) -> NDArray[np.float64]:
+        """Return box volumes (...) [m³]."""
+        return 8.0 * np.prod(self.half_extents, axis=-1)
+
+    def contains(self, points: ArrayLike, tol: float = 1e-9) -> NDArray[np.bool_]:
+        """Return whether points (..., 3) lie inside the boxes (broadcast), within `tol` [m]."""
+        points = np.asarray(points, dtype=float)
+        local = (np.swapaxes(self.rotation, -1, -2) @ (points - self.center)[..., None])[..., 0]
+        return np.all(np.abs(local) <= self.half_extents + tol, axis=-1)
+
+    @classmethod
+    def from_points(cls, points: ArrayLike, rotations: ArrayLike | None = None) -> OBB:
+        """Return one box containing all `points` (N, 3) [m].
+
+        Candidate orientations are the points' principal axes, the identity and any extra
+        `rotations` (K, 3, 3); the candidate with the least volume wins.
+        """
+        pts = _as_float("points", points, (3,))
+        if pts.ndim != 2 or len(pts) == 0:
+            raise InputError(
+                f"OBB.from_points points: expected shape (N, 3) with N >= 1, got {pts.shape}"
+            )
+        cands = [np.eye(3)]
+        if len(pts) >= 2:
+            _, vecs = np.linalg.eigh(np.cov((pts - pts.mean(0)).T) + 0 * np.eye(3))
+            vecs = vecs[:, ::-1].copy()
+            if np.linalg.det(vecs) < 0:
+                vecs[:, 2] *= -1
+            cands.append(vecs)
+        if rotations is not None:
+            extra = _as_float("rotations", rotations, (3, 3)).reshape(-1, 3, 3)
+            cands.extend(extra)
+        Rs = np.stack(cands)  # (K, 3, 3)
+        local = pts[None] @ Rs  # (K, N, 3): coordinates along each candidate's axes
+        lo, hi = local.min(axis=1), local.max(axis=1)
+        best = int(np.argmin(np.prod(hi - lo + 1e-12, axis=1)))
+        R = Rs[best]
+        center = R @ ((lo[best] + hi[best]) / 2)
+        return cls(center, R, (hi[best] - lo[best]) / 2)
+
+    def record(self, origin: ArrayLike | None = None) -> NDArray[np.float64]:
+        """Return seed 000's 18-float record (..., 18) [m]: origin, x/y/z axes, six offsets.
+
+        The offsets are the distances from `origin` (default: the centre) to the box faces
+        along -x, +x, -y, +y, -z, +z of the box axes (all >= 0 when origin is inside).
+        """
+        o = (
+            self.center
+            if origin is None
+            else np.broadcast_to(np.asarray(origin, float), self.center.shape)
+        )
+        local = (np.swapaxes(self.rotation, -1, -2) @ (o - self.center)[..., None])[..., 0]
+        neg = self.half_extents + local
+        pos = self.half_extents - local
+        offsets = np.stack([neg, pos], axis=-1).reshape(self.shape + (6,))
+        axes = np.swapaxes(self.rotation, -1, -2).reshape(self.shape + (9,))
+        return np.concatenate([o, axes, offsets], axis=-1)
+
+    @classmethod
+    def from_record(cls, record: ArrayLike) -> OBB:
+        """Return boxes from 18-float records (..., 18) written by `record`."""
+        rec = _as_float("record", record, (18,))
+        o = rec[..., :3]
+        R = np.swapaxes(rec[..., 3:12].reshape(rec.shape[:-1] + (3, 3)), -1, -2)
+        off = rec[..., 12:].reshape(rec.shape[:-1] + (3, 2))
+        half = (off[..., 0] + off[..., 1]) / 2
+        shift = (off[..., 1] - off[..., 0]) / 2
+        return cls(o + (R @ shift[..., None])[..., 0], R, half)
+
+
+def sat_overlap(
+    ca: NDArray[np.float64],
+    Ra: NDArray[np.float64],
+    ea: NDArray[np.float64],
+    cb: NDArray[np.float64],
+    Rb: NDArray[np.float64],
+    eb: NDArray[np.float64],
+    eps: float = SAT_EPS,
+) -> NDArray[np.bool_]:
+    """Return overlap verdicts (broadcast batch) of raw box arrays; no validation (hot path)."""
+    nb = max(ca.ndim - 1, Ra.ndim - 2, ea.ndim - 1, cb.ndim - 1, Rb.ndim - 2, eb.ndim - 1)
+    ca, cb, ea, eb = (x.reshape((1,) * (nb + 1 - x.ndim) + x.shape) for x in (ca, cb, ea, eb))
+    Ra, Rb = (x.reshape((1,) * (nb + 2 - x.ndim) + x.shape) for x in (Ra, Rb))
+    # Components first, batch last, contiguous: every step below is then an elementwise op
+    # over contiguous batch rows (strided or stacked-3x3 matmul versions are 10-40x slower).
+    first = np.ascontiguousarray
+    return sat_overlap_t(
+        first(np.moveaxis(cb - ca, -1, 0)),
+        first(np.moveaxis(Ra, (-2, -1), (0, 1))),
+        first(np.moveaxis(ea, -1, 0)),
+        first(np.moveaxis(Rb, (-2, -1), (0, 1))),
+        first(np.moveaxis(eb, -1, 0)),
+        eps,
+    )
+
+
+def sat_overlap_t(
+    d: NDArray[np.float64],
+    A: NDArray[np.float64],
+    a: NDArray[np.float64],
+    B: NDArray[np.float64],
+    b: NDArray[np.float64],
+    eps: float = SAT_EPS,
+) -> NDArray[np.bool_]:
+    """Return overlap verdicts from component-first arrays: d = cb - ca (3, ...), A[k, i] (3, 3, ...), a (3, ...), B, b."""
+    R = np.einsum("ki...,kj...->ij...", A, B)  # R[i, j] = a_i . b_j
+    t = np.einsum("ki...,k...->i...", A, d)  # centre offset in A's frame
+    absR = np.abs(R) + eps
+    # Axes of A, then axes of B.
+    sep = np.any(np.abs(t) > a + np.einsum("ij...,j...->i...", absR, b), axis=0)
+    tb = np.einsum("i...,ij...->j...", t, R)
+    sep |= np.any(np.abs(tb) > np.einsum("i...,ij...->j...", a, absR) + b, axis=0)
+    # The nine edge-edge axes a_i x b_j.
+    lhs = np.abs(t[_I2][:, None] * R[_I1] - t[_I1][:, None] * R[_I2])
+    ra = a[_I1][:, None] * absR[_I2] + a[_I2][:, None] * absR[_I1]
+    rb = b[_I1][None] * absR[:, _I2] + b[_I2][None] * absR[:, _I1]
+    sep |= np.any(lhs > ra + rb, axis=(0, 1))
+    return ~sep
+
+
+def obb_overlap(a: OBB, b: OBB) -> NDArray[np.bool_]:
+    """Return whether boxes `a` and `b` overlap (touching counts), broadcast over batch dims.
+
+    Exact separating-axis test over the 15 candidate axes (3 + 3 face normals, 9 edge
+    cross products), robust for parallel edges.
+    """
+    if not isinstance(a, OBB) or not isinstance(b, OBB):
+        raise InputError(
+            f"obb_overlap: expected two OBB, got {type(a).__name__}, {type(b).__name__}"
+        )
+    try:
+        np.broadcast_shapes(a.shape, b.shape)
+    except ValueError as exc:
+        raise InputError(
+            f"obb_overlap: batch shapes {a.shape} and {b.shape} do not broadcast"
+        ) from exc
+    return sat_overlap(a.center, a.rotation, a.half_extents, b.center, b.rotation, b.half_extents)
