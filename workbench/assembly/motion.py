@@ -1,0 +1,83 @@
+"""Straight-line motion of a rigid part: linear position, slerped orientation, and its validation."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.errors import InputError
+from workbench.geometry.transforms import make_transform, matrix_to_wxyz, wxyz_to_matrix
+
+
+def check_pose(T: ArrayLike, name: str) -> NDArray[np.float64]:
+    """Return T as a (4, 4) float array after checking it is a finite rigid transform."""
+    A = np.asarray(T, dtype=float)
+    if A.shape != (4, 4):
+        raise InputError(f"{name} must be a (4, 4) pose in metres, got shape {A.shape}")
+    if not np.all(np.isfinite(A)):
+        raise InputError(f"{name} has NaN or infinite entries")
+    R = A[:3, :3]
+    if not np.allclose(R @ R.T, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
+        raise InputError(f"{name}[:3, :3] must be a rotation (orthonormal, det +1)")
+    if not np.allclose(A[3], [0, 0, 0, 1]):
+        raise InputError(f"{name}[3] must be [0, 0, 0, 1], got {A[3].tolist()}")
+    return A
+
+
+def slerp(q0: ArrayLike, q1: ArrayLike, u: ArrayLike) -> NDArray[np.float64]:
+    """Return unit quaternions (n, 4) (w, x, y, z) on the short arc from q0 to q1 at fractions u (n,)."""
+    q0 = np.asarray(q0, float)
+    q1 = np.asarray(q1, float)
+    u = np.atleast_1d(np.asarray(u, float))[:, None]
+    d = float(q0 @ q1)
+    if d < 0.0:
+        q1, d = -q1, -d
+    if d > 1.0 - 1e-12:
+        q = q0 + u * (q1 - q0)
+    else:
+        th = np.arccos(d)
+        q = (np.sin((1.0 - u) * th) * q0 + np.sin(u * th) * q1) / np.sin(th)
+    return q / np.linalg.norm(q, axis=1, keepdims=True)
+
+
+def rotation_angle(T0: ArrayLike, T1: ArrayLike) -> NDArray[np.float64]:
+    """Return the angle [rad] of the relative rotation between (..., 4, 4) poses."""
+    R0 = np.asarray(T0, float)[..., :3, :3]
+    R1 = np.asarray(T1, float)[..., :3, :3]
+    c = 0.5 * (np.einsum("...ij,...ij->...", R0, R1) - 1.0)
+    return np.arccos(np.clip(c, -1.0, 1.0))
+
+
+def pose_distance(T0: ArrayLike, T1: ArrayLike, radius: float) -> NDArray[np.float64]:
+    """Return |Δp| + radius·angle [m]: a bound on how far any point of the part moves."""
+    T0 = np.asarray(T0, float)
+    T1 = np.asarray(T1, float)
+    dp = np.linalg.norm(T1[..., :3, 3] - T0[..., :3, 3], axis=-1)
+    return dp + radius * rotation_angle(T0, T1)
+
+
+def interpolate(T0: ArrayLike, T1: ArrayLike, u: ArrayLike) -> NDArray[np.float64]:
+    """Return poses (n, 4, 4) at fractions u (n,) of the straight motion T0 -> T1 (lerp + slerp)."""
+    T0 = np.asarray(T0, float)
+    T1 = np.asarray(T1, float)
+    u = np.atleast_1d(np.asarray(u, float))
+    q = slerp(matrix_to_wxyz(T0[:3, :3]), matrix_to_wxyz(T1[:3, :3]), u)
+    p = T0[:3, 3] + u[:, None] * (T1[:3, 3] - T0[:3, 3])
+    return make_transform(wxyz_to_matrix(q), p)
+
+
+def motion_samples(
+    T0: ArrayLike, T1: ArrayLike, radius: float, resolution: float, *, include_start: bool = False
+) -> NDArray[np.float64]:
+    """Return poses (n, 4, 4) along T0 -> T1 (T1 last) no point of the part moves more than `resolution` [m] between."""
+    d = float(pose_distance(T0, T1, radius))
+    n = max(1, int(np.ceil(d / resolution)))
+    u = np.arange(0 if include_start else 1, n + 1) / n
+    return interpolate(T0, T1, u)
+
+
+def path_samples(poses: ArrayLike, radius: float, resolution: float) -> NDArray[np.float64]:
+    """Return all poses (m, 4, 4) along a piecewise straight path, spaced at most `resolution` [m]."""
+    P = np.asarray(poses, float)
+    out = [P[:1]] + [motion_samples(P[i], P[i + 1], radius, resolution) for i in range(len(P) - 1)]
+    return np.concatenate(out)
