@@ -1,0 +1,87 @@
+"""Generated link shapes: watertight, cover the arm's segments, adjacent links touch, i/i+2 apart."""
+
+from __future__ import annotations
+
+import fcl
+import numpy as np
+import pytest
+import trimesh
+
+from workbench.kinematics import DHRobot
+from workbench.kinematics.link_shapes import flange_mesh, link_meshes
+
+
+@pytest.fixture(scope="module")
+def robot() -> DHRobot:
+    return DHRobot.mz07()
+
+
+@pytest.fixture(scope="module")
+def meshes(robot: DHRobot) -> list[trimesh.Trimesh]:
+    return link_meshes(robot)
+
+
+def placed(meshes: list[trimesh.Trimesh], frames: np.ndarray) -> list[trimesh.Trimesh]:
+    return [m.copy().apply_transform(F) for m, F in zip(meshes, frames, strict=False)]
+
+
+def fcl_overlap(a: trimesh.Trimesh, b: trimesh.Trimesh) -> bool:
+    """Twin: python-fcl surface collision plus containment (fcl meshes are surfaces)."""
+
+    def obj(m: trimesh.Trimesh) -> fcl.CollisionObject:
+        bvh = fcl.BVHModel()
+        bvh.beginModel(len(m.vertices), len(m.faces))
+        bvh.addSubModel(m.vertices, m.faces)
+        bvh.endModel()
+        return fcl.CollisionObject(bvh, fcl.Transform())
+
+    hit = fcl.collide(obj(a), obj(b), fcl.CollisionRequest(), fcl.CollisionResult()) > 0
+    return bool(hit or a.contains(b.vertices[:1]).any() or b.contains(a.vertices[:1]).any())
+
+
+def test_meshes_are_watertight_and_non_empty(robot: DHRobot, meshes: list[trimesh.Trimesh]) -> None:
+    assert len(meshes) == robot.dof + 1
+    for m in meshes:
+        assert m.is_watertight and m.is_volume
+        assert len(m.faces) > 0 and m.volume > 1e-6
+    f = flange_mesh(robot)
+    assert f.is_watertight and f.volume > 0
+    np.testing.assert_allclose(f.bounds[:, 2], [-0.01 * 1.149, 0.0], atol=2e-3)
+
+
+def test_union_covers_the_segments_between_joint_origins(
+    robot: DHRobot, meshes: list[trimesh.Trimesh]
+) -> None:
+    rng = np.random.default_rng(0)
+    qs = np.vstack([np.zeros(6), rng.uniform(robot.limits[:, 0], robot.limits[:, 1], (4, 6))])
+    # The base origin and the flange centre lie on the surface; stay just inside them.
+    s = np.linspace(0.005, 0.995, 21)[:, None]
+    for q in qs:
+        frames = robot.link_transforms(q)
+        world = placed(meshes, frames)
+        o = frames[:, :3, 3]
+        pts = np.vstack([o[i] + s * (o[i + 1] - o[i]) for i in range(robot.dof)])
+        inside = np.zeros(len(pts), dtype=bool)
+        for m in world:
+            inside |= m.contains(pts)
+        assert inside.all(), pts[~inside]
+
+
+def test_adjacent_links_touch_and_links_two_apart_do_not_at_home(
+    robot: DHRobot, meshes: list[trimesh.Trimesh]
+) -> None:
+    world = placed(meshes, robot.link_transforms(np.zeros(6)))
+    for i in range(robot.dof):
+        assert fcl_overlap(world[i], world[i + 1]), (i, i + 1)
+    for i in range(robot.dof - 1):
+        assert not fcl_overlap(world[i], world[i + 2]), (i, i + 2)
+
+
+def test_adjacent_links_touch_at_random_poses(
+    robot: DHRobot, meshes: list[trimesh.Trimesh]
+) -> None:
+    rng = np.random.default_rng(1)
+    for q in rng.uniform(robot.limits[:, 0], robot.limits[:, 1], (3, 6)):
+        world = placed(meshes, robot.link_transforms(q))
+        for i in range(robot.dof):
+            assert fcl_overlap(world[i], world[i + 1])

@@ -1,0 +1,22 @@
+"""Robot kinematics: DH and URDF arms, batched FK, analytic (OPW) and numeric IK, link geometry."""
+
+from __future__ import annotations
+
+from workbench.kinematics.dh_robot import IK_TOL, DHRobot
+from workbench.kinematics.ik_report import branch_name
+from workbench.kinematics.link_shapes import flange_mesh, link_meshes
+from workbench.kinematics.presets import MZ07_SEED_DH, MZ07_SEED_TOOL
+from workbench.kinematics.singularity import Singularities
+from workbench.kinematics.urdf_robot import URDFRobot
+
+__all__ = [
+    "IK_TOL",
+    "MZ07_SEED_DH",
+    "MZ07_SEED_TOOL",
+    "DHRobot",
+    "Singularities",
+    "URDFRobot",
+    "branch_name",
+    "flange_mesh",
+    "link_meshes",
+]

@@ -1,0 +1,79 @@
+"""Why a pose has no IK solution: out of reach (by how much) or outside which joint limit."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.kinematics.joint_turns import LIMIT_SLACK, wrap_to_pi
+from workbench.kinematics.opw_single import solve_single
+
+if TYPE_CHECKING:
+    from workbench.kinematics.dh_robot import DHRobot
+
+_BRANCH = ("front", "back"), ("elbow A", "elbow B"), ("no flip", "flip")
+
+
+def branch_name(b: int) -> str:
+    """Return a readable name of analytic branch b = 4 * shoulder + 2 * elbow + wrist."""
+    return "/".join(_BRANCH[i][(b >> (2 - i)) & 1] for i in range(3))
+
+
+def unreachable_reason(robot: DHRobot, T: NDArray[np.float64]) -> str:
+    """Return a message saying why pose T (4, 4) [m] has no IK solution for `robot`."""
+    pos = T[:3, 3] * 1000.0
+    head = f"pose at xyz = [{pos[0]:.1f}, {pos[1]:.1f}, {pos[2]:.1f}] mm is unreachable: "
+    g = robot.opw
+    if g is None:
+        dist = float(np.linalg.norm(T[:3, 3]))
+        return head + (
+            f"numeric IK (pinocchio CLIK from 15 seeds) found no solution within the joint "
+            f"limits; the flange target is {dist * 1000:.1f} mm from the base origin"
+        )
+    pc = T[:3, 3] - T[:3, 1] * g.w6[1] - T[:3, 2] * g.w6[2]
+    rho = math.hypot(pc[0], pc[1])
+    if rho < abs(g.b) - 1e-12:
+        return head + (
+            f"the wrist centre is {rho * 1000:.1f} mm from the joint-1 axis, inside the "
+            f"lateral offset of {abs(g.b) * 1000:.1f} mm"
+        )
+    beta = math.asin(max(-1.0, min(1.0, -g.sig1 * g.b / rho))) if rho > 0 else 0.0
+    r_max, r_min = abs(g.a2) + g.K, abs(abs(g.a2) - g.K)
+    dists = []
+    for sgn in (1.0, -1.0):
+        px1 = sgn * rho * math.cos(beta) - g.a1
+        py1 = g.sig1 * (pc[2] - g.d1)
+        dists.append(math.hypot(px1, py1))
+    if min(dists) > r_max:
+        return head + (
+            f"out of reach by {(min(dists) - r_max) * 1000:.1f} mm (the wrist centre is "
+            f"{min(dists) * 1000:.1f} mm from the joint-2 axis; the arm reaches {r_max * 1000:.1f} mm)"
+        )
+    if max(dists) < r_min:
+        return head + (
+            f"too close by {(r_min - max(dists)) * 1000:.1f} mm (the wrist centre is "
+            f"{max(dists) * 1000:.1f} mm from the joint-2 axis; the arm folds to {r_min * 1000:.1f} mm)"
+        )
+    problems = []
+    lo, hi = robot.limits[:, 0], robot.limits[:, 1]
+    for b, (*theta, err) in enumerate(solve_single(g, T)):
+        if not err < 1e-9:
+            continue
+        q = wrap_to_pi(np.asarray(theta) - robot.dh[:, 0])
+        k_lo = np.ceil((lo - LIMIT_SLACK - q) / (2 * math.pi))
+        k_hi = np.floor((hi + LIMIT_SLACK - q) / (2 * math.pi))
+        bad = np.nonzero(k_lo > k_hi)[0]
+        if bad.size:
+            j = int(bad[0])
+            problems.append(
+                f"{branch_name(b)}: joint {j + 1} = {math.degrees(q[j]):.1f} deg outside "
+                f"[{math.degrees(lo[j]):.1f}, {math.degrees(hi[j]):.1f}] deg"
+            )
+    if problems:
+        return (
+            head + "every configuration is outside the joint limits (" + "; ".join(problems) + ")"
+        )
+    return head + "no configuration reproduces the pose to 1e-9 (numerically degenerate pose)"

@@ -1,0 +1,148 @@
+"""Robot link geometry generated from DH lengths: convex, watertight shapes like an industrial arm.
+
+Link i (the body moved by joint i) is the convex hull of
+- cylinders along its DH polyline: from the joint-i axis along z_(i-1) by d_i, then along x_i
+  by a_i; the first piece starts where the previous link's housing ends (minus 10 % so that
+  adjacent links overlap), so a short offset does not reach back into link i-2;
+- a cylindrical housing around the joint-(i+1) axis at frame i's origin.
+Link 0 is the base: a cylinder around the joint-1 axis. The last link ends in the flange
+plate. Radii scale with the arm's length so a small arm gets thin links. Every mesh is
+expressed in its DH frame i (``robot.link_transforms(q)[..., i, :, :]`` places it).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Protocol
+
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.dh_chain import dh_fixed_part
+
+FloatArray = NDArray[np.float64]
+SECTIONS = 24
+# Segment radius of links 1..6 as a fraction of the arm's length (later links get the last).
+RADIUS_FRACTIONS = (0.075, 0.065, 0.055, 0.045, 0.04, 0.035)
+HOUSING_RADIUS = 1.1  # housing radius / segment radius
+HOUSING_HALF_LENGTH = 1.4  # housing half-length / housing radius
+OVERLAP = 0.9  # a link starts at 90 % of the distance to leave the previous housing
+FLANGE_THICKNESS = 0.01  # m, scaled with the arm
+
+
+class _HasDH(Protocol):
+    dh: FloatArray
+    dof: int
+
+
+class _HasMeshes(Protocol):
+    def link_meshes(self) -> list[trimesh.Trimesh]: ...
+
+
+def arm_scale(dh: FloatArray) -> float:
+    """Return the arm's length [m]: sum of hypot(a, d) over the rows, at least 0.2 m."""
+    return max(float(np.hypot(dh[:, 1], dh[:, 2]).sum()), 0.2)
+
+
+def link_radii(dh: FloatArray) -> FloatArray:
+    """Return the segment radius [m] of links 1..n (n,)."""
+    n = dh.shape[0]
+    frac = [RADIUS_FRACTIONS[min(i, len(RADIUS_FRACTIONS) - 1)] for i in range(n)]
+    return arm_scale(dh) * np.asarray(frac)
+
+
+def _cylinder_points(p0: FloatArray, p1: FloatArray, radius: float) -> FloatArray:
+    axis = p1 - p0
+    length = float(np.linalg.norm(axis))
+    u = axis / length
+    helper = np.array([1.0, 0.0, 0.0]) if abs(u[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    e1 = np.cross(u, helper)
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(u, e1)
+    ang = np.linspace(0.0, 2.0 * math.pi, SECTIONS, endpoint=False)
+    ring = radius * (np.cos(ang)[:, None] * e1 + np.sin(ang)[:, None] * e2)
+    return np.vstack([p0 + ring, p1 + ring])
+
+
+def _exit_distance(u: FloatArray, radius: float, half_length: float) -> float:
+    """Return the distance along unit u from a housing's centre to its surface (axis = z)."""
+    axial, radial = abs(u[2]), math.hypot(u[0], u[1])
+    t_ax = half_length / axial if axial > 1e-12 else math.inf
+    t_rad = radius / radial if radial > 1e-12 else math.inf
+    return min(t_ax, t_rad)
+
+
+def _hull(points: FloatArray) -> trimesh.Trimesh:
+    hull = trimesh.convex.convex_hull(points)
+    hull.fix_normals()
+    return hull
+
+
+def dh_link_meshes(dh: FloatArray) -> list[trimesh.Trimesh]:
+    """Return n+1 watertight meshes [m]: base in the base frame, link i in DH frame i."""
+    n = dh.shape[0]
+    B = dh_fixed_part(dh)
+    r = link_radii(dh)
+    h = HOUSING_RADIUS * r
+    ell = HOUSING_HALF_LENGTH * h
+    scale = arm_scale(dh)
+    # Base: a cylinder up the joint-1 axis, half as tall as the shoulder height.
+    base_h = max(0.5 * abs(dh[0, 1]), 0.1 * scale)
+    base_sign = 1.0 if dh[0, 1] >= 0 else -1.0
+    base_r = 1.3 * r[0]
+    meshes = [_hull(_cylinder_points(np.zeros(3), np.array([0, 0, base_sign * base_h]), base_r))]
+    prev_radius, prev_half = base_r, base_h  # the base reaches base_h up the joint-1 axis
+    for i in range(n):
+        off, d, a = dh[i, 0], dh[i, 1], dh[i, 2]
+        # DH polyline in the joint-rotated frame (i-1)': P0 on the joint-i axis, P1, P2 = o_i.
+        P0 = np.zeros(3)
+        P1 = np.array([0.0, 0.0, d])
+        P2 = P1 + a * np.array([math.cos(off), math.sin(off), 0.0])
+        pts: list[FloatArray] = []
+        pieces = [(P0, P1), (P1, P2)]
+        first = True
+        for p, q in pieces:
+            length = float(np.linalg.norm(q - p))
+            if length < 1e-9:
+                continue
+            if first:
+                first = False
+                u = (q - p) / length
+                start = OVERLAP * _exit_distance(u, prev_radius, prev_half)
+                if start >= length:
+                    continue
+                p = p + start * u
+            pts.append(_cylinder_points(p, q, r[i]))
+        # Housing of joint i+1 (or the flange plate on the last link), in frame i.
+        if i < n - 1:
+            housing = _cylinder_points(
+                np.array([0.0, 0.0, -ell[i]]), np.array([0.0, 0.0, ell[i]]), h[i]
+            )
+        else:
+            t = FLANGE_THICKNESS * scale
+            housing = _cylinder_points(np.array([0.0, 0.0, -t]), np.zeros(3), r[i])
+        inv_B = invert_transform(B[i])
+        local = [p @ inv_B[:3, :3].T + inv_B[:3, 3] for p in pts] + [housing]
+        meshes.append(_hull(np.vstack(local)))
+        prev_radius, prev_half = h[i], ell[i]
+    return meshes
+
+
+def link_meshes(robot: _HasDH | _HasMeshes) -> list[trimesh.Trimesh]:
+    """Return the n+1 link meshes of a robot [m], each in the frame of ``link_transforms``.
+
+    DH robots get generated shapes; robots that bring their own (URDF) return theirs.
+    """
+    if hasattr(robot, "link_meshes"):
+        return robot.link_meshes()
+    return dh_link_meshes(robot.dh)
+
+
+def flange_mesh(robot: _HasDH, thickness: float | None = None) -> trimesh.Trimesh:
+    """Return the flange plate [m] in the flange frame: a disk from z = -thickness to 0."""
+    dh = robot.dh
+    t = FLANGE_THICKNESS * arm_scale(dh) if thickness is None else float(thickness)
+    radius = float(link_radii(dh)[-1])
+    return _hull(_cylinder_points(np.array([0.0, 0.0, -t]), np.zeros(3), radius))
