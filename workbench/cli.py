@@ -23,7 +23,48 @@ def _parser() -> argparse.ArgumentParser:
 
     check = sub.add_parser("check", help="validate a project and report the collision status")
     check.add_argument("project", help="project JSON")
+
+    export = sub.add_parser("export", help="plan the project's program and export it")
+    export.add_argument("project", help="project JSON")
+    export.add_argument("--format", required=True, choices=["rapid", "krl", "ls", "urscript", "csv", "json"])
+    export.add_argument("--out", required=True, help="output file (written atomically)")
+    export.add_argument("--force", action="store_true",
+                        help="write the program even if the plan collides or breaks a limit")
     return parser
+
+
+class _Progress:
+    """Progress of a long job on stderr: a bar on a terminal, a line per stage in logs."""
+
+    def __init__(self) -> None:
+        self.tty = sys.stderr.isatty()
+        self.stage = ""
+
+    def __call__(self, fraction: float, message: str) -> None:
+        if self.tty:
+            print(f"\r  [{'#' * int(fraction * 30):<30}] {fraction * 100:5.1f}% {message:<30}",
+                  end="" if fraction < 1 else "\n", file=sys.stderr, flush=True)
+            return
+        stage = message.split(" ")[0]
+        if stage != self.stage:
+            self.stage = stage
+            print(f"  {fraction * 100:5.1f}% {message}", file=sys.stderr, flush=True)
+
+
+def _export(args: argparse.Namespace) -> int:
+    from workbench.atomic_file import atomic_write_text
+    from workbench.service import Workbench
+
+    wb = Workbench.open(args.project)
+    plan = wb.plan_motion(progress=_Progress())
+    print(f"{args.project}: {plan.summary()}")
+    if not plan.ok and not args.force:
+        print("workbench export: error: the plan has problems (above); fix the program, or pass"
+              " --force to write it anyway", file=sys.stderr)
+        return 1
+    atomic_write_text(args.out, wb.export_program(args.format))
+    print(f"wrote {args.out} ({args.format})")
+    return 0 if plan.ok else 1
 
 
 def _serve(args: argparse.Namespace) -> int:
@@ -58,6 +99,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if args.command == "serve":
             return _serve(args)
+        if args.command == "export":
+            return _export(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

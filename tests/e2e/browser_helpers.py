@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import time
+
+import pytest
+
 
 def set_slider(page, label: str, value: float) -> None:  # type: ignore[no-untyped-def]
     """Type `value` into the number box beside the viser slider labelled `label`."""
@@ -19,3 +23,13 @@ def canvas_png(page) -> bytes:  # type: ignore[no-untyped-def]
     box = canvas.bounding_box()
     clip = {"x": box["x"] + 10, "y": box["y"] + 60, "width": box["width"] * 0.45, "height": box["height"] - 120}
     return page.screenshot(clip=clip)
+
+
+def wait_for(predicate, *, timeout: float = 15.0, what: str = "condition") -> None:  # type: ignore[no-untyped-def]
+    """Poll `predicate` until it is true; fail naming `what` after `timeout` seconds."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return
+        time.sleep(0.05)
+    pytest.fail(f"timed out after {timeout} s waiting for {what}")

@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import os
 import socket
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
+from browser_helpers import wait_for
 from workbench.gui.app import WorkbenchApp, start_server
 from workbench.service import Workbench
 
@@ -89,13 +89,3 @@ def page(browser: object, app: WorkbenchApp, request: pytest.FixtureRequest) -> 
         pg.screenshot(path=str(ARTIFACTS / f"{request.node.name}.png"))
         (ARTIFACTS / f"{request.node.name}.html").write_text(pg.content())
     context.close()
-
-
-def wait_for(predicate, *, timeout: float = 15.0, what: str = "condition") -> None:  # type: ignore[no-untyped-def]
-    """Poll `predicate` until it is true; fail naming `what` after `timeout` seconds."""
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return
-        time.sleep(0.05)
-    pytest.fail(f"timed out after {timeout} s waiting for {what}")

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests_e2e_helpers import canvas_png, set_slider  # type: ignore[import-not-found]
+from browser_helpers import canvas_png, set_slider, wait_for
 from workbench.gui.app import WorkbenchApp
 from workbench.gui.scene import COLLISION_COLOR, ROBOT_COLOR
 
@@ -17,8 +17,6 @@ DOCS = Path(__file__).resolve().parents[2] / "docs"
 
 
 def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
-    from conftest import wait_for  # type: ignore[import-not-found]
-
     sliders = page.get_by_role("slider")
     assert sliders.count() >= 6
     before = canvas_png(page)
@@ -37,10 +35,8 @@ def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # 
 
 
 def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
-    from conftest import wait_for  # type: ignore[import-not-found]
-
-    # J2 forward drives the arm into the table in front of the robot.
-    set_slider(page, "J2 [deg]", 60.0)
+    # J2 negative tips the arm forward into the table in front of the robot.
+    set_slider(page, "J2 [deg]", -60.0)
     wait_for(lambda: app.wb.collision_status().in_collision, what="a collision on the server")
     hit = app.wb.collision_status().colliding_bodies()
     assert any(tuple(app.scene.links[n].color) == COLLISION_COLOR for n in hit if n in app.scene.links)
@@ -56,7 +52,7 @@ def test_upload_bad_project_shows_field_and_keeps_state(page, app: WorkbenchApp,
         {"name": "a", "shape": "box", "size": [1, 2], "pose": {"xyz": [0, 0, 0]}}]}}))
     name_before = app.wb.project.name
     with page.expect_file_chooser() as fc:
-        page.get_by_role("button", name="Load project JSON").click()
+        page.get_by_role("button", name="Load project JSON", exact=True).click()
     fc.value.set_files(str(bad))
     page.get_by_text("cell.objects[0].size").first.wait_for(timeout=10_000)
     assert app.wb.project.name == name_before

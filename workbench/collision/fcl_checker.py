@@ -44,20 +44,17 @@ class _Entry:
         self.obj = fcl.CollisionObject(solid.fcl_geometry(), fcl.Transform())
         mesh = solid.to_trimesh()
         self.mesh = mesh
-        self.local_bounds = np.asarray(mesh.bounds, float)
+        lo, hi = np.asarray(mesh.bounds, float)
+        self.local_corners = np.array(list(itertools.product(*zip(lo, hi, strict=True))))
         # A point on the surface, for the containment test.
         self.probe = np.asarray(mesh.vertices[0], float)
-        self.T = np.eye(4)
+        self.place(np.eye(4))
 
     def place(self, T: NDArray[np.float64]) -> None:
         self.T = np.asarray(T, float)
         self.obj.setTransform(fcl_transform(self.T))
-
-    def world_aabb(self) -> NDArray[np.float64]:
-        lo, hi = self.local_bounds
-        corners = np.array(list(itertools.product(*zip(lo, hi, strict=True))))
-        w = corners @ self.T[:3, :3].T + self.T[:3, 3]
-        return np.stack([w.min(0), w.max(0)])
+        w = self.local_corners @ self.T[:3, :3].T + self.T[:3, 3]
+        self.aabb = (w.min(0), w.max(0))
 
     def contains_world_point(self, p: NDArray[np.float64]) -> bool:
         if self.solid.kind != "mesh" or not self.mesh.is_watertight:
@@ -117,7 +114,7 @@ class CollisionScene:
         for a, b in self.pairs:
             ea, eb = self._entry(a), self._entry(b)
             hit = fcl.collide(ea.obj, eb.obj, request, fcl.CollisionResult()) > 0
-            if not hit and _aabbs_overlap(ea.world_aabb(), eb.world_aabb()):
+            if not hit and _aabbs_overlap(ea.aabb, eb.aabb):
                 hit = eb.contains_world_point(ea.T[:3, :3] @ ea.probe + ea.T[:3, 3]) or (
                     ea.contains_world_point(eb.T[:3, :3] @ eb.probe + eb.T[:3, 3])
                 )
@@ -132,8 +129,11 @@ class CollisionScene:
         return CollisionReport(tuple(colliding), float(best), best_pair, len(self.pairs))
 
 
-def _aabbs_overlap(a: NDArray[np.float64], b: NDArray[np.float64]) -> bool:
-    return bool(np.all(a[0] <= b[1]) and np.all(b[0] <= a[1]))
+def _aabbs_overlap(
+    a: tuple[NDArray[np.float64], NDArray[np.float64]],
+    b: tuple[NDArray[np.float64], NDArray[np.float64]],
+) -> bool:
+    return bool((a[0] <= b[1]).all() and (b[0] <= a[1]).all())
 
 
 def solid_from_trimesh(name: str, mesh: trimesh.Trimesh) -> Solid:

@@ -12,8 +12,10 @@ import viser
 
 from workbench.errors import ServerError
 from workbench.gui.jog_panel import JogPanel
+from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.project_panel import ProjectPanel
 from workbench.gui.scene import RobotScene
+from workbench.gui.timeline import Timeline
 from workbench.service import Workbench
 
 log = logging.getLogger("workbench.gui")
@@ -57,21 +59,29 @@ class WorkbenchApp:
         server.gui.configure_theme(control_width="large", dark_mode=False)
         self.tabs = server.gui.add_tab_group()
         self.robot_tab = self.tabs.add_tab("Robot")
+        self.motion_tab = self.tabs.add_tab("Motion")
         self.project_tab = self.tabs.add_tab("Project")
         self.scene = RobotScene(server, wb)
+        self.timeline = Timeline(server, show=self.scene.show)
         with self.robot_tab:
             self.jog = JogPanel(server, wb, on_moved=self.scene.update)
+        with self.motion_tab:
+            self.motion = MotionPanel(server, wb, self.timeline)
         with self.project_tab:
             self.project_panel = ProjectPanel(server, wb, on_replaced=self.rebuild)
 
     def rebuild(self) -> None:
         """Recreate the scene and jog panel after the workbench switched projects."""
         with self.lock:
+            self.timeline.pause()
             self.jog.remove()
+            self.motion.remove()
             self.scene.clear()
             self.scene.build()
             with self.robot_tab:
                 self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
+            with self.motion_tab:
+                self.motion = MotionPanel(self.server, self.wb, self.timeline)
 
 
 def serve(project: str | Path | None, *, host: str = "127.0.0.1", port: int = 8080) -> None:

@@ -67,9 +67,13 @@ class RobotScene:
 
     def update(self) -> None:
         """Move the robot to the workbench's joints and colour colliding bodies red."""
+        self.show(None)
+
+    def show(self, q: NDArray[np.float64] | None) -> None:
+        """Pose the robot at joints `q` [rad] (None: the workbench's own), red where it collides."""
         wb = self.wb
-        poses = wb.link_poses()
-        report = wb.collision_status()
+        poses = wb.link_poses(q)
+        report = wb.collision_status(q)
         hit = report.colliding_bodies()
         tool_color = tuple(wb.project.tool.color)
         with self.server.atomic():
@@ -83,5 +87,5 @@ class RobotScene:
                 kw = _pose_kwargs(poses[-1])
                 h.wxyz, h.position = kw["wxyz"], kw["position"]
                 h.color = COLLISION_COLOR if "tool" in hit else tool_color
-            kw = _pose_kwargs(wb.tcp_pose())
+            kw = _pose_kwargs(wb.tcp_pose(q))
             self.tcp_frame.wxyz, self.tcp_frame.position = kw["wxyz"], kw["position"]

@@ -138,7 +138,9 @@ def _flow_velocities(
     same = (np.sign(d[:-1]) == np.sign(d[1:])) & (d[:-1] != 0.0)
     tangent = (q[2:] - q[:-2]) / (seg_time[:-1] + seg_time[1:])[:, None]
     mag = np.where(same, np.abs(tangent), 0.0)
-    cap = np.minimum(vmax[:-1], vmax[1:])
+    # A hair below the limit: ruckig's validate_input rejects a velocity equal to the
+    # limit after rounding (seen with per-segment limits from linear moves).
+    cap = np.minimum(vmax[:-1], vmax[1:]) * (1.0 - 1e-9)
     with np.errstate(divide="ignore"):
         scale = np.min(np.where(mag > 0.0, cap / mag, np.inf), axis=1, keepdims=True)
     speed = np.zeros_like(q)
@@ -189,7 +191,7 @@ class _SegmentSolver:
                 return None, "ruckig rejected the input"
             traj = ruckig.Trajectory(self.dof)
             result = self.otg.calculate(inp, traj)
-        except RuntimeError as exc:  # ruckig.RuckigError derives from RuntimeError
+        except (RuntimeError, ruckig.RuckigError) as exc:  # validate_input raises on bad input
             return None, f"ruckig error: {exc}"
         if result not in (ruckig.Result.Working, ruckig.Result.Finished):
             return None, f"ruckig returned {result.name}"

@@ -143,6 +143,44 @@ class Cell(_Model):
         return self
 
 
+class MoveSpec(_Model):
+    """One move of a robot program: a joint move (PTP/MoveJ) or a linear move (LIN/MoveL)."""
+
+    name: str = ""
+    type: Literal["joint", "linear"]
+    joints: list[float] | None = None  # deg, target of a joint move
+    pose: Pose | None = None  # TCP target in the world (mm, deg); required for linear moves
+    speed: Annotated[float, Field(gt=0)] = 100.0  # joint: % of max joint speed; linear: mm/s
+    zone: Annotated[float, Field(ge=0)] = 0.0  # blend radius [mm]; 0 = exact stop (fine)
+
+    @model_validator(mode="after")
+    def _target(self) -> MoveSpec:
+        if (self.joints is None) == (self.pose is None):
+            raise ValueError("give exactly one target: 'joints' [deg] or 'pose' {xyz mm, rpy deg}")
+        if self.type == "linear" and self.pose is None:
+            raise ValueError("a linear move needs a 'pose' target")
+        if self.type == "joint" and self.speed > 100:
+            raise ValueError(f"a joint move's speed is a percentage (0, 100], got {self.speed}")
+        return self
+
+
+class ProgramSpec(_Model):
+    """A robot program: start joints and moves; planned into a jerk-limited trajectory."""
+
+    name: str = "main"
+    start: list[float] | None = None  # deg; default: the robot's stored joints
+    moves: list[MoveSpec] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _name(self) -> ProgramSpec:
+        if not self.name.isidentifier() or len(self.name) > 24:
+            raise ValueError(
+                f"program name {self.name!r} must be a letter or _ followed by letters, digits or _"
+                " (at most 24 characters), as robot controllers require"
+            )
+        return self
+
+
 class Project(_Model):
     """A workbench project file."""
 
@@ -152,3 +190,4 @@ class Project(_Model):
     robot: Robot = Field(default_factory=lambda: Robot(preset="mz07"))
     tool: Tool = Field(default_factory=Tool)
     cell: Cell = Field(default_factory=Cell)
+    program: ProgramSpec | None = None

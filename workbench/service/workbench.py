@@ -23,6 +23,7 @@ from workbench.project import (
 )
 from workbench.service.cell import CellBody, build_cell
 from workbench.service.convert import DEG
+from workbench.service.motion_plan import MotionPlan, Progress, export_text, plan_motion
 from workbench.service.robot_setup import RobotSetup, build_robot
 
 
@@ -101,6 +102,7 @@ class Workbench:
         self._checker = checker
         self._q = robot.q0.copy()
         self._report: CollisionReport | None = None
+        self._plan: MotionPlan | None = None
 
     def replace_project(self, project: Project) -> None:
         """Switch to another project; on any error the current one stays as it was."""
@@ -240,3 +242,32 @@ class Workbench:
             if self._report is None:
                 self._report = self._checker.check(self._q)
             return self._report
+
+    # -- motion -----------------------------------------------------------------------
+    def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
+        """Plan the project's program: IK through its moves, a jerk-limited trajectory, checks.
+
+        `progress(fraction, message)` is called as the work advances. The plan is kept as
+        `last_plan` for playback and export.
+        """
+        spec = self._project.program
+        if spec is None:
+            raise InputError("program: the project has no program; add a 'program' with moves")
+        if not (np.isfinite(dt) and 0 < dt <= 0.1):
+            raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
+        q_start = self._q if spec.start is None else _as_vector(
+            np.asarray(spec.start, float) * DEG, self.robot.dof, "program.start")
+        plan = plan_motion(spec, self._robot, self._checker, q_start, dt=dt, progress=progress)
+        with self._lock:
+            self._plan = plan
+        return plan
+
+    @property
+    def last_plan(self) -> MotionPlan | None:
+        """Return the most recent motion plan, or None before the first `plan_motion`."""
+        return self._plan
+
+    def export_program(self, fmt: str) -> str:
+        """Return the last plan as a robot program or samples: rapid, krl, ls, urscript, csv, json."""
+        plan = self._plan or self.plan_motion()
+        return export_text(plan, fmt)

@@ -5,10 +5,19 @@ from __future__ import annotations
 from workbench.motion.programs.fanuc import to_ls
 from workbench.motion.programs.krl import to_krl
 from workbench.motion.programs.rapid import to_rapid
-from workbench.motion.programs.samples import load_csv, load_json, save_csv, save_json
+from workbench.motion.programs.samples import (
+    csv_text,
+    json_text,
+    load_csv,
+    load_json,
+    save_csv,
+    save_json,
+)
 from workbench.motion.programs.urscript import to_urscript
 
 __all__ = [
+    "csv_text",
+    "json_text",
     "load_csv",
     "load_json",
     "save_csv",

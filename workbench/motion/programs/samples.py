@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import io
 import json
 from pathlib import Path
 
@@ -10,6 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
+from workbench.atomic_file import atomic_write_text
 
 FORMAT = "workbench.joint_samples"
 
@@ -34,14 +36,20 @@ def _header(dof: int) -> list[str]:
     )
 
 
-def save_csv(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
-    """Write samples to CSV: t [s], q1..qn [rad], q1..qn [deg]; floats round-trip exactly."""
+def csv_text(times: ArrayLike, positions: ArrayLike) -> str:
+    """Return samples as CSV text: t [s], q1..qn [rad], q1..qn [deg]; floats round-trip exactly."""
     t, q = _check(times, positions)
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(_header(q.shape[1]))
-        for ti, qi, di in zip(t, q, np.degrees(q), strict=True):
-            w.writerow([repr(float(ti)), *(repr(float(x)) for x in qi), *(f"{x:.6f}" for x in di)])
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(_header(q.shape[1]))
+    for ti, qi, di in zip(t, q, np.degrees(q), strict=True):
+        w.writerow([repr(float(ti)), *(repr(float(x)) for x in qi), *(f"{x:.6f}" for x in di)])
+    return buf.getvalue()
+
+
+def save_csv(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
+    """Write `csv_text` of the samples to `path` atomically."""
+    atomic_write_text(path, csv_text(times, positions))
 
 
 def load_csv(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -59,8 +67,8 @@ def load_csv(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]
     return data[:, 0].copy(), data[:, 1:].reshape(len(rows) - 1, len(rad))
 
 
-def save_json(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
-    """Write samples to JSON with keys t_s, q_rad and q_deg (lists of rows)."""
+def json_text(times: ArrayLike, positions: ArrayLike) -> str:
+    """Return samples as JSON text with keys t_s, q_rad and q_deg (lists of rows)."""
     t, q = _check(times, positions)
     doc = {
         "format": FORMAT,
@@ -70,7 +78,12 @@ def save_json(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
         "q_rad": q.tolist(),
         "q_deg": np.round(np.degrees(q), 6).tolist(),
     }
-    Path(path).write_text(json.dumps(doc))
+    return json.dumps(doc)
+
+
+def save_json(path: str | Path, times: ArrayLike, positions: ArrayLike) -> None:
+    """Write `json_text` of the samples to `path` atomically."""
+    atomic_write_text(path, json_text(times, positions))
 
 
 def load_json(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

@@ -1,0 +1,88 @@
+"""The "Motion" tab: plan the project's program, see the checks, export robot programs."""
+
+from __future__ import annotations
+
+import viser
+
+from workbench.gui.notify import guarded
+from workbench.gui.timeline import Motion, Timeline
+from workbench.service import EXPORT_FORMATS, MotionPlan, Workbench
+
+
+def plan_to_motion(plan: MotionPlan, wb: Workbench) -> Motion:
+    """Return the timeline's view of a motion plan."""
+    return Motion(
+        name=plan.program.name,
+        times=plan.times,
+        positions=plan.positions,
+        velocities=plan.velocities,
+        accelerations=plan.accelerations,
+        tcp_speed=plan.tcp_speed,
+        colliding=plan.colliding,
+        velocity_limits=wb.robot.max_velocity,
+        acceleration_limits=wb.robot.max_acceleration,
+    )
+
+
+class MotionPanel:
+    """Plan button with progress, the plan's summary, and program export."""
+
+    def __init__(self, server: viser.ViserServer, wb: Workbench, timeline: Timeline) -> None:
+        self.server, self.wb, self.timeline = server, wb, timeline
+        g = server.gui
+        self.program = g.add_markdown("")
+        self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
+        self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
+        self.result = g.add_markdown("")
+        self.format = g.add_dropdown("Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid")
+        self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.plan_button.on_click(guarded(server, "Plan")(self._on_plan))
+        self.download.on_click(guarded(server, "Export")(self._on_download))
+        self.handles = [self.program, self.plan_button, self.progress, self.result, self.format,
+                        self.download]
+        self.refresh()
+
+    def remove(self) -> None:
+        """Remove the widgets (before the project is replaced)."""
+        for h in self.handles:
+            h.remove()
+
+    def refresh(self) -> None:
+        """Describe the project's program."""
+        spec = self.wb.project.program
+        if spec is None:
+            self.program.content = "This project has no program. Add a `program` with moves to its JSON."
+            self.plan_button.disabled = True
+            return
+        rows = "\n".join(
+            f"| {i + 1} | {m.name or '-'} | {m.type} | {m.speed:g} {'%' if m.type == 'joint' else 'mm/s'}"
+            f" | {'fine' if m.zone == 0 else f'{m.zone:g} mm'} |"
+            for i, m in enumerate(spec.moves))
+        self.program.content = (f"**Program `{spec.name}`**\n\n| # | name | type | speed | zone |\n"
+                                f"|---|---|---|---|---|\n{rows}")
+        self.plan_button.disabled = False
+
+    def _on_plan(self, event: viser.GuiEvent) -> None:
+        self.plan_button.disabled = True
+        self.progress.visible = True
+        self.progress.value = 0.0
+
+        def progress(fraction: float, message: str) -> None:
+            self.progress.value = 100.0 * fraction
+            self.result.content = f"Planning: {message}"
+
+        try:
+            plan = self.wb.plan_motion(progress=progress)
+        finally:
+            self.progress.visible = False
+            self.plan_button.disabled = False
+        self.result.content = ("**OK:** " if plan.ok else "**Problems:** ") + plan.summary()
+        self.download.disabled = False
+        self.timeline.load(plan_to_motion(plan, self.wb))
+
+    def _on_download(self, event: viser.GuiEvent) -> None:
+        fmt = str(self.format.value)
+        text = self.wb.export_program(fmt)
+        if event.client is not None:
+            name = (self.wb.last_plan.program.name if self.wb.last_plan else "program") + EXPORT_FORMATS[fmt]
+            event.client.send_file_download(name, text.encode(), save_immediately=True)

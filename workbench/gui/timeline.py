@@ -1,0 +1,163 @@
+"""The timeline shared by every workflow: play, pause, scrub and speed over a sampled motion,
+with plots of joint positions, velocities, accelerations and TCP speed beside it."""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import viser
+from numpy.typing import NDArray
+
+DEG = 180.0 / np.pi
+SPEEDS = ("0.25x", "0.5x", "1x", "2x", "4x")
+JOINT_COLORS = ("#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42a5a5")
+
+
+@dataclass(frozen=True)
+class Motion:
+    """A sampled motion to play: times (N,) [s], joints (N, dof) [rad] and what to plot.
+
+    `velocity_limits`/`acceleration_limits` (dof,) scale the plots to percent of the limit;
+    `colliding` (N,) marks samples in collision on the time axis.
+    """
+
+    name: str
+    times: NDArray[np.float64]
+    positions: NDArray[np.float64]
+    velocities: NDArray[np.float64]
+    accelerations: NDArray[np.float64]
+    tcp_speed: NDArray[np.float64]
+    colliding: NDArray[np.bool_]
+    velocity_limits: NDArray[np.float64]
+    acceleration_limits: NDArray[np.float64]
+
+    @property
+    def duration(self) -> float:
+        """Return the motion's length [s]."""
+        return float(self.times[-1])
+
+    def at(self, t: float) -> NDArray[np.float64]:
+        """Return joints [rad] at time `t` [s], interpolated linearly between samples."""
+        t = float(np.clip(t, 0.0, self.duration))
+        return np.array([np.interp(t, self.times, self.positions[:, j])
+                         for j in range(self.positions.shape[1])])
+
+
+class Timeline:
+    """Play/pause, a time slider, a speed choice and four plots; `show(q)` poses the robot."""
+
+    def __init__(self, server: viser.ViserServer, show: Callable[[NDArray[np.float64]], None]) -> None:
+        self.server = server
+        self.show = show
+        self.motion: Motion | None = None
+        self._playing = threading.Event()
+        self._stop = threading.Event()
+        s = server.gui
+        with s.add_folder("Timeline"):
+            self.info = s.add_markdown("No motion yet: plan one in a workflow tab.")
+            self.play = s.add_button("Play", icon=viser.Icon.PLAYER_PLAY, disabled=True)
+            self.time = s.add_slider("Time [s]", min=0.0, max=1.0, step=0.01, initial_value=0.0,
+                                     disabled=True)
+            self.speed = s.add_dropdown("Speed", options=SPEEDS, initial_value="1x")
+            self.plots: list[viser.GuiUplotHandle] = []
+        self.play.on_click(lambda _: self.toggle())
+        self.time.on_update(lambda _: self._on_time())
+        self._thread = threading.Thread(target=self._run, name="timeline", daemon=True)
+        self._thread.start()
+
+    # -- loading --------------------------------------------------------------------------
+    def load(self, motion: Motion) -> None:
+        """Show `motion` on the timeline and its plots, at t = 0, paused."""
+        self.pause()
+        self.motion = motion
+        self.time.max = max(motion.duration, 0.01)
+        self.time.value = 0.0
+        self.time.disabled = False
+        self.play.disabled = False
+        hits = int(motion.colliding.sum())
+        coll = f", **{hits} colliding samples**" if hits else ", collision-free"
+        self.info.content = f"**{motion.name}**: cycle time **{motion.duration:.3f} s**{coll}"
+        for p in self.plots:
+            p.remove()
+        self.plots = self._make_plots(motion)
+        self.show(motion.at(0.0))
+
+    def _make_plots(self, m: Motion) -> list[viser.GuiUplotHandle]:
+        t = m.times
+        dof = m.positions.shape[1]
+        joint_series = [{"label": f"J{j + 1}", "stroke": JOINT_COLORS[j % 6], "width": 1.5}
+                        for j in range(dof)]
+        limit = {"label": "limit", "stroke": "#888888", "dash": [6, 4], "width": 1}
+        x = {"label": "t [s]"}
+        plots = []
+        with self.server.gui.add_folder("Plots", expand_by_default=True) as folder:
+            self._plot_folder = folder
+            plots.append(self.server.gui.add_uplot(
+                data=(t, *(m.positions[:, j] * DEG for j in range(dof))),
+                series=(x, *joint_series), title="Joint positions [deg]", aspect=1.6))
+            for name, values, lim in (("Joint velocities [% of limit]", m.velocities, m.velocity_limits),
+                                      ("Joint accelerations [% of limit]", m.accelerations,
+                                       m.acceleration_limits)):
+                pct = values / lim * 100.0
+                ones = np.full_like(t, 100.0)
+                plots.append(self.server.gui.add_uplot(
+                    data=(t, *(pct[:, j] for j in range(dof)), ones, -ones),
+                    series=(x, *joint_series, limit, {**limit, "label": "-limit"}),
+                    title=name, aspect=1.6))
+            speed = m.tcp_speed * 1000.0
+            top = float(max(speed.max(), 1.0)) * 1.05
+            plots.append(self.server.gui.add_uplot(
+                data=(t, speed, np.where(m.colliding, top, 0.0)),
+                series=(x, {"label": "TCP [mm/s]", "stroke": "#1f77b4", "width": 1.5},
+                        {"label": "collision", "stroke": "#d62728", "fill": "rgba(214,39,40,0.25)",
+                         "width": 1}),
+                title="TCP speed [mm/s] and collisions", aspect=1.6))
+        return plots
+
+    # -- playback -----------------------------------------------------------------------------
+    def toggle(self) -> None:
+        """Play when paused, pause when playing."""
+        if self._playing.is_set():
+            self.pause()
+        elif self.motion is not None:
+            if self.time.value >= self.motion.duration - 1e-9:
+                self.time.value = 0.0
+            self._playing.set()
+            self.play.label, self.play.icon = "Pause", viser.Icon.PLAYER_PAUSE
+
+    def pause(self) -> None:
+        """Stop playback where it is."""
+        self._playing.clear()
+        self.play.label, self.play.icon = "Play", viser.Icon.PLAYER_PLAY
+
+    @property
+    def playing(self) -> bool:
+        """Return True while the motion plays."""
+        return self._playing.is_set()
+
+    def _on_time(self) -> None:
+        if self.motion is not None:
+            self.show(self.motion.at(self.time.value))
+
+    def _run(self) -> None:
+        last = time.monotonic()
+        while not self._stop.is_set():
+            time.sleep(1 / 30)
+            now = time.monotonic()
+            dt, last = now - last, now
+            m = self.motion
+            if not self._playing.is_set() or m is None:
+                continue
+            factor = float(self.speed.value.rstrip("x"))
+            t = min(self.time.value + dt * factor, m.duration)
+            self.time.value = round(t, 4)  # fires _on_time, which poses the robot
+            if t >= m.duration:
+                self.pause()
+
+    def close(self) -> None:
+        """Stop the playback thread."""
+        self._stop.set()

@@ -1,0 +1,168 @@
+"""Planning the project's robot program: moves -> jerk-limited trajectory -> limits and collisions."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.collision import PathReport, RobotCollisionChecker
+from workbench.errors import InputError, UnreachableError
+from workbench.geometry.transforms import invert_transform
+from workbench.motion import (
+    Move,
+    Program,
+    Trajectory,
+    ValidationReport,
+    plan_program,
+    time_program,
+    validate_trajectory,
+)
+from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
+from workbench.project.models import ProgramSpec
+from workbench.service.convert import DEG, MM, pose_to_matrix
+from workbench.service.robot_setup import RobotSetup
+
+EXPORT_FORMATS = {"rapid": ".mod", "krl": ".src", "ls": ".ls", "urscript": ".script", "csv": ".csv",
+                  "json": ".json"}
+Progress = Callable[[float, str], None]
+
+
+@dataclass(frozen=True)
+class MotionPlan:
+    """A planned program: the trajectory, its samples, and what the checks found.
+
+    Samples are every `dt` [s]: `times` (N,), `positions`/`velocities`/`accelerations` (N, dof)
+    [rad, rad/s, rad/s^2], `tcp_speed` (N,) [m/s]; `colliding` (N,) marks samples in collision.
+    """
+
+    program: Program
+    trajectory: Trajectory
+    times: NDArray[np.float64] = field(repr=False)
+    positions: NDArray[np.float64] = field(repr=False)
+    velocities: NDArray[np.float64] = field(repr=False)
+    accelerations: NDArray[np.float64] = field(repr=False)
+    tcp_speed: NDArray[np.float64] = field(repr=False)
+    colliding: NDArray[np.bool_] = field(repr=False)
+    limits_report: ValidationReport
+    collision_report: PathReport
+
+    @property
+    def cycle_time(self) -> float:
+        """Return the program's duration [s]."""
+        return float(self.trajectory.duration)
+
+    @property
+    def ok(self) -> bool:
+        """Return True when every sample is within limits and free of collisions."""
+        return self.limits_report.ok and self.collision_report.collision_free
+
+    def summary(self) -> str:
+        """Return a one-paragraph human summary."""
+        lines = [f"cycle time {self.cycle_time:.3f} s, {len(self.program.moves)} moves"]
+        lines.append("within joint limits" if self.limits_report.ok else
+                     f"{len(self.limits_report.violations)} limit violation(s)")
+        if self.collision_report.collision_free:
+            lines.append("collision-free at every sample")
+        else:
+            first = self.collision_report.first_index
+            rep = self.collision_report.first_report
+            pairs = ", ".join(f"{a}–{b}" for a, b in rep.colliding) if rep else ""
+            lines.append(f"first collision at t = {self.times[first]:.3f} s ({pairs})")
+        return "; ".join(lines)
+
+
+def build_program(spec: ProgramSpec, setup: RobotSetup, q_start: NDArray[np.float64]) -> Program:
+    """Return the motion `Program` of a project program (poses in the robot base frame, SI)."""
+    if not spec.moves:
+        raise InputError("program.moves: the program has no moves; add at least one")
+    model = setup.model
+    T_base_world = invert_transform(setup.T_world_base)
+    T_tcp_flange = invert_transform(setup.T_flange_tcp)
+    moves = []
+    q_prev = q_start
+    for i, mv in enumerate(spec.moves):
+        where = f"program.moves[{i}]" + (f" ({mv.name})" if mv.name else "")
+        zone = mv.zone * MM
+        if mv.joints is not None:
+            q = np.asarray(mv.joints, float) * DEG
+            if q.shape != (model.dof,):
+                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(mv.joints)}")
+            lo, hi = model.limits[:, 0], model.limits[:, 1]
+            bad = np.flatnonzero((q < lo) | (q > hi))
+            if bad.size:
+                j = int(bad[0])
+                raise InputError(f"{where}.joints[{j}]: {mv.joints[j]} deg is outside"
+                                 f" [{lo[j] / DEG:.1f}, {hi[j] / DEG:.1f}] deg")
+            moves.append(Move.joint(q, speed=mv.speed / 100.0, zone=zone, name=mv.name))
+            q_prev = q
+            continue
+        assert mv.pose is not None
+        T_base_tcp = T_base_world @ pose_to_matrix(mv.pose)
+        if mv.type == "linear":
+            moves.append(Move.linear(T_base_tcp, speed=mv.speed * MM, zone=zone, name=mv.name))
+            continue
+        try:
+            sols = np.asarray(model.ik(T_base_tcp @ T_tcp_flange, q_near=q_prev), float)
+        except UnreachableError as exc:
+            raise UnreachableError(f"{where}.pose: {exc}") from None
+        if len(sols) == 0:
+            raise UnreachableError(f"{where}.pose: no IK solution within the joint limits")
+        q_prev = sols[0]
+        moves.append(Move.joint(q_prev, speed=mv.speed / 100.0, zone=zone, name=mv.name))
+    return Program(spec.name, tuple(moves))
+
+
+def plan_motion(
+    spec: ProgramSpec,
+    setup: RobotSetup,
+    checker: RobotCollisionChecker,
+    q_start: NDArray[np.float64],
+    *,
+    dt: float = 0.01,
+    progress: Progress | None = None,
+) -> MotionPlan:
+    """Return the `MotionPlan` of `spec`: IK through the moves, ruckig timing, then the checks."""
+    report = progress or (lambda f, msg: None)
+    model = setup.model
+    report(0.0, "moves through IK")
+    program = build_program(spec, setup, q_start)
+    path = plan_program(model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp)
+    report(0.2, "jerk-limited timing")
+    traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
+    limits = validate_trajectory(traj, max_velocity=model.max_velocity,
+                                 max_acceleration=model.max_acceleration, max_jerk=model.max_jerk,
+                                 position_limits=model.limits)
+    times, q, qd, qdd = traj.sample(dt)
+    flange = setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp
+    tcp = flange[:, :3, 3]
+    tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
+    report(0.3, "collision check")
+    colliding = np.zeros(len(times), bool)
+    n = len(times)
+    for i in range(n):
+        colliding[i] = checker.check(q[i], distance=False).in_collision
+        if progress is not None and i % 50 == 0:
+            report(0.3 + 0.7 * i / n, f"collision check {i}/{n}")
+    hits = np.flatnonzero(colliding)
+    first = checker.check(q[hits[0]], distance=False) if hits.size else None
+    path_report = PathReport(collision_free=not hits.size,
+                             first_index=int(hits[0]) if hits.size else None, first_report=first,
+                             min_distance=0.0 if hits.size else float("nan"), samples=n,
+                             colliding_indices=tuple(int(h) for h in hits))
+    report(1.0, "done")
+    return MotionPlan(program, traj, times, q, qd, qdd, tcp_speed, colliding, limits, path_report)
+
+
+def export_text(plan: MotionPlan, fmt: str) -> str:
+    """Return the plan exported as `fmt` (rapid, krl, ls, urscript, csv or json)."""
+    if fmt not in EXPORT_FORMATS:
+        raise InputError(f"format: {fmt!r} is not one of {', '.join(EXPORT_FORMATS)}")
+    if fmt == "csv":
+        return csv_text(plan.times, plan.positions)
+    if fmt == "json":
+        return json_text(plan.times, plan.positions)
+    post = {"rapid": to_rapid, "krl": to_krl, "ls": to_ls, "urscript": to_urscript}[fmt]
+    return str(post(plan.program))
