@@ -100,7 +100,7 @@ def test_all_eight_branches_when_limits_allow() -> None:
 
 
 def test_q_near_sorts_and_picks_turns(robot: DHRobot) -> None:
-    q = np.radians([20.0, -30.0, 40.0, 170.0, 60.0, 300.0])
+    q = np.radians([20.0, -30.0, 40.0, 170.0, -60.0, 300.0])
     T = robot.fk(q)
     sols = robot.ik(T, q_near=q)
     np.testing.assert_allclose(sols[0], q, atol=1e-9)  # nearest first, joint 6 at +300 deg
@@ -129,8 +129,8 @@ def test_wrist_singular_pose_keeps_joint4_near_reference(robot: DHRobot) -> None
 
 
 def test_shoulder_singular_pose_wrist_centre_on_axis(robot: DHRobot) -> None:
-    T = np.diag([1.0, -1.0, -1.0, 1.0])
-    T[:3, 3] = [0.0, 0.0, 0.8 - 0.09]  # wrist centre on the joint-1 axis at 0.8 m
+    # Flange pointing along +x, wrist centre on the joint-1 axis at 0.8 m (q5 = 0).
+    T = np.array([[0.0, 0.0, 1.0, 0.09], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8], [0, 0, 0, 1.0]])
     sols = robot.ik(T)
     assert len(sols) >= 1
     np.testing.assert_allclose(robot.fk(sols), np.broadcast_to(T, (len(sols), 4, 4)), atol=1e-9)

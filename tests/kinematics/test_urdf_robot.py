@@ -91,7 +91,7 @@ def test_urdf_fk_equals_dh_fk(urdf_path: Path, dh_robot: DHRobot) -> None:
 
 def test_urdf_jacobian_and_ik(urdf_path: Path, dh_robot: DHRobot) -> None:
     robot = URDFRobot.from_file(urdf_path)
-    q = np.radians([10.0, -20.0, 30.0, 40.0, 50.0, 60.0])
+    q = np.radians([10.0, -20.0, 30.0, 40.0, -50.0, 60.0])
     np.testing.assert_allclose(robot.jacobian(q), dh_robot.jacobian(q), atol=1e-12)
     T = dh_robot.fk(q)
     sols = robot.ik(T, q_near=q + 0.05)

@@ -40,7 +40,7 @@ def test_set_joints_validates(wb: Workbench) -> None:
 
 
 def test_move_tcp_reaches_the_pose_by_ik(wb: Workbench) -> None:
-    wb.set_joints(np.radians([10, -20, 10, 30, 40, -20]))
+    wb.set_joints(np.radians([10, -20, 10, 30, -40, -20]))
     target = wb.tcp_pose()
     target[:3, 3] += [0.05, -0.03, 0.02]
     q = wb.move_tcp(target)
@@ -51,10 +51,15 @@ def test_move_tcp_reaches_the_pose_by_ik(wb: Workbench) -> None:
         assert np.allclose(wb.tcp_pose(s.q), target, atol=1e-9)
     # The default pick is the one nearest the joints before the move.
     assert np.allclose(sols[0].q, q)
-    for i in range(len(sols)):
-        wb.move_tcp(target, configuration=i)
-        assert np.allclose(wb.joints, sols[i].q)
+    labels = [s.label for s in sols]
+    assert len(set(labels)) == len(labels), labels
+    for s in sols:
+        wb.move_tcp(target, configuration=s.label)
         assert np.allclose(wb.tcp_pose(), target, atol=1e-9)
+        # The same configuration, with the joint turns nearest the joints it came from.
+        assert np.allclose(np.cos(wb.joints), np.cos(s.q)) and np.allclose(np.sin(wb.joints), np.sin(s.q))
+    wb.move_tcp(target, configuration=0)
+    assert np.allclose(wb.tcp_pose(), target, atol=1e-9)
 
 
 def test_unreachable_pose_keeps_the_robot(wb: Workbench) -> None:

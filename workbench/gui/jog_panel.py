@@ -64,8 +64,8 @@ class JogPanel:
     def _on_config(self, _event: object) -> None:
         if self._syncing or self.config.value == "current":
             return
-        index = list(self.config.options).index(self.config.value) - 1
-        self.wb.move_tcp(self.wb.tcp_pose(), configuration=index)
+        label = str(self.config.value).split(": ", 1)[1]
+        self.wb.move_tcp(self.wb.tcp_pose(), configuration=label)
         self.refresh()
 
     def _on_gizmo(self, event: viser.TransformControlsEvent) -> None:

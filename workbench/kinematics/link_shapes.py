@@ -25,7 +25,7 @@ from workbench.kinematics.dh_chain import dh_fixed_part
 FloatArray = NDArray[np.float64]
 SECTIONS = 24
 # Segment radius of links 1..6 as a fraction of the arm's length (later links get the last).
-RADIUS_FRACTIONS = (0.075, 0.065, 0.055, 0.045, 0.04, 0.035)
+RADIUS_FRACTIONS = (0.075, 0.065, 0.055, 0.040, 0.035, 0.022)
 HOUSING_RADIUS = 1.1  # housing radius / segment radius
 HOUSING_HALF_LENGTH = 1.4  # housing half-length / housing radius
 OVERLAP = 0.9  # a link starts at 90 % of the distance to leave the previous housing
@@ -80,14 +80,64 @@ def _hull(points: FloatArray) -> trimesh.Trimesh:
     return hull
 
 
-def dh_link_meshes(dh: FloatArray) -> list[trimesh.Trimesh]:
-    """Return n+1 watertight meshes [m]: base in the base frame, link i in DH frame i."""
+def _spherical_wrist(dh: FloatArray) -> bool:
+    n = dh.shape[0]
+    return n >= 6 and bool(np.all(np.abs([dh[n - 3, 2], dh[n - 2, 1], dh[n - 2, 2]]) < 1e-9))
+
+
+def _wrist_fold_angle(dh: FloatArray, limits: FloatArray | None) -> float:
+    """Return the smallest angle [rad] between the flange direction and the way back along the
+    forearm, over the range of the second-to-last joint (the others at 0)."""
+    n = dh.shape[0]
+    lo, hi = (-math.pi, math.pi) if limits is None else (float(limits[n - 2, 0]), float(limits[n - 2, 1]))
+    q = np.zeros((181, n))
+    q[:, n - 2] = np.linspace(lo, hi, 181)
+    B = dh_fixed_part(dh)
+    angles = []
+    for row in q:
+        T = np.eye(4)
+        origins = [T[:3, 3].copy()]
+        for i in range(n):
+            T = T @ _rz(row[i]) @ B[i]
+            origins.append(T[:3, 3].copy())
+        wrist, flange, back = origins[n - 1], origins[n], origins[n - 3]
+        u, v = flange - wrist, back - wrist
+        c = float(u @ v / (np.linalg.norm(u) * np.linalg.norm(v)))
+        angles.append(math.acos(max(-1.0, min(1.0, c))))
+    return min(angles)
+
+
+def _rz(q: float) -> FloatArray:
+    c, s_ = math.cos(q), math.sin(q)
+    return np.array([[c, -s_, 0, 0], [s_, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1.0]])
+
+
+def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[trimesh.Trimesh]:
+    """Return n+1 watertight meshes [m]: base in the base frame, link i in DH frame i.
+
+    With a spherical wrist, the forearm's wrist housing is no wider than the forearm (a wider
+    one would bulge the convex hull toward the flange), and the flange link starts far enough
+    from the wrist centre to clear the forearm over the whole range of the wrist-bend joint
+    (`limits`), as a real wrist does; it is at least a thin plate.
+    """
     n = dh.shape[0]
     B = dh_fixed_part(dh)
     r = link_radii(dh)
     h = HOUSING_RADIUS * r
-    ell = HOUSING_HALF_LENGTH * h
     scale = arm_scale(dh)
+    wrist = _spherical_wrist(dh)
+    if wrist:
+        h[n - 3] = r[n - 3]
+    ell = HOUSING_HALF_LENGTH * h
+    flange_start = 0.0
+    if wrist:
+        theta = _wrist_fold_angle(dh, limits)
+        r_fore, r_fl = float(r[n - 3]), float(r[n - 1])
+        if theta < math.pi / 2 - 1e-9:
+            need = (1.1 * r_fore + r_fl * math.cos(theta)) / max(math.sin(theta), 1e-6)
+        else:
+            need = 1.05 * r_fore
+        flange_start = min(need, abs(dh[n - 1, 1]) - FLANGE_THICKNESS * scale)
     # Base: a cylinder up the joint-1 axis, half as tall as the shoulder height.
     base_h = max(0.5 * abs(dh[0, 1]), 0.1 * scale)
     base_sign = 1.0 if dh[0, 1] >= 0 else -1.0
@@ -111,15 +161,20 @@ def dh_link_meshes(dh: FloatArray) -> list[trimesh.Trimesh]:
                 first = False
                 u = (q - p) / length
                 start = OVERLAP * _exit_distance(u, prev_radius, prev_half)
+                if i == n - 1:
+                    start = max(start, flange_start)
                 if start >= length:
                     continue
                 p = p + start * u
             pts.append(_cylinder_points(p, q, r[i]))
         # Housing of joint i+1 (or the flange plate on the last link), in frame i.
         if i < n - 1:
-            housing = _cylinder_points(
-                np.array([0.0, 0.0, -ell[i]]), np.array([0.0, 0.0, ell[i]]), h[i]
-            )
+            lo_z, hi_z = -ell[i], ell[i]
+            if wrist and i == n - 2:
+                # Reach out along the last joint's axis to where the flange link starts.
+                reach = 1.02 * flange_start
+                lo_z, hi_z = (min(lo_z, -reach), hi_z) if dh[n - 1, 1] < 0 else (lo_z, max(hi_z, reach))
+            housing = _cylinder_points(np.array([0.0, 0.0, lo_z]), np.array([0.0, 0.0, hi_z]), h[i])
         else:
             t = FLANGE_THICKNESS * scale
             housing = _cylinder_points(np.array([0.0, 0.0, -t]), np.zeros(3), r[i])
@@ -137,7 +192,7 @@ def link_meshes(robot: _HasDH | _HasMeshes) -> list[trimesh.Trimesh]:
     """
     if hasattr(robot, "link_meshes"):
         return robot.link_meshes()
-    return dh_link_meshes(robot.dh)
+    return dh_link_meshes(robot.dh, getattr(robot, "limits", None))
 
 
 def flange_mesh(robot: _HasDH, thickness: float | None = None) -> trimesh.Trimesh:

@@ -15,7 +15,10 @@ theta 0, d -0.090 m, a 0, alpha 180 deg (flange z points out of the flange; wris
 flange ~90 mm), and the rest of the seed's 516.9 mm is the tool: ``MZ07_SEED_TOOL``.
 
 Joint limits and speeds are approximate values from the MZ07 datasheet as remembered, in
-the seed's joint convention; check them against the robot's manual before real use.
+the seed's joint convention; check them against the robot's manual before real use. J5 is
+±120 deg about the straight wrist; the seed's theta offset of 90 deg puts q5 = 0 at the
+flange-down pose and the straight wrist at q5 = -90 deg, so its range is [-210, 30] deg
+(q5 > 0 folds the flange back toward the forearm).
 """
 
 from __future__ import annotations
@@ -66,7 +69,7 @@ MZ07_LIMITS_DEG = np.array(
         [-135.0, 80.0],
         [-120.0, 160.0],
         [-190.0, 190.0],
-        [-120.0, 120.0],
+        [-210.0, 30.0],
         [-360.0, 360.0],
     ]
 )

@@ -87,10 +87,23 @@ def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
 
     model = build_robot_model(spec, base_dir)
     dof = model.dof
-    for name in ("max_velocity", "max_acceleration", "max_jerk"):
-        values = _per_joint(getattr(spec, name), dof, f"robot.{name}")
-        if values is not None:
-            setattr(model, name, values)
+    rates = {
+        name: _per_joint(getattr(spec, name), dof, f"robot.{name}")
+        for name in ("max_velocity", "max_acceleration", "max_jerk")
+    }
+    if any(v is not None for v in rates.values()):
+        from workbench.kinematics import DHRobot
+
+        if isinstance(model, DHRobot):
+            # Through the constructor: it validates the rates and derives the missing ones.
+            given = {k: v for k, v in rates.items() if v is not None}
+            if "max_velocity" not in given:
+                given["max_velocity"] = model.max_velocity
+            model = DHRobot(model.dh, model.limits, name=model.name, **given)
+        else:
+            for name, values in rates.items():
+                if values is not None:
+                    setattr(model, name, values)
     meshes = list(link_meshes(model))
     if spec.link_meshes is not None:
         if len(spec.link_meshes) != dof + 1:

@@ -14,6 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.collision import CollisionReport, RobotCollisionChecker
 from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
 from workbench.geometry.transforms import invert_transform
+from workbench.kinematics import branch_name
 from workbench.project import (
     Project,
     load_project,
@@ -176,24 +177,30 @@ class Workbench:
         return self.link_poses(q)[-1] @ self._robot.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
-        """Return every IK solution (at most 8) that puts the TCP at `T_world_tcp`, nearest first."""
+        """Return every IK solution (at most 8) that puts the TCP at `T_world_tcp`, nearest first.
+
+        Labels name the arm configuration ('front/elbow A/no flip'); `move_tcp` accepts them.
+        """
         T = _as_pose(T_world_tcp, "T_world_tcp")
         T_base_flange = (
             invert_transform(self._robot.T_world_base) @ T @ invert_transform(self._robot.T_flange_tcp)
         )
-        sols = np.asarray(self.robot.ik(T_base_flange, q_near=self._q), float).reshape(-1, self.robot.dof)
-        if len(sols) == 0:
+        model = self.robot
+        if getattr(model, "is_analytic", False):
+            # One solution per arm configuration (branch), each with the joint turns nearest
+            # the current joints; labels name the branch, so they stay stable as the arm moves.
+            qb, valid = model.ik_batch(T_base_flange[None], q_near=self._q)
+            found = [IKSolution(q=np.array(qb[0, b]), label=branch_name(b))
+                     for b in range(qb.shape[1]) if valid[0, b]]
+        else:
+            rows = np.asarray(model.ik(T_base_flange, q_near=self._q), float).reshape(-1, model.dof)
+            found = [IKSolution(q=row, label=f"solution {k + 1}") for k, row in enumerate(rows)]
+        if not found:
             raise UnreachableError(
                 "the TCP pose is unreachable: no inverse-kinematics solution within the joint limits"
             )
-        return [IKSolution(q=s, label=self.configuration_label(s)) for s in sols]
-
-    def configuration_label(self, q: ArrayLike) -> str:
-        """Return a label of the arm configuration of `q` (shoulder, elbow, wrist), e.g. 'front/up/noflip'."""
-        label = getattr(self.robot, "configuration_label", None)
-        if callable(label):
-            return str(label(np.asarray(q, float)))
-        return "solution"
+        found.sort(key=lambda s: float(np.linalg.norm(s.q - self._q)))
+        return found
 
     def move_tcp(self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None) -> NDArray[np.float64]:
         """Move the TCP to `T_world_tcp` and return the new joints [rad].
