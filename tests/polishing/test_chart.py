@@ -1,0 +1,85 @@
+"""Surface chart: point location against brute force, Jacobian, normals, boundary, errors."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from workbench.errors import InputError
+from workbench.polishing.bezier import area_weighted_normals
+from workbench.polishing.chart import build_chart
+from workbench.polishing.example_workpiece import make_panel
+
+
+def _brute_locate(uv: np.ndarray, faces: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """Twin: barycentrics of every point in every face; the face where all are >= -1e-12."""
+    a, b, c = (uv[faces[:, i]] for i in range(3))
+    v0, v1 = a - c, b - c
+    det = v0[:, 0] * v1[:, 1] - v0[:, 1] * v1[:, 0]
+    d = p[:, None, :] - c[None]
+    u = (d[..., 0] * v1[:, 1] - d[..., 1] * v1[:, 0]) / det
+    v = (v0[:, 0] * d[..., 1] - v0[:, 1] * d[..., 0]) / det
+    inside = (u >= -1e-12) & (v >= -1e-12) & (1 - u - v >= -1e-12)
+    return np.where(inside.any(axis=1), np.argmax(inside, axis=1), -1)
+
+
+def test_locate_matches_brute_force() -> None:
+    mesh = make_panel(25, 18)
+    chart = build_chart(mesh)
+    rng = np.random.default_rng(0)
+    lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+    p = rng.uniform(lo - 0.02, hi + 0.02, (3000, 2))  # some outside the part
+    face, bary = chart.locate(p)
+    ref = _brute_locate(chart.uv, chart.faces, p)
+    assert np.array_equal(face < 0, ref < 0)
+    ok = face >= 0
+    # Points on a shared edge may legitimately land in either face: compare positions instead.
+    back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
+    np.testing.assert_allclose(back, p[ok], atol=1e-14)
+    assert (bary[ok] >= 0).all()
+
+
+def test_jacobian_and_normals() -> None:
+    mesh = make_panel(20, 15)
+    chart = build_chart(mesh)
+    f = np.arange(len(mesh.faces))
+    jac = chart.jacobian(f)
+    tri3, tri2 = mesh.vertices[mesh.faces], chart.uv[mesh.faces]
+    np.testing.assert_allclose(
+        np.einsum("nij,nj->ni", jac, tri2[:, 0] - tri2[:, 2]), tri3[:, 0] - tri3[:, 2], atol=1e-15
+    )
+    np.testing.assert_allclose(
+        np.einsum("nij,nj->ni", jac, tri2[:, 1] - tri2[:, 2]), tri3[:, 1] - tri3[:, 2], atol=1e-15
+    )
+    np.testing.assert_allclose(
+        chart.vertex_normals,
+        area_weighted_normals(np.asarray(mesh.vertices), np.asarray(mesh.faces)),
+        atol=1e-12,
+    )
+    # The chart normal axis points to the faces' side (+z for the panel).
+    assert chart.axes[2] @ [0.0, 0.0, 1.0] > 0.9
+    flipped = trimesh.Trimesh(mesh.vertices, mesh.faces[:, ::-1], process=False)
+    assert build_chart(flipped).axes[2] @ [0.0, 0.0, 1.0] < -0.9
+
+
+def test_boundary_is_the_outline_counter_clockwise() -> None:
+    mesh = make_panel(20, 15)
+    chart = build_chart(mesh)
+    outline = trimesh.Trimesh(mesh.vertices, mesh.faces, process=False).outline()
+    assert len(chart.boundary) == len(outline.entities[0].points) - 1  # trimesh closes the loop
+    x, y = chart.boundary[:, 0], chart.boundary[:, 1]
+    area = 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)
+    assert area == pytest.approx(0.3 * 0.2, rel=0.05)  # projected panel area, positive: CCW
+
+
+def test_folded_and_closed_meshes_are_refused() -> None:
+    with pytest.raises(InputError, match="folds"):
+        build_chart(trimesh.creation.icosphere(subdivisions=1, radius=0.1))
+    # A closed, non-folding shape does not exist; an open hemisphere's rim faces fold (vertical).
+    half = trimesh.creation.icosphere(subdivisions=2, radius=0.1)
+    half = trimesh.Trimesh(
+        half.vertices, half.faces[half.vertices[half.faces].mean(axis=1)[:, 2] > 0.02]
+    )
+    chart = build_chart(half)  # a cap well above the equator is a height field
+    assert len(chart.boundary) > 10

@@ -1,0 +1,229 @@
+"""A planar chart of a workpiece surface: its projection onto the mean plane, point location.
+
+Tool paths are planned in the chart's 2D coordinates (u, v) [m] and lifted back onto the
+fitted Bézier surface through the face and barycentric coordinates of each chart point, so
+every lifted point lies on the fitted surface exactly. This needs a surface that projects
+one-to-one onto its mean plane (a height field, as polishing panels are); a surface that
+folds over raises `InputError`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+from scipy.spatial import cKDTree
+
+from workbench.errors import InputError, MeshError
+
+F64 = NDArray[np.float64]
+I64 = NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class SurfaceChart:
+    """The projection of a mesh onto its mean plane, with a triangle locator.
+
+    origin (3,), axes (3, 3) rows e_u, e_v, e_n [m, unit]; e_n points to the side the face
+    normals point to. uv (V, 2) [m] vertex coordinates; vertices (V, 3) [m]; faces (F, 3);
+    boundary (B, 2): the outer boundary loop in uv, counter-clockwise. Faces are found
+    through a KD-tree of their chart centroids: a face containing p has its centroid
+    within `reach` [m] of p (the largest centroid-to-vertex distance).
+    """
+
+    origin: F64
+    axes: F64
+    uv: F64
+    faces: I64
+    vertices: F64
+    boundary: F64
+    tree: cKDTree
+    reach: float
+    vertex_normals: F64  # (V, 3) area-weighted unit normals, as `area_weighted_normals`
+    face_c: F64  # (F, 2) chart position of each face's third vertex
+    face_inv: F64  # (F, 4) row-major inverse of [a - c, b - c] (chart)
+
+    def _bary(self, p: F64, cand: I64) -> tuple[F64, F64, F64]:
+        d = p - self.face_c[cand]
+        m = self.face_inv[cand]
+        u = m[..., 0] * d[..., 0] + m[..., 1] * d[..., 1]
+        v = m[..., 2] * d[..., 0] + m[..., 3] * d[..., 1]
+        return u, v, 1.0 - u - v
+
+    def locate(self, uv: F64, *, tol: float = 1e-9) -> tuple[I64, F64]:
+        """Return (face (N,), bary (N, 3)) of chart points uv (N, 2) [m]; face -1 outside the mesh.
+
+        Exact: the k nearest centroids are tried with k growing until a containing face is
+        found or every centroid within `reach` has been tried."""
+        p = np.asarray(uv, dtype=float).reshape(-1, 2)
+        n_faces = len(self.faces)
+        face = np.full(len(p), -1, dtype=np.int64)
+        bary = np.full((len(p), 3), np.nan)
+        todo = np.arange(len(p))
+        k = 4
+        while len(todo):
+            kk = min(k, n_faces)
+            dist, cand = self.tree.query(
+                p[todo], k=kk, distance_upper_bound=self.reach * (1 + 1e-9)
+            )
+            dist, cand = dist.reshape(len(todo), kk), cand.reshape(len(todo), kk)
+            valid = cand < n_faces
+            cand = np.where(valid, cand, 0)
+            u, v, w = self._bary(p[todo][:, None, :], cand)
+            score = np.where(valid, np.minimum(np.minimum(u, v), w), -np.inf)
+            best = np.argmax(score, axis=1)
+            rows = np.arange(len(todo))
+            hit = score[rows, best] >= -tol
+            q = todo[hit]
+            face[q] = cand[rows[hit], best[hit]]
+            bb = np.clip(
+                np.stack([u[rows, best], v[rows, best], w[rows, best]], axis=1)[hit], 0.0, None
+            )
+            bary[q] = bb / bb.sum(axis=1, keepdims=True)
+            # Points whose k-th neighbour is still within reach may have more candidates.
+            more = ~hit & np.isfinite(dist[:, -1])
+            todo = todo[more]
+            if kk == n_faces:
+                break
+            k *= 4
+        return face, bary
+
+    def jacobian(self, face: I64) -> F64:
+        """Return d(xyz)/d(uv) (N, 3, 2) of flat faces `face` (N,): chart vectors to 3D vectors."""
+        f = self.faces[face]
+        tri = self.vertices[f]
+        inv = self.face_inv[face]
+        ea, eb = tri[:, 0] - tri[:, 2], tri[:, 1] - tri[:, 2]
+        # J = [A-C, B-C] @ inv([a-c, b-c])
+        return np.stack(
+            [ea * inv[:, 0:1] + eb * inv[:, 2:3], ea * inv[:, 1:2] + eb * inv[:, 3:4]], axis=2
+        )
+
+    def stretch(self, face: I64, direction: F64) -> F64:
+        """Return |J d| (N,): 3D length per unit chart length along unit 2D `direction` (N, 2)."""
+        return np.linalg.norm(np.einsum("nij,nj->ni", self.jacobian(face), direction), axis=1)
+
+
+def _boundary_edges(faces: I64, pu: F64, pv: F64, n_vertices: int, scale: float) -> I64:
+    """Return directed boundary edges (B, 2), found without sorting all edges.
+
+    Around an interior vertex the edges opposite it (in the faces' winding) form a closed
+    loop, so their vectors sum to zero; around a boundary vertex they sum to the gap's
+    chord. Only edges between two such vertices are checked for a missing twin."""
+    su = np.zeros(n_vertices)
+    sv = np.zeros(n_vertices)
+    for i in range(3):
+        # The edge opposite corner i runs from vertex i+1 to vertex i+2.
+        j, k = (i + 1) % 3, (i + 2) % 3
+        su += np.bincount(faces[:, i], pu[:, k] - pu[:, j], minlength=n_vertices)
+        sv += np.bincount(faces[:, i], pv[:, k] - pv[:, j], minlength=n_vertices)
+    on_rim = np.hypot(su, sv) > 1e-9 * scale
+    rim = on_rim[faces]  # (F, 3)
+    cand = []
+    for i in range(3):
+        j = (i + 1) % 3
+        rows = np.nonzero(rim[:, i] & rim[:, j])[0]
+        cand.append(np.stack([faces[rows, i], faces[rows, j]], axis=1))
+    edges = np.concatenate(cand)
+    key = edges.min(axis=1) * n_vertices + edges.max(axis=1)
+    _, inv, counts = np.unique(key, return_inverse=True, return_counts=True)
+    return edges[counts[inv] == 1]
+
+
+def _outer_loop(bnd: I64, uv: F64) -> F64:
+    """Return the longest loop (L, 2) of directed boundary edges `bnd` in uv, counter-clockwise."""
+    if len(bnd) == 0:
+        raise InputError(
+            "mesh is closed (no boundary); the polishing planner needs an open surface patch"
+        )
+    nxt = dict(zip(bnd[:, 0].tolist(), bnd[:, 1].tolist(), strict=False))
+    seen: set[int] = set()
+    best: list[int] = []
+    for s in bnd[:, 0].tolist():
+        if s in seen:
+            continue
+        loop = [s]
+        seen.add(s)
+        cur = nxt.get(s)
+        while cur is not None and cur not in seen:
+            loop.append(cur)
+            seen.add(cur)
+            cur = nxt.get(cur)
+        if len(loop) > len(best):
+            best = loop
+    ring = uv[np.asarray(best)]
+    x, y = ring[:, 0], ring[:, 1]
+    area = 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)
+    return ring if area > 0 else ring[::-1]
+
+
+def build_chart(mesh: trimesh.Trimesh) -> SurfaceChart:
+    """Return the `SurfaceChart` of an open mesh (lengths in m).
+
+    Raises `InputError` if the mesh folds over its mean plane (faces whose projection
+    flips or collapses) or has no boundary, `MeshError` if it has no faces.
+    """
+    vertices = np.asarray(mesh.vertices, dtype=float)
+    faces = np.asarray(mesh.faces, dtype=np.int64)
+    if len(faces) == 0:
+        raise MeshError("mesh has no faces")
+    origin = vertices.mean(axis=0)
+    centred = vertices - origin
+    _, vecs = np.linalg.eigh(centred.T @ centred)
+    vt = vecs[:, ::-1].T  # principal axes, largest spread first
+    e_u, e_v = vt[0], vt[1]
+    e_n = np.cross(e_u, e_v)
+    uvn = centred @ np.stack([e_u, e_v, e_n]).T
+    fu, fv, fn = (uvn[:, i][faces] for i in range(3))  # (F, 3) each
+    d1u, d1v, d2u, d2v = (
+        fu[:, 0] - fu[:, 2],
+        fv[:, 0] - fv[:, 2],
+        fu[:, 1] - fu[:, 2],
+        fv[:, 1] - fv[:, 2],
+    )
+    det = d1u * d2v - d1v * d2u  # twice the signed chart area
+    if det.sum() < 0:
+        # Face normals point to -e_n: flip e_v and e_n (still right-handed).
+        e_v, e_n, fv, fn, det = -e_v, -e_n, -fv, -fn, -det
+        d1v, d2v = -d1v, -d2v
+    d1n, d2n = fn[:, 0] - fn[:, 2], fn[:, 1] - fn[:, 2]
+    # |3D area vector|^2 = det^2 + (in-plane parts)^2; a face is folded if det is not clearly positive.
+    cx = d1v * d2n - d1n * d2v
+    cy = d1n * d2u - d1u * d2n
+    area3 = np.sqrt(cx * cx + cy * cy + det * det)
+    folded = det <= 1e-6 * area3
+    if folded.any():
+        raise InputError(
+            f"workpiece surface folds over its mean plane at {int(folded.sum())} of {len(faces)} faces "
+            "(not a height field); split it into patches that each face one side"
+        )
+    axes = np.stack([e_u, e_v, e_n])
+    # Area-weighted vertex normals from the same face area vectors (cx, cy, det) in the frame.
+    acc = np.zeros((len(vertices), 3))
+    for i in range(3):
+        for c, comp in enumerate((cx, cy, det)):
+            acc[:, c] += np.bincount(faces[:, i], comp, minlength=len(vertices))
+    normals = acc @ axes
+    nlen = np.linalg.norm(normals, axis=1, keepdims=True)
+    normals /= np.where(nlen > 0, nlen, 1.0)
+    uv = np.stack([uvn[:, 0], uvn[:, 1] if axes[1] @ vt[1] > 0 else -uvn[:, 1]], axis=1)
+    cu, cv = (fu[:, 0] + fu[:, 1] + fu[:, 2]) / 3.0, (fv[:, 0] + fv[:, 1] + fv[:, 2]) / 3.0
+    reach = float(
+        np.sqrt(max(np.max((fu[:, i] - cu) ** 2 + (fv[:, i] - cv) ** 2) for i in range(3)))
+    )
+    bnd = _boundary_edges(faces, fu, fv, len(vertices), reach)
+    return SurfaceChart(
+        origin=origin,
+        axes=axes,
+        uv=uv,
+        faces=faces,
+        vertices=vertices,
+        boundary=_outer_loop(bnd, uv),
+        tree=cKDTree(np.stack([cu, cv], axis=1), balanced_tree=False, compact_nodes=False),
+        reach=reach,
+        vertex_normals=normals,
+        face_c=np.stack([fu[:, 2], fv[:, 2]], axis=1),
+        face_inv=np.stack([d2v, -d2u, -d1v, d1u], axis=1) / det[:, None],
+    )
