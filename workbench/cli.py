@@ -18,7 +18,9 @@ def _parser() -> argparse.ArgumentParser:
 
     serve = sub.add_parser("serve", help="serve the workbench GUI in the browser")
     serve.add_argument("project", nargs="?", help="project JSON (default: the example MZ07 cell)")
-    serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback only)")
+    serve.add_argument(
+        "--host", default="127.0.0.1", help="address to bind (default: loopback only)"
+    )
     serve.add_argument("--port", type=int, default=8080, help="port (default: 8080)")
 
     check = sub.add_parser("check", help="validate a project and report the collision status")
@@ -26,10 +28,15 @@ def _parser() -> argparse.ArgumentParser:
 
     export = sub.add_parser("export", help="plan the project's program and export it")
     export.add_argument("project", help="project JSON")
-    export.add_argument("--format", required=True, choices=["rapid", "krl", "ls", "urscript", "csv", "json"])
+    export.add_argument(
+        "--format", required=True, choices=["rapid", "krl", "ls", "urscript", "csv", "json"]
+    )
     export.add_argument("--out", required=True, help="output file (written atomically)")
-    export.add_argument("--force", action="store_true",
-                        help="write the program even if the plan collides or breaks a limit")
+    export.add_argument(
+        "--force",
+        action="store_true",
+        help="write the program even if the plan collides or breaks a limit",
+    )
     return parser
 
 
@@ -42,8 +49,12 @@ class _Progress:
 
     def __call__(self, fraction: float, message: str) -> None:
         if self.tty:
-            print(f"\r  [{'#' * int(fraction * 30):<30}] {fraction * 100:5.1f}% {message:<30}",
-                  end="" if fraction < 1 else "\n", file=sys.stderr, flush=True)
+            print(
+                f"\r  [{'#' * int(fraction * 30):<30}] {fraction * 100:5.1f}% {message:<30}",
+                end="" if fraction < 1 else "\n",
+                file=sys.stderr,
+                flush=True,
+            )
             return
         stage = message.split(" ")[0]
         if stage != self.stage:
@@ -59,8 +70,11 @@ def _export(args: argparse.Namespace) -> int:
     plan = wb.plan_motion(progress=_Progress())
     print(f"{args.project}: {plan.summary()}")
     if not plan.ok and not args.force:
-        print("workbench export: error: the plan has problems (above); fix the program, or pass"
-              " --force to write it anyway", file=sys.stderr)
+        print(
+            "workbench export: error: the plan has problems (above); fix the program, or pass"
+            " --force to write it anyway",
+            file=sys.stderr,
+        )
         return 1
     atomic_write_text(args.out, wb.export_program(args.format))
     print(f"wrote {args.out} ({args.format})")
@@ -83,7 +97,9 @@ def _check(args: argparse.Namespace) -> int:
     wb = Workbench.open(args.project)
     report = wb.collision_status()
     q = ", ".join(f"{v:.2f}" for v in wb.joints * 180 / 3.141592653589793)
-    print(f"{args.project}: valid; robot {wb.project.robot.name} ({wb.robot.dof} joints) at [{q}] deg")
+    print(
+        f"{args.project}: valid; robot {wb.project.robot.name} ({wb.robot.dof} joints) at [{q}] deg"
+    )
     if report.in_collision:
         pairs = ", ".join(f"{a}–{b}" for a, b in report.colliding)
         print(f"collision: {pairs}")

@@ -28,10 +28,14 @@ def test_sphere_mesh_against_solid_box_matches_closed_form() -> None:
     r_in = r * np.cos(np.max(ball.edges_unique_length) / r)
     size = np.array([0.4, 0.3, 0.2])
     # The box moves (random poses), the ball stays: one scene, many checks.
-    scene = CollisionScene([Solid("box", "box", size=tuple(size))], [(Solid("ball", "mesh", mesh=ball), np.eye(4))])
+    scene = CollisionScene(
+        [Solid("box", "box", size=tuple(size))], [(Solid("ball", "mesh", mesh=ball), np.eye(4))]
+    )
     seen = {"free": 0, "hit": 0}
     for _ in range(400):
-        T_box = make_transform(rpy_to_matrix(rng.uniform(-np.pi, np.pi, 3)), rng.uniform(-0.35, 0.35, 3))
+        T_box = make_transform(
+            rpy_to_matrix(rng.uniform(-np.pi, np.pi, 3)), rng.uniform(-0.35, 0.35, 3)
+        )
         rep = scene.check({"box": T_box})
         c = np.zeros(3)
         d_true = sphere_box_distance(c, r, size / 2, T_box)
@@ -51,27 +55,37 @@ def test_body_inside_closed_mesh_counts_as_collision() -> None:
     # fcl alone calls this free: meshes are surfaces. The containment test catches it.
     shell = trimesh.creation.box(extents=(1.0, 1.0, 1.0))
     small = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
-    scene = CollisionScene([Solid("small", "mesh", mesh=small)], [(Solid("shell", "mesh", mesh=shell), np.eye(4))])
+    scene = CollisionScene(
+        [Solid("small", "mesh", mesh=small)], [(Solid("shell", "mesh", mesh=shell), np.eye(4))]
+    )
     assert scene.check({"small": np.eye(4)}).colliding == (("small", "shell"),)
     far = make_transform(np.eye(3), [2.0, 0, 0])
     rep = scene.check({"small": far})
     assert not rep.in_collision
     assert rep.min_distance == pytest.approx(2.0 - 0.5 - 0.05, abs=1e-9)
     # And the other way round: the moving shell swallowing a static small box.
-    scene2 = CollisionScene([Solid("shell", "mesh", mesh=shell)], [(Solid("small", "mesh", mesh=small), np.eye(4))])
+    scene2 = CollisionScene(
+        [Solid("shell", "mesh", mesh=shell)], [(Solid("small", "mesh", mesh=small), np.eye(4))]
+    )
     assert scene2.check({"shell": np.eye(4)}).in_collision
 
 
 def test_self_pairs_and_errors() -> None:
     a, b = trimesh.creation.box(extents=(1, 1, 1)), trimesh.creation.box(extents=(1, 1, 1))
-    scene = CollisionScene([Solid("a", "mesh", mesh=a), Solid("b", "mesh", mesh=b)], [], self_pairs=[("a", "b")])
-    assert scene.check({"a": np.eye(4), "b": make_transform(np.eye(3), [0.9, 0, 0])}).colliding == (("a", "b"),)
+    scene = CollisionScene(
+        [Solid("a", "mesh", mesh=a), Solid("b", "mesh", mesh=b)], [], self_pairs=[("a", "b")]
+    )
+    assert scene.check({"a": np.eye(4), "b": make_transform(np.eye(3), [0.9, 0, 0])}).colliding == (
+        ("a", "b"),
+    )
     rep = scene.check({"a": np.eye(4), "b": make_transform(np.eye(3), [1.25, 0, 0])})
     assert rep.min_distance == pytest.approx(0.25, abs=1e-9) and rep.closest_pair == ("a", "b")
     with pytest.raises(InputError, match="unknown moving body"):
         CollisionScene([Solid("a", "mesh", mesh=a)], [], self_pairs=[("a", "zz")])
     with pytest.raises(InputError, match="unique"):
-        CollisionScene([Solid("a", "mesh", mesh=a)], [(Solid("a", "box", size=(1, 1, 1)), np.eye(4))])
+        CollisionScene(
+            [Solid("a", "mesh", mesh=a)], [(Solid("a", "box", size=(1, 1, 1)), np.eye(4))]
+        )
     with pytest.raises(MeshError, match="no triangles"):
         Solid("empty", "mesh", mesh=trimesh.Trimesh())
     with pytest.raises(InputError, match="positive"):

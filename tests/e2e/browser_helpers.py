@@ -9,8 +9,12 @@ import pytest
 
 def set_slider(page, label: str, value: float) -> None:  # type: ignore[no-untyped-def]
     """Type `value` into the number box beside the viser slider labelled `label`."""
-    row = page.locator(".mantine-Flex-root, div").filter(has=page.get_by_text(label, exact=True)).filter(
-        has=page.get_by_role("slider")).last
+    row = (
+        page.locator(".mantine-Flex-root, div")
+        .filter(has=page.get_by_text(label, exact=True))
+        .filter(has=page.get_by_role("slider"))
+        .last
+    )
     box = row.locator("input").last
     box.click()
     box.fill(f"{value}")
@@ -21,7 +25,12 @@ def canvas_png(page) -> bytes:  # type: ignore[no-untyped-def]
     """Return a PNG of the 3D view only (clipped left of the GUI panel)."""
     canvas = page.locator("canvas").first
     box = canvas.bounding_box()
-    clip = {"x": box["x"] + 10, "y": box["y"] + 60, "width": box["width"] * 0.45, "height": box["height"] - 120}
+    clip = {
+        "x": box["x"] + 10,
+        "y": box["y"] + 60,
+        "width": box["width"] * 0.45,
+        "height": box["height"] - 120,
+    }
     return page.screenshot(clip=clip)
 
 

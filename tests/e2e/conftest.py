@@ -13,8 +13,8 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-
 from browser_helpers import wait_for
+
 from workbench.gui.app import WorkbenchApp, start_server
 from workbench.service import Workbench
 
@@ -78,8 +78,10 @@ def page(browser: object, app: WorkbenchApp, request: pytest.FixtureRequest) -> 
     context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
     pg = context.new_page()
     port = app.server.get_port()
-    pg.goto(f"http://127.0.0.1:{port}/?hideViserLogo"
-            "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45")
+    pg.goto(
+        f"http://127.0.0.1:{port}/?hideViserLogo"
+        "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45"
+    )
     wait_for(lambda: len(app.server.get_clients()) > 0, what="the page to connect")
     pg.get_by_role("tab", name="Robot").wait_for(timeout=20_000)
     yield pg

@@ -31,8 +31,10 @@ def test_plan_play_scrub_and_export(page, app: WorkbenchApp) -> None:  # type: i
     wait_for(lambda: abs(app.timeline.time.value - t) < 1e-6, what="the timeline at the typed time")
     q_expected = app.timeline.motion.at(t)
     T = app.wb.link_poses(q_expected)[3]
-    wait_for(lambda: np.allclose(app.scene.links["link3"].position, T[:3, 3], atol=1e-6),
-             what="link 3 at the planned pose")
+    wait_for(
+        lambda: np.allclose(app.scene.links["link3"].position, T[:3, 3], atol=1e-6),
+        what="link 3 at the planned pose",
+    )
     page.wait_for_timeout(800)
     assert canvas_png(page) != before, "the 3D view did not change when scrubbing"
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 from browser_helpers import canvas_png, set_slider, wait_for
+
 from workbench.gui.app import WorkbenchApp
 from workbench.gui.scene import COLLISION_COLOR, ROBOT_COLOR
 
@@ -24,7 +24,9 @@ def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # 
     (DOCS / "screenshot.png").write_bytes(page.screenshot())
 
     set_slider(page, "J1 [deg]", 35.0)
-    wait_for(lambda: abs(np.degrees(app.wb.joints[0]) - 35.0) < 1e-6, what="J1 = 35 deg on the server")
+    wait_for(
+        lambda: abs(np.degrees(app.wb.joints[0]) - 35.0) < 1e-6, what="J1 = 35 deg on the server"
+    )
     # The link poses in the scene follow the server's joints.
     T = app.wb.link_poses()[1]
     node = app.scene.links["link1"]
@@ -39,17 +41,31 @@ def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:
     set_slider(page, "J2 [deg]", -60.0)
     wait_for(lambda: app.wb.collision_status().in_collision, what="a collision on the server")
     hit = app.wb.collision_status().colliding_bodies()
-    assert any(tuple(app.scene.links[n].color) == COLLISION_COLOR for n in hit if n in app.scene.links)
+    assert any(
+        tuple(app.scene.links[n].color) == COLLISION_COLOR for n in hit if n in app.scene.links
+    )
     free = [n for n in app.scene.links if n not in hit and n != "tool"]
     assert all(tuple(app.scene.links[n].color) == ROBOT_COLOR for n in free)
     page.get_by_text("Collision:").first.wait_for(timeout=10_000)
 
 
-def test_upload_bad_project_shows_field_and_keeps_state(page, app: WorkbenchApp, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+def test_upload_bad_project_shows_field_and_keeps_state(
+    page, app: WorkbenchApp, tmp_path: Path
+) -> None:  # type: ignore[no-untyped-def]
     page.get_by_role("tab", name="Project").click()
     bad = tmp_path / "bad.json"
-    bad.write_text(json.dumps({"schema_version": 1, "cell": {"objects": [
-        {"name": "a", "shape": "box", "size": [1, 2], "pose": {"xyz": [0, 0, 0]}}]}}))
+    bad.write_text(
+        json.dumps(
+            {
+                "schema_version": 1,
+                "cell": {
+                    "objects": [
+                        {"name": "a", "shape": "box", "size": [1, 2], "pose": {"xyz": [0, 0, 0]}}
+                    ]
+                },
+            }
+        )
+    )
     name_before = app.wb.project.name
     with page.expect_file_chooser() as fc:
         page.get_by_role("button", name="Load project JSON", exact=True).click()

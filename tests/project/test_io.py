@@ -39,25 +39,75 @@ def test_examples_round_trip(path: Path, tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     ("patch", "field", "words"),
     [
-        ({"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, 2, 3], "pose": {"xyz": [1, 2]}}]}},
-         "cell.objects[0].pose.xyz", "expected 3 numbers"),
-        ({"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, 2, 3], "colour": [1, 2, 3]}]}},
-         "cell.objects[0].colour", "unknown field"),
-        ({"cell": {"objects": [{"name": "a", "shape": "cylinder", "radius": 5}]}},
-         "cell.objects[0]", "needs 'height'"),
-        ({"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, -2, 3]}]}},
-         "cell.objects[0]", "positive"),
-        ({"robot": {"preset": "mz07", "base": {"rpy": ["x", 0, 0]}}}, "robot.base.rpy[0]", "number"),
+        (
+            {
+                "cell": {
+                    "objects": [
+                        {"name": "a", "shape": "box", "size": [1, 2, 3], "pose": {"xyz": [1, 2]}}
+                    ]
+                }
+            },
+            "cell.objects[0].pose.xyz",
+            "expected 3 numbers",
+        ),
+        (
+            {
+                "cell": {
+                    "objects": [
+                        {"name": "a", "shape": "box", "size": [1, 2, 3], "colour": [1, 2, 3]}
+                    ]
+                }
+            },
+            "cell.objects[0].colour",
+            "unknown field",
+        ),
+        (
+            {"cell": {"objects": [{"name": "a", "shape": "cylinder", "radius": 5}]}},
+            "cell.objects[0]",
+            "needs 'height'",
+        ),
+        (
+            {"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, -2, 3]}]}},
+            "cell.objects[0]",
+            "positive",
+        ),
+        (
+            {"robot": {"preset": "mz07", "base": {"rpy": ["x", 0, 0]}}},
+            "robot.base.rpy[0]",
+            "number",
+        ),
         ({"robot": {"preset": "mz07", "dh": []}}, "robot", "exactly one"),
         ({"robot": {}}, "robot", "exactly one"),
         ({"robot": {"preset": "ur5"}}, "robot.preset", "mz07"),
-        ({"robot": {"preset": "mz07", "max_velocity": [1, 2, 0, 1, 1, 1]}}, "robot.max_velocity[2]",
-         "greater than 0"),
+        (
+            {"robot": {"preset": "mz07", "max_velocity": [1, 2, 0, 1, 1, 1]}},
+            "robot.max_velocity[2]",
+            "greater than 0",
+        ),
         ({"tool": {"tcp": {"xyz": [0, 0, 1e400]}}}, "tool.tcp.xyz[2]", "finite"),
-        ({"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, 1, 1]},
-                               {"name": "a", "shape": "box", "size": [1, 1, 1]}]}}, "cell", "unique"),
-        ({"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, 1, 1], "color": [0, 0, 300]}]}},
-         "cell.objects[0].color", "0..255"),
+        (
+            {
+                "cell": {
+                    "objects": [
+                        {"name": "a", "shape": "box", "size": [1, 1, 1]},
+                        {"name": "a", "shape": "box", "size": [1, 1, 1]},
+                    ]
+                }
+            },
+            "cell",
+            "unique",
+        ),
+        (
+            {
+                "cell": {
+                    "objects": [
+                        {"name": "a", "shape": "box", "size": [1, 1, 1], "color": [0, 0, 300]}
+                    ]
+                }
+            },
+            "cell.objects[0].color",
+            "0..255",
+        ),
     ],
 )
 def test_bad_fields_are_named(patch: dict, field: str, words: str) -> None:
@@ -79,13 +129,18 @@ def test_broken_json_names_line_and_column() -> None:
 @pytest.mark.parametrize("literal", ["NaN", "Infinity", "-Infinity"])
 def test_nonfinite_json_literals_refused(literal: str) -> None:
     with pytest.raises(ProjectError, match="finite"):
-        parse_project_json('{"schema_version": 1, "tool": {"tcp": {"xyz": [0, 0, %s]}}}' % literal)
+        text = '{"schema_version": 1, "tool": {"tcp": {"xyz": [0, 0, LIT]}}}'
+        parse_project_json(text.replace("LIT", literal))
 
 
 @pytest.mark.parametrize(
     ("data", "words"),
-    [({}, "schema_version: missing"), ({"schema_version": 99}, "newer workbench"),
-     ({"schema_version": 0}, "not a released format"), ({"schema_version": "1"}, "integer")],
+    [
+        ({}, "schema_version: missing"),
+        ({"schema_version": 99}, "newer workbench"),
+        ({"schema_version": 0}, "not a released format"),
+        ({"schema_version": "1"}, "integer"),
+    ],
 )
 def test_schema_versions(data: dict, words: str) -> None:
     with pytest.raises(SchemaVersionError, match=words):
@@ -102,7 +157,9 @@ def test_missing_file() -> None:
         load_project("/nonexistent/project.json")
 
 
-def test_save_is_atomic_when_the_write_fails(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_save_is_atomic_when_the_write_fails(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     target = tmp_path / "p.json"
     good = project_from_dict(_base() | {"name": "good"})
     save_project(good, target)

@@ -57,7 +57,9 @@ def test_move_tcp_reaches_the_pose_by_ik(wb: Workbench) -> None:
         wb.move_tcp(target, configuration=s.label)
         assert np.allclose(wb.tcp_pose(), target, atol=1e-9)
         # The same configuration, with the joint turns nearest the joints it came from.
-        assert np.allclose(np.cos(wb.joints), np.cos(s.q)) and np.allclose(np.sin(wb.joints), np.sin(s.q))
+        assert np.allclose(np.cos(wb.joints), np.cos(s.q)) and np.allclose(
+            np.sin(wb.joints), np.sin(s.q)
+        )
     wb.move_tcp(target, configuration=0)
     assert np.allclose(wb.tcp_pose(), target, atol=1e-9)
 
@@ -129,8 +131,14 @@ def test_dh_robot_from_rows_matches_preset() -> None:
 
     mz = DHRobot.mz07()
     rows = [
-        {"theta_offset": float(np.degrees(r[0])), "d": r[1] * 1000, "a": r[2] * 1000,
-         "alpha": float(np.degrees(r[3])), "min": float(np.degrees(lim[0])), "max": float(np.degrees(lim[1]))}
+        {
+            "theta_offset": float(np.degrees(r[0])),
+            "d": r[1] * 1000,
+            "a": r[2] * 1000,
+            "alpha": float(np.degrees(r[3])),
+            "min": float(np.degrees(lim[0])),
+            "max": float(np.degrees(lim[1])),
+        }
         for r, lim in zip(mz.dh, mz.limits, strict=True)
     ]
     w = Workbench.from_dict({"schema_version": 1, "robot": {"dh": rows}})

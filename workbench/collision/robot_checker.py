@@ -55,10 +55,14 @@ class RobotCollisionChecker:
         self.robot = robot
         n = robot.dof
         if len(link_meshes) != n + 1:
-            raise ValueError(f"expected {n + 1} link meshes (base + {n} links), got {len(link_meshes)}")
+            raise ValueError(
+                f"expected {n + 1} link meshes (base + {n} links), got {len(link_meshes)}"
+            )
         self.link_names = link_names or ["base"] + [f"link{i}" for i in range(1, n + 1)]
         self.T_world_base = np.eye(4) if T_world_base is None else np.asarray(T_world_base, float)
-        moving = [Solid(nm, "mesh", mesh=m) for nm, m in zip(self.link_names, link_meshes, strict=True)]
+        moving = [
+            Solid(nm, "mesh", mesh=m) for nm, m in zip(self.link_names, link_meshes, strict=True)
+        ]
         self.has_tool = tool is not None
         if tool is not None:
             moving.append(Solid("tool", "mesh", mesh=tool))

@@ -26,7 +26,9 @@ class Solid:
 
     def __post_init__(self) -> None:
         if self.kind == "box" and (self.size is None or min(self.size) <= 0):
-            raise InputError(f"{self.name}: a box needs three positive edge lengths, got {self.size}")
+            raise InputError(
+                f"{self.name}: a box needs three positive edge lengths, got {self.size}"
+            )
         if self.kind == "cylinder" and not (
             self.radius and self.height and self.radius > 0 and self.height > 0
         ):
@@ -39,6 +41,7 @@ class Solid:
         if self.kind == "box":
             return trimesh.creation.box(extents=self.size)
         if self.kind == "cylinder":
+            assert self.radius is not None and self.height is not None
             return trimesh.creation.cylinder(radius=self.radius, height=self.height, sections=32)
         assert self.mesh is not None
         return self.mesh

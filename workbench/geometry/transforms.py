@@ -11,32 +11,32 @@ from numpy.typing import ArrayLike, NDArray
 
 def rot_x(a: ArrayLike) -> NDArray[np.float64]:
     """Return rotation matrices (..., 3, 3) about x by angle `a` [rad]."""
-    a = np.asarray(a, dtype=float)
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([o, z, z, z, c, -s, z, s, c], axis=-1).reshape(a.shape + (3, 3))
+    ang = np.asarray(a, dtype=float)
+    c, s = np.cos(ang), np.sin(ang)
+    o, z = np.ones_like(ang), np.zeros_like(ang)
+    return np.stack([o, z, z, z, c, -s, z, s, c], axis=-1).reshape(ang.shape + (3, 3))
 
 
 def rot_y(a: ArrayLike) -> NDArray[np.float64]:
     """Return rotation matrices (..., 3, 3) about y by angle `a` [rad]."""
-    a = np.asarray(a, dtype=float)
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([c, z, s, z, o, z, -s, z, c], axis=-1).reshape(a.shape + (3, 3))
+    ang = np.asarray(a, dtype=float)
+    c, s = np.cos(ang), np.sin(ang)
+    o, z = np.ones_like(ang), np.zeros_like(ang)
+    return np.stack([c, z, s, z, o, z, -s, z, c], axis=-1).reshape(ang.shape + (3, 3))
 
 
 def rot_z(a: ArrayLike) -> NDArray[np.float64]:
     """Return rotation matrices (..., 3, 3) about z by angle `a` [rad]."""
-    a = np.asarray(a, dtype=float)
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([c, -s, z, s, c, z, z, z, o], axis=-1).reshape(a.shape + (3, 3))
+    ang = np.asarray(a, dtype=float)
+    c, s = np.cos(ang), np.sin(ang)
+    o, z = np.ones_like(ang), np.zeros_like(ang)
+    return np.stack([c, -s, z, s, c, z, z, z, o], axis=-1).reshape(ang.shape + (3, 3))
 
 
 def rpy_to_matrix(rpy: ArrayLike) -> NDArray[np.float64]:
     """Return R = Rz(yaw) Ry(pitch) Rx(roll) (..., 3, 3) from (..., 3) [roll, pitch, yaw] rad."""
-    rpy = np.asarray(rpy, dtype=float)
-    return rot_z(rpy[..., 2]) @ rot_y(rpy[..., 1]) @ rot_x(rpy[..., 0])
+    angles = np.asarray(rpy, dtype=float)
+    return rot_z(angles[..., 2]) @ rot_y(angles[..., 1]) @ rot_x(angles[..., 0])
 
 
 def matrix_to_rpy(R: ArrayLike) -> NDArray[np.float64]:
@@ -44,7 +44,7 @@ def matrix_to_rpy(R: ArrayLike) -> NDArray[np.float64]:
 
     At pitch = ±90° (gimbal lock) roll is set to 0 and yaw carries the whole rotation.
     """
-    R = np.asarray(R, dtype=float)
+    R = np.asarray(R, dtype=float)  # type: ignore[assignment]
     pitch = np.arcsin(np.clip(-R[..., 2, 0], -1.0, 1.0))
     cp = np.cos(pitch)
     lock = np.abs(cp) < 1e-9
@@ -104,23 +104,47 @@ def matrix_to_wxyz(R: ArrayLike) -> NDArray[np.float64]:
         if case == 0:
             s = np.sqrt(1.0 + tr[idx]) * 2.0
             q[idx] = np.stack(
-                [0.25 * s, (r[:, 2, 1] - r[:, 1, 2]) / s, (r[:, 0, 2] - r[:, 2, 0]) / s,
-                 (r[:, 1, 0] - r[:, 0, 1]) / s], axis=1)
+                [
+                    0.25 * s,
+                    (r[:, 2, 1] - r[:, 1, 2]) / s,
+                    (r[:, 0, 2] - r[:, 2, 0]) / s,
+                    (r[:, 1, 0] - r[:, 0, 1]) / s,
+                ],
+                axis=1,
+            )
         elif case == 1:
             s = np.sqrt(1.0 + r[:, 0, 0] - r[:, 1, 1] - r[:, 2, 2]) * 2.0
             q[idx] = np.stack(
-                [(r[:, 2, 1] - r[:, 1, 2]) / s, 0.25 * s, (r[:, 0, 1] + r[:, 1, 0]) / s,
-                 (r[:, 0, 2] + r[:, 2, 0]) / s], axis=1)
+                [
+                    (r[:, 2, 1] - r[:, 1, 2]) / s,
+                    0.25 * s,
+                    (r[:, 0, 1] + r[:, 1, 0]) / s,
+                    (r[:, 0, 2] + r[:, 2, 0]) / s,
+                ],
+                axis=1,
+            )
         elif case == 2:
             s = np.sqrt(1.0 + r[:, 1, 1] - r[:, 0, 0] - r[:, 2, 2]) * 2.0
             q[idx] = np.stack(
-                [(r[:, 0, 2] - r[:, 2, 0]) / s, (r[:, 0, 1] + r[:, 1, 0]) / s, 0.25 * s,
-                 (r[:, 1, 2] + r[:, 2, 1]) / s], axis=1)
+                [
+                    (r[:, 0, 2] - r[:, 2, 0]) / s,
+                    (r[:, 0, 1] + r[:, 1, 0]) / s,
+                    0.25 * s,
+                    (r[:, 1, 2] + r[:, 2, 1]) / s,
+                ],
+                axis=1,
+            )
         else:
             s = np.sqrt(1.0 + r[:, 2, 2] - r[:, 0, 0] - r[:, 1, 1]) * 2.0
             q[idx] = np.stack(
-                [(r[:, 1, 0] - r[:, 0, 1]) / s, (r[:, 0, 2] + r[:, 2, 0]) / s,
-                 (r[:, 1, 2] + r[:, 2, 1]) / s, 0.25 * s], axis=1)
+                [
+                    (r[:, 1, 0] - r[:, 0, 1]) / s,
+                    (r[:, 0, 2] + r[:, 2, 0]) / s,
+                    (r[:, 1, 2] + r[:, 2, 1]) / s,
+                    0.25 * s,
+                ],
+                axis=1,
+            )
     q *= np.where(q[:, :1] < 0, -1.0, 1.0)
     q /= np.linalg.norm(q, axis=1, keepdims=True)
     return q.reshape(R.shape[:-2] + (4,))
@@ -128,12 +152,20 @@ def matrix_to_wxyz(R: ArrayLike) -> NDArray[np.float64]:
 
 def wxyz_to_matrix(q: ArrayLike) -> NDArray[np.float64]:
     """Return (..., 3, 3) rotations from (..., 4) quaternions in (w, x, y, z) order."""
-    q = np.asarray(q, dtype=float)
-    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+    qa = np.asarray(q, dtype=float)
+    qa = qa / np.linalg.norm(qa, axis=-1, keepdims=True)
+    w, x, y, z = qa[..., 0], qa[..., 1], qa[..., 2], qa[..., 3]
     return np.stack(
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
-         2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        [
+            1 - 2 * (y * y + z * z),
+            2 * (x * y - w * z),
+            2 * (x * z + w * y),
+            2 * (x * y + w * z),
+            1 - 2 * (x * x + z * z),
+            2 * (y * z - w * x),
+            2 * (x * z - w * y),
+            2 * (y * z + w * x),
+            1 - 2 * (x * x + y * y),
+        ],
         axis=-1,
-    ).reshape(q.shape[:-1] + (3, 3))
+    ).reshape(qa.shape[:-1] + (3, 3))

@@ -25,7 +25,9 @@ def ensure_port_free(host: str, port: int) -> None:
     """Raise ServerError when `host:port` cannot be bound (viser would silently move on)."""
     if not 0 < port < 65536:
         raise ServerError(f"--port: {port} is not a valid port (1..65535)")
-    with socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET, socket.SOCK_STREAM) as sock:
+    with socket.socket(
+        socket.AF_INET6 if ":" in host else socket.AF_INET, socket.SOCK_STREAM
+    ) as sock:
         try:
             sock.bind((host, port))
         except OSError as exc:
@@ -54,8 +56,9 @@ class WorkbenchApp:
         self.wb = wb
         self.lock = threading.RLock()
         server.scene.set_up_direction("+z")
-        server.scene.add_grid("/grid", width=3.0, height=3.0, cell_size=0.1, plane="xy",
-                              position=(0.0, 0.0, 0.0005))
+        server.scene.add_grid(
+            "/grid", width=3.0, height=3.0, cell_size=0.1, plane="xy", position=(0.0, 0.0, 0.0005)
+        )
         server.gui.configure_theme(control_width="large", dark_mode=False)
         self.tabs = server.gui.add_tab_group()
         self.robot_tab = self.tabs.add_tab("Robot")
@@ -87,7 +90,11 @@ class WorkbenchApp:
 def serve(project: str | Path | None, *, host: str = "127.0.0.1", port: int = 8080) -> None:
     """Serve the workbench on `host:port` until interrupted (Ctrl-C)."""
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
-    wb = Workbench.open(project) if project is not None else Workbench.from_dict({"schema_version": 1})
+    wb = (
+        Workbench.open(project)
+        if project is not None
+        else Workbench.from_dict({"schema_version": 1})
+    )
     server = start_server(host, port)
     WorkbenchApp(server, wb)
     shown = "localhost" if host in ("127.0.0.1", "0.0.0.0") else host

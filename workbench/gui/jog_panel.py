@@ -8,8 +8,14 @@ import numpy as np
 import viser
 
 from workbench.errors import UnreachableError
-from workbench.geometry.transforms import make_transform, matrix_to_rpy, matrix_to_wxyz, wxyz_to_matrix
+from workbench.geometry.transforms import (
+    make_transform,
+    matrix_to_rpy,
+    wxyz_to_matrix,
+)
+from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
+from workbench.gui.scene import place
 from workbench.service import Workbench
 
 DEG = 180.0 / np.pi
@@ -18,12 +24,14 @@ DEG = 180.0 / np.pi
 class JogPanel:
     """Jog controls bound to one workbench; `on_moved` redraws the scene after each change."""
 
-    def __init__(self, server: viser.ViserServer, wb: Workbench, on_moved: Callable[[], None]) -> None:
+    def __init__(
+        self, server: viser.ViserServer, wb: Workbench, on_moved: Callable[[], None]
+    ) -> None:
         self.server = server
         self.wb = wb
         self.on_moved = on_moved
         self._syncing = False
-        self.handles: list[viser.GuiInputHandle] = []  # type: ignore[type-arg]
+        self.handles: list[Removable] = []
         self.build()
 
     def build(self) -> None:
@@ -33,14 +41,21 @@ class JogPanel:
         self.sliders = []
         for j in range(wb.robot.dof):
             lo, hi = wb.robot.limits[j] * DEG
-            slider = s.gui.add_slider(f"J{j + 1} [deg]", min=float(np.floor(lo * 10) / 10),
-                                      max=float(np.ceil(hi * 10) / 10), step=0.1,
-                                      initial_value=float(np.clip(q[j], lo, hi)))
+            slider = s.gui.add_slider(
+                f"J{j + 1} [deg]",
+                min=float(np.floor(lo * 10) / 10),
+                max=float(np.ceil(hi * 10) / 10),
+                step=0.1,
+                initial_value=float(np.clip(q[j], lo, hi)),
+            )
             slider.on_update(guarded(s, f"Joint {j + 1}")(self._on_slider))
             self.sliders.append(slider)
-        self.config = s.gui.add_dropdown("IK configuration", options=("current",),
-                                         initial_value="current",
-                                         hint="Arm configurations that reach the current TCP pose")
+        self.config = s.gui.add_dropdown(
+            "IK configuration",
+            options=("current",),
+            initial_value="current",
+            hint="Arm configurations that reach the current TCP pose",
+        )
         self.config.on_update(guarded(s, "IK configuration")(self._on_config))
         self.status = s.gui.add_markdown("")
         self.handles = [*self.sliders, self.config, self.status]
@@ -72,7 +87,9 @@ class JogPanel:
         # IK is committed on release: during the drag only the gizmo moves.
         if event.phase != "end":
             return
-        T = make_transform(wxyz_to_matrix(np.asarray(self.gizmo.wxyz)), np.asarray(self.gizmo.position))
+        T = make_transform(
+            wxyz_to_matrix(np.asarray(self.gizmo.wxyz)), np.asarray(self.gizmo.position)
+        )
         try:
             self.wb.move_tcp(T)
         except UnreachableError:
@@ -95,13 +112,12 @@ class JogPanel:
         try:
             for slider, v in zip(self.sliders, q, strict=True):
                 if abs(slider.value - v) > 1e-9:
-                    slider.value = float(v)
+                    slider.value = float(v)  # type: ignore[misc]
             self.config.options = ("current", *labels)
-            self.config.value = "current"
+            self.config.value = "current"  # type: ignore[misc]
         finally:
             self._syncing = False
-        self.gizmo.wxyz = tuple(matrix_to_wxyz(T[:3, :3]))
-        self.gizmo.position = tuple(T[:3, 3])
+        place(self.gizmo, T)
         self.on_moved()
         self.status.content = self._status_text(T, len(sols))
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import viser
 
+from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.timeline import Motion, Timeline
 from workbench.service import EXPORT_FORMATS, MotionPlan, Workbench
@@ -34,12 +35,20 @@ class MotionPanel:
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
-        self.format = g.add_dropdown("Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid")
+        self.format = g.add_dropdown(
+            "Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+        )
         self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
         self.plan_button.on_click(guarded(server, "Plan")(self._on_plan))
         self.download.on_click(guarded(server, "Export")(self._on_download))
-        self.handles = [self.program, self.plan_button, self.progress, self.result, self.format,
-                        self.download]
+        self.handles: list[Removable] = [
+            self.program,
+            self.plan_button,
+            self.progress,
+            self.result,
+            self.format,
+            self.download,
+        ]
         self.refresh()
 
     def remove(self) -> None:
@@ -51,24 +60,29 @@ class MotionPanel:
         """Describe the project's program."""
         spec = self.wb.project.program
         if spec is None:
-            self.program.content = "This project has no program. Add a `program` with moves to its JSON."
+            self.program.content = (
+                "This project has no program. Add a `program` with moves to its JSON."
+            )
             self.plan_button.disabled = True
             return
         rows = "\n".join(
             f"| {i + 1} | {m.name or '-'} | {m.type} | {m.speed:g} {'%' if m.type == 'joint' else 'mm/s'}"
             f" | {'fine' if m.zone == 0 else f'{m.zone:g} mm'} |"
-            for i, m in enumerate(spec.moves))
-        self.program.content = (f"**Program `{spec.name}`**\n\n| # | name | type | speed | zone |\n"
-                                f"|---|---|---|---|---|\n{rows}")
+            for i, m in enumerate(spec.moves)
+        )
+        self.program.content = (
+            f"**Program `{spec.name}`**\n\n| # | name | type | speed | zone |\n"
+            f"|---|---|---|---|---|\n{rows}"
+        )
         self.plan_button.disabled = False
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
         self.plan_button.disabled = True
         self.progress.visible = True
-        self.progress.value = 0.0
+        self.progress.value = 0.0  # type: ignore[misc]
 
         def progress(fraction: float, message: str) -> None:
-            self.progress.value = 100.0 * fraction
+            self.progress.value = 100.0 * fraction  # type: ignore[misc]
             self.result.content = f"Planning: {message}"
 
         try:
@@ -84,5 +98,7 @@ class MotionPanel:
         fmt = str(self.format.value)
         text = self.wb.export_program(fmt)
         if event.client is not None:
-            name = (self.wb.last_plan.program.name if self.wb.last_plan else "program") + EXPORT_FORMATS[fmt]
+            name = (
+                self.wb.last_plan.program.name if self.wb.last_plan else "program"
+            ) + EXPORT_FORMATS[fmt]
             event.client.send_file_download(name, text.encode(), save_immediately=True)

@@ -16,13 +16,24 @@ log = logging.getLogger("workbench.gui")
 F = TypeVar("F", bound=Callable[..., Any])
 
 
-def notify(server: viser.ViserServer, client: viser.ClientHandle | None, title: str, body: str,
-           *, color: str = "red") -> None:
+def notify(
+    server: viser.ViserServer,
+    client: viser.ClientHandle | None,
+    title: str,
+    body: str,
+    *,
+    color: str = "red",
+) -> None:
     """Show a notification to `client`, or to every client when it is None."""
     targets = [client] if client is not None else list(server.get_clients().values())
     for c in targets:
-        c.add_notification(title, body, color=color, with_close_button=True,  # type: ignore[arg-type]
-                           auto_close_seconds=None if color == "red" else 6.0)
+        c.add_notification(
+            title,
+            body,
+            color=color,
+            with_close_button=True,  # type: ignore[call-overload]
+            auto_close_seconds=None if color == "red" else 6.0,
+        )
 
 
 def guarded(server: viser.ViserServer, title: str) -> Callable[[F], F]:
@@ -39,8 +50,12 @@ def guarded(server: viser.ViserServer, title: str) -> Callable[[F], F]:
                 notify(server, client, title, str(exc))
             except Exception as exc:  # a bug: still tell the user, and log the traceback
                 log.error("%s failed:\n%s", title, traceback.format_exc())
-                notify(server, client, f"{title}: internal error",
-                       f"{type(exc).__name__}: {exc}. This is a bug; the log has the traceback.")
+                notify(
+                    server,
+                    client,
+                    f"{title}: internal error",
+                    f"{type(exc).__name__}: {exc}. This is a bug; the log has the traceback.",
+                )
             return None
 
         return inner  # type: ignore[return-value]

@@ -15,14 +15,21 @@ from workbench.service import Workbench
 class ProjectPanel:
     """Upload / download / save of the whole project; `on_replaced` rebuilds the scene."""
 
-    def __init__(self, server: viser.ViserServer, wb: Workbench, on_replaced: Callable[[], None]) -> None:
+    def __init__(
+        self, server: viser.ViserServer, wb: Workbench, on_replaced: Callable[[], None]
+    ) -> None:
         s = server
         self.server, self.wb, self.on_replaced = server, wb, on_replaced
         self.info = s.gui.add_markdown("")
-        self.upload = s.gui.add_upload_button("Load project JSON", icon=None, mime_type="application/json")
+        self.upload = s.gui.add_upload_button(
+            "Load project JSON", icon=None, mime_type="application/json"
+        )
         self.download = s.gui.add_button("Download project JSON")
-        self.save = s.gui.add_button("Save on server", disabled=wb.path is None,
-                                     hint="Write the project back to its file (atomic)")
+        self.save = s.gui.add_button(
+            "Save on server",
+            disabled=wb.path is None,
+            hint="Write the project back to its file (atomic)",
+        )
         self.upload.on_upload(guarded(s, "Load project")(self._on_upload))
         self.download.on_click(guarded(s, "Download project")(self._on_download))
         self.save.on_click(guarded(s, "Save project")(self._on_save))
@@ -42,7 +49,13 @@ class ProjectPanel:
         self.wb.replace_project(project)
         self.on_replaced()
         self.refresh()
-        notify(self.server, event.client, "Project loaded", f"{file.name}: {project.name}", color="green")
+        notify(
+            self.server,
+            event.client,
+            "Project loaded",
+            f"{file.name}: {project.name}",
+            color="green",
+        )
 
     def _on_download(self, event: viser.GuiEvent) -> None:
         if event.client is None:

@@ -14,15 +14,27 @@ ROBOT_COLOR = (235, 235, 240)
 COLLISION_COLOR = (230, 40, 40)
 
 
-def _pose_kwargs(T: NDArray[np.float64]) -> dict[str, tuple[float, ...]]:
-    return {"wxyz": tuple(matrix_to_wxyz(T[:3, :3])), "position": tuple(T[:3, 3])}
+def place(handle: viser.SceneNodeHandle, T: NDArray[np.float64]) -> None:
+    """Move a scene node to the world pose `T` (4, 4) [m]."""
+    handle.wxyz = matrix_to_wxyz(T[:3, :3])
+    handle.position = np.asarray(T[:3, 3], float)
 
 
-def _add_mesh(server: viser.ViserServer, name: str, mesh: trimesh.Trimesh,
-              color: tuple[int, int, int], T: NDArray[np.float64]) -> viser.MeshHandle:
+def _add_mesh(
+    server: viser.ViserServer,
+    name: str,
+    mesh: trimesh.Trimesh,
+    color: tuple[int, int, int],
+    T: NDArray[np.float64],
+) -> viser.MeshHandle:
     return server.scene.add_mesh_simple(
-        name, np.asarray(mesh.vertices, np.float32), np.asarray(mesh.faces, np.uint32),
-        color=color, flat_shading=False, **_pose_kwargs(T),
+        name,
+        np.asarray(mesh.vertices, np.float32),
+        np.asarray(mesh.faces, np.uint32),
+        color=color,
+        flat_shading=False,
+        wxyz=matrix_to_wxyz(T[:3, :3]),
+        position=np.asarray(T[:3, 3], float),
     )
 
 
@@ -40,8 +52,9 @@ class RobotScene:
         """Create every node for the current project (after `clear`, or the first time)."""
         wb, s = self.wb, self.server
         for body in wb.cell:
-            self.nodes.append(_add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color,
-                                        body.T_world_body))
+            self.nodes.append(
+                _add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color, body.T_world_body)
+            )
         poses = wb.link_poses()
         names = wb.checker.link_names
         for name, mesh, T in zip(names, wb.setup.link_meshes, poses, strict=True):
@@ -49,12 +62,11 @@ class RobotScene:
             self.links[name] = h
             self.nodes.append(h)
         if wb.setup.tool_mesh is not None:
-            color = tuple(wb.project.tool.color)
-            h = _add_mesh(s, "/robot/tool", wb.setup.tool_mesh, color, poses[-1])  # type: ignore[arg-type]
+            h = _add_mesh(s, "/robot/tool", wb.setup.tool_mesh, self._tool_color(), poses[-1])
             self.links["tool"] = h
             self.nodes.append(h)
-        self.tcp_frame = s.scene.add_frame("/tcp", axes_length=0.08, axes_radius=0.004,
-                                           **_pose_kwargs(wb.tcp_pose()))
+        self.tcp_frame = s.scene.add_frame("/tcp", axes_length=0.08, axes_radius=0.004)
+        place(self.tcp_frame, wb.tcp_pose())
         self.nodes.append(self.tcp_frame)
         self.update()
 
@@ -75,17 +87,17 @@ class RobotScene:
         poses = wb.link_poses(q)
         report = wb.collision_status(q)
         hit = report.colliding_bodies()
-        tool_color = tuple(wb.project.tool.color)
         with self.server.atomic():
             for i, name in enumerate(wb.checker.link_names):
                 h = self.links[name]
-                kw = _pose_kwargs(poses[i])
-                h.wxyz, h.position = kw["wxyz"], kw["position"]
+                place(h, poses[i])
                 h.color = COLLISION_COLOR if name in hit else ROBOT_COLOR
             if "tool" in self.links:
                 h = self.links["tool"]
-                kw = _pose_kwargs(poses[-1])
-                h.wxyz, h.position = kw["wxyz"], kw["position"]
-                h.color = COLLISION_COLOR if "tool" in hit else tool_color
-            kw = _pose_kwargs(wb.tcp_pose(q))
-            self.tcp_frame.wxyz, self.tcp_frame.position = kw["wxyz"], kw["position"]
+                place(h, poses[-1])
+                h.color = COLLISION_COLOR if "tool" in hit else self._tool_color()
+            place(self.tcp_frame, wb.tcp_pose(q))
+
+    def _tool_color(self) -> tuple[int, int, int]:
+        r, g, b = self.wb.project.tool.color
+        return (r, g, b)

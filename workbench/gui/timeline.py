@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import viser
+import viser.uplot as uplot
 from numpy.typing import NDArray
 
 DEG = 180.0 / np.pi
@@ -43,14 +44,17 @@ class Motion:
     def at(self, t: float) -> NDArray[np.float64]:
         """Return joints [rad] at time `t` [s], interpolated linearly between samples."""
         t = float(np.clip(t, 0.0, self.duration))
-        return np.array([np.interp(t, self.times, self.positions[:, j])
-                         for j in range(self.positions.shape[1])])
+        return np.array(
+            [np.interp(t, self.times, self.positions[:, j]) for j in range(self.positions.shape[1])]
+        )
 
 
 class Timeline:
     """Play/pause, a time slider, a speed choice and four plots; `show(q)` poses the robot."""
 
-    def __init__(self, server: viser.ViserServer, show: Callable[[NDArray[np.float64]], None]) -> None:
+    def __init__(
+        self, server: viser.ViserServer, show: Callable[[NDArray[np.float64]], None]
+    ) -> None:
         self.server = server
         self.show = show
         self.motion: Motion | None = None
@@ -60,8 +64,9 @@ class Timeline:
         with s.add_folder("Timeline"):
             self.info = s.add_markdown("No motion yet: plan one in a workflow tab.")
             self.play = s.add_button("Play", icon=viser.Icon.PLAYER_PLAY, disabled=True)
-            self.time = s.add_slider("Time [s]", min=0.0, max=1.0, step=0.01, initial_value=0.0,
-                                     disabled=True)
+            self.time = s.add_slider(
+                "Time [s]", min=0.0, max=1.0, step=0.01, initial_value=0.0, disabled=True
+            )
             self.speed = s.add_dropdown("Speed", options=SPEEDS, initial_value="1x")
             self.plots: list[viser.GuiUplotHandle] = []
         self.play.on_click(lambda _: self.toggle())
@@ -75,7 +80,7 @@ class Timeline:
         self.pause()
         self.motion = motion
         self.time.max = max(motion.duration, 0.01)
-        self.time.value = 0.0
+        self.time.value = 0.0  # type: ignore[misc]
         self.time.disabled = False
         self.play.disabled = False
         hits = int(motion.colliding.sum())
@@ -89,33 +94,57 @@ class Timeline:
     def _make_plots(self, m: Motion) -> list[viser.GuiUplotHandle]:
         t = m.times
         dof = m.positions.shape[1]
-        joint_series = [{"label": f"J{j + 1}", "stroke": JOINT_COLORS[j % 6], "width": 1.5}
-                        for j in range(dof)]
-        limit = {"label": "limit", "stroke": "#888888", "dash": [6, 4], "width": 1}
-        x = {"label": "t [s]"}
+        joint_series = [
+            uplot.Series(label=f"J{j + 1}", stroke=JOINT_COLORS[j % 6], width=1.5)
+            for j in range(dof)
+        ]
+        limit = uplot.Series(label="limit", stroke="#888888", dash=(6.0, 4.0), width=1)
+        neg_limit = uplot.Series(label="-limit", stroke="#888888", dash=(6.0, 4.0), width=1)
+        x = uplot.Series(label="t [s]")
         plots = []
         with self.server.gui.add_folder("Plots", expand_by_default=True) as folder:
             self._plot_folder = folder
-            plots.append(self.server.gui.add_uplot(
-                data=(t, *(m.positions[:, j] * DEG for j in range(dof))),
-                series=(x, *joint_series), title="Joint positions [deg]", aspect=1.6))
-            for name, values, lim in (("Joint velocities [% of limit]", m.velocities, m.velocity_limits),
-                                      ("Joint accelerations [% of limit]", m.accelerations,
-                                       m.acceleration_limits)):
+            plots.append(
+                self.server.gui.add_uplot(
+                    data=(t, *(m.positions[:, j] * DEG for j in range(dof))),
+                    series=(x, *joint_series),
+                    title="Joint positions [deg]",
+                    aspect=1.6,
+                )
+            )
+            for name, values, lim in (
+                ("Joint velocities [% of limit]", m.velocities, m.velocity_limits),
+                ("Joint accelerations [% of limit]", m.accelerations, m.acceleration_limits),
+            ):
                 pct = values / lim * 100.0
                 ones = np.full_like(t, 100.0)
-                plots.append(self.server.gui.add_uplot(
-                    data=(t, *(pct[:, j] for j in range(dof)), ones, -ones),
-                    series=(x, *joint_series, limit, {**limit, "label": "-limit"}),
-                    title=name, aspect=1.6))
+                plots.append(
+                    self.server.gui.add_uplot(
+                        data=(t, *(pct[:, j] for j in range(dof)), ones, -ones),
+                        series=(x, *joint_series, limit, neg_limit),
+                        title=name,
+                        aspect=1.6,
+                    )
+                )
             speed = m.tcp_speed * 1000.0
             top = float(max(speed.max(), 1.0)) * 1.05
-            plots.append(self.server.gui.add_uplot(
-                data=(t, speed, np.where(m.colliding, top, 0.0)),
-                series=(x, {"label": "TCP [mm/s]", "stroke": "#1f77b4", "width": 1.5},
-                        {"label": "collision", "stroke": "#d62728", "fill": "rgba(214,39,40,0.25)",
-                         "width": 1}),
-                title="TCP speed [mm/s] and collisions", aspect=1.6))
+            plots.append(
+                self.server.gui.add_uplot(
+                    data=(t, speed, np.where(m.colliding, top, 0.0)),
+                    series=(
+                        x,
+                        uplot.Series(label="TCP [mm/s]", stroke="#1f77b4", width=1.5),
+                        uplot.Series(
+                            label="collision",
+                            stroke="#d62728",
+                            fill="rgba(214,39,40,0.25)",
+                            width=1,
+                        ),
+                    ),
+                    title="TCP speed [mm/s] and collisions",
+                    aspect=1.6,
+                )
+            )
         return plots
 
     # -- playback -----------------------------------------------------------------------------
@@ -125,7 +154,7 @@ class Timeline:
             self.pause()
         elif self.motion is not None:
             if self.time.value >= self.motion.duration - 1e-9:
-                self.time.value = 0.0
+                self.time.value = 0.0  # type: ignore[misc]
             self._playing.set()
             self.play.label, self.play.icon = "Pause", viser.Icon.PLAYER_PAUSE
 
@@ -154,7 +183,7 @@ class Timeline:
                 continue
             factor = float(self.speed.value.rstrip("x"))
             t = min(self.time.value + dt * factor, m.duration)
-            self.time.value = round(t, 4)  # fires _on_time, which poses the robot
+            self.time.value = round(t, 4)  # type: ignore[misc]  # fires _on_time: poses the robot
             if t >= m.duration:
                 self.pause()
 

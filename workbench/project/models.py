@@ -184,7 +184,7 @@ class ProgramSpec(_Model):
 class Project(_Model):
     """A workbench project file."""
 
-    schema_version: Literal[1] = SCHEMA_VERSION
+    schema_version: Literal[1] = 1  # SCHEMA_VERSION
     name: str = "untitled"
     description: str = ""
     robot: Robot = Field(default_factory=lambda: Robot(preset="mz07"))

@@ -36,7 +36,9 @@ def load_mesh_file(path: str, base_dir: Path, scale: float, field: str) -> trime
     if not p.is_absolute():
         p = base_dir / p
     if not p.is_file():
-        raise MeshError(f"{field}: mesh file not found: {p}; fix the path (relative to the project file)")
+        raise MeshError(
+            f"{field}: mesh file not found: {p}; fix the path (relative to the project file)"
+        )
     try:
         mesh = trimesh.load(p, force="mesh")
     except Exception as exc:  # trimesh raises many types for broken files

@@ -25,8 +25,14 @@ from workbench.project.models import ProgramSpec
 from workbench.service.convert import DEG, MM, pose_to_matrix
 from workbench.service.robot_setup import RobotSetup
 
-EXPORT_FORMATS = {"rapid": ".mod", "krl": ".src", "ls": ".ls", "urscript": ".script", "csv": ".csv",
-                  "json": ".json"}
+EXPORT_FORMATS = {
+    "rapid": ".mod",
+    "krl": ".src",
+    "ls": ".ls",
+    "urscript": ".script",
+    "csv": ".csv",
+    "json": ".json",
+}
 Progress = Callable[[float, str], None]
 
 
@@ -62,8 +68,11 @@ class MotionPlan:
     def summary(self) -> str:
         """Return a one-paragraph human summary."""
         lines = [f"cycle time {self.cycle_time:.3f} s, {len(self.program.moves)} moves"]
-        lines.append("within joint limits" if self.limits_report.ok else
-                     f"{len(self.limits_report.violations)} limit violation(s)")
+        lines.append(
+            "within joint limits"
+            if self.limits_report.ok
+            else f"{len(self.limits_report.violations)} limit violation(s)"
+        )
         if self.collision_report.collision_free:
             lines.append("collision-free at every sample")
         else:
@@ -89,13 +98,17 @@ def build_program(spec: ProgramSpec, setup: RobotSetup, q_start: NDArray[np.floa
         if mv.joints is not None:
             q = np.asarray(mv.joints, float) * DEG
             if q.shape != (model.dof,):
-                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(mv.joints)}")
+                raise InputError(
+                    f"{where}.joints: expected {model.dof} values [deg], got {len(mv.joints)}"
+                )
             lo, hi = model.limits[:, 0], model.limits[:, 1]
             bad = np.flatnonzero((q < lo) | (q > hi))
             if bad.size:
                 j = int(bad[0])
-                raise InputError(f"{where}.joints[{j}]: {mv.joints[j]} deg is outside"
-                                 f" [{lo[j] / DEG:.1f}, {hi[j] / DEG:.1f}] deg")
+                raise InputError(
+                    f"{where}.joints[{j}]: {mv.joints[j]} deg is outside"
+                    f" [{lo[j] / DEG:.1f}, {hi[j] / DEG:.1f}] deg"
+                )
             moves.append(Move.joint(q, speed=mv.speed / 100.0, zone=zone, name=mv.name))
             q_prev = q
             continue
@@ -129,12 +142,18 @@ def plan_motion(
     model = setup.model
     report(0.0, "moves through IK")
     program = build_program(spec, setup, q_start)
-    path = plan_program(model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp)
+    path = plan_program(
+        model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp
+    )
     report(0.2, "jerk-limited timing")
     traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
-    limits = validate_trajectory(traj, max_velocity=model.max_velocity,
-                                 max_acceleration=model.max_acceleration, max_jerk=model.max_jerk,
-                                 position_limits=model.limits)
+    limits = validate_trajectory(
+        traj,
+        max_velocity=model.max_velocity,
+        max_acceleration=model.max_acceleration,
+        max_jerk=model.max_jerk,
+        position_limits=model.limits,
+    )
     times, q, qd, qdd = traj.sample(dt)
     flange = setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp
     tcp = flange[:, :3, 3]
@@ -148,10 +167,14 @@ def plan_motion(
             report(0.3 + 0.7 * i / n, f"collision check {i}/{n}")
     hits = np.flatnonzero(colliding)
     first = checker.check(q[hits[0]], distance=False) if hits.size else None
-    path_report = PathReport(collision_free=not hits.size,
-                             first_index=int(hits[0]) if hits.size else None, first_report=first,
-                             min_distance=0.0 if hits.size else float("nan"), samples=n,
-                             colliding_indices=tuple(int(h) for h in hits))
+    path_report = PathReport(
+        collision_free=not hits.size,
+        first_index=int(hits[0]) if hits.size else None,
+        first_report=first,
+        min_distance=0.0 if hits.size else float("nan"),
+        samples=n,
+        colliding_indices=tuple(int(h) for h in hits),
+    )
     report(1.0, "done")
     return MotionPlan(program, traj, times, q, qd, qdd, tcp_speed, colliding, limits, path_report)
 

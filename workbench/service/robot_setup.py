@@ -45,7 +45,9 @@ def build_robot_model(spec: Robot, base_dir: Path) -> Any:
     if spec.preset is not None:
         return DHRobot.mz07()
     if spec.dh is not None:
-        rows = np.array([[r.theta_offset * DEG, r.d * MM, r.a * MM, r.alpha * DEG] for r in spec.dh])
+        rows = np.array(
+            [[r.theta_offset * DEG, r.d * MM, r.a * MM, r.alpha * DEG] for r in spec.dh]
+        )
         limits = np.array([[r.min * DEG, r.max * DEG] for r in spec.dh])
         return DHRobot(rows, limits, name=spec.name)
     from workbench.kinematics import URDFRobot
@@ -62,7 +64,9 @@ def build_robot_model(spec: Robot, base_dir: Path) -> Any:
     return URDFRobot.from_file(p)
 
 
-def build_tool_mesh(tool: Tool, T_flange_tcp: NDArray[np.float64], base_dir: Path) -> trimesh.Trimesh | None:
+def build_tool_mesh(
+    tool: Tool, T_flange_tcp: NDArray[np.float64], base_dir: Path
+) -> trimesh.Trimesh | None:
     """Return the tool's mesh in the flange frame [m]: the file, a box, or a rod to the TCP."""
     if tool.mesh is not None:
         return load_mesh_file(tool.mesh, base_dir, tool.mesh_scale, "tool.mesh")
@@ -77,7 +81,9 @@ def build_tool_mesh(tool: Tool, T_flange_tcp: NDArray[np.float64], base_dir: Pat
         return None
     # A rod from the flange to the TCP, a little short of it so that touching a part at the
     # TCP is not a collision of the tool.
-    rod = trimesh.creation.cylinder(radius=0.012, segment=[[0, 0, 0], tip * (1 - 0.01 / length)])
+    rod = trimesh.creation.cylinder(
+        radius=0.012, segment=np.stack([np.zeros(3), tip * (1 - 0.01 / length)])
+    )
     return rod
 
 

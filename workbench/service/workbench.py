@@ -183,15 +183,20 @@ class Workbench:
         """
         T = _as_pose(T_world_tcp, "T_world_tcp")
         T_base_flange = (
-            invert_transform(self._robot.T_world_base) @ T @ invert_transform(self._robot.T_flange_tcp)
+            invert_transform(self._robot.T_world_base)
+            @ T
+            @ invert_transform(self._robot.T_flange_tcp)
         )
         model = self.robot
         if getattr(model, "is_analytic", False):
             # One solution per arm configuration (branch), each with the joint turns nearest
             # the current joints; labels name the branch, so they stay stable as the arm moves.
             qb, valid = model.ik_batch(T_base_flange[None], q_near=self._q)
-            found = [IKSolution(q=np.array(qb[0, b]), label=branch_name(b))
-                     for b in range(qb.shape[1]) if valid[0, b]]
+            found = [
+                IKSolution(q=np.array(qb[0, b]), label=branch_name(b))
+                for b in range(qb.shape[1])
+                if valid[0, b]
+            ]
         else:
             rows = np.asarray(model.ik(T_base_flange, q_near=self._q), float).reshape(-1, model.dof)
             found = [IKSolution(q=row, label=f"solution {k + 1}") for k, row in enumerate(rows)]
@@ -202,7 +207,9 @@ class Workbench:
         found.sort(key=lambda s: float(np.linalg.norm(s.q - self._q)))
         return found
 
-    def move_tcp(self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None) -> NDArray[np.float64]:
+    def move_tcp(
+        self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None
+    ) -> NDArray[np.float64]:
         """Move the TCP to `T_world_tcp` and return the new joints [rad].
 
         `configuration` picks a solution by index or label; by default the one nearest the
@@ -262,8 +269,11 @@ class Workbench:
             raise InputError("program: the project has no program; add a 'program' with moves")
         if not (np.isfinite(dt) and 0 < dt <= 0.1):
             raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
-        q_start = self._q if spec.start is None else _as_vector(
-            np.asarray(spec.start, float) * DEG, self.robot.dof, "program.start")
+        q_start = (
+            self._q
+            if spec.start is None
+            else _as_vector(np.asarray(spec.start, float) * DEG, self.robot.dof, "program.start")
+        )
         plan = plan_motion(spec, self._robot, self._checker, q_start, dt=dt, progress=progress)
         with self._lock:
             self._plan = plan
