@@ -62,32 +62,52 @@ def browser() -> Iterator[object]:
 
 
 @pytest.fixture
-def app() -> Iterator[WorkbenchApp]:
-    wb = Workbench.open(ROOT / "projects" / "mz07_cell.json")
-    port = free_port()
-    server = start_server("127.0.0.1", port)
-    application = WorkbenchApp(server, wb)
-    try:
-        yield application
-    finally:
-        server.stop()
+def launch(browser: object, request: pytest.FixtureRequest) -> Iterator[object]:
+    """Return `launch(project_path) -> (app, page)`: a server on a free port and a page on it.
+
+    Everything launched is stopped after the test; a failing test saves a screenshot and the
+    page HTML of every page under tests/e2e/artifacts/.
+    """
+    opened: list[tuple[WorkbenchApp, object, object]] = []
+
+    def _launch(project: Path) -> tuple[WorkbenchApp, object]:
+        wb = Workbench.open(project)
+        server = start_server("127.0.0.1", free_port())
+        application = WorkbenchApp(server, wb)
+        context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
+        pg = context.new_page()
+        opened.append((application, context, pg))
+        pg.goto(
+            f"http://127.0.0.1:{server.get_port()}/?hideViserLogo"
+            "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45"
+        )
+        wait_for(lambda: len(server.get_clients()) > 0, what="the page to connect")
+        pg.get_by_role("tab", name="Robot").wait_for(timeout=20_000)
+        return application, pg
+
+    yield _launch
+    rep = getattr(request.node, "rep_call", None)
+    for k, (application, context, pg) in enumerate(opened):
+        if rep is not None and rep.failed:
+            ARTIFACTS.mkdir(exist_ok=True)
+            pg.screenshot(path=str(ARTIFACTS / f"{request.node.name}-{k}.png"))  # type: ignore[attr-defined]
+            (ARTIFACTS / f"{request.node.name}-{k}.html").write_text(pg.content())  # type: ignore[attr-defined]
+        context.close()  # type: ignore[attr-defined]
+        application.timeline.close()
+        application.server.stop()
 
 
 @pytest.fixture
-def page(browser: object, app: WorkbenchApp, request: pytest.FixtureRequest) -> Iterator[object]:
-    context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
-    pg = context.new_page()
-    port = app.server.get_port()
-    pg.goto(
-        f"http://127.0.0.1:{port}/?hideViserLogo"
-        "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45"
-    )
-    wait_for(lambda: len(app.server.get_clients()) > 0, what="the page to connect")
-    pg.get_by_role("tab", name="Robot").wait_for(timeout=20_000)
-    yield pg
-    rep = getattr(request.node, "rep_call", None)
-    if rep is not None and rep.failed:
-        ARTIFACTS.mkdir(exist_ok=True)
-        pg.screenshot(path=str(ARTIFACTS / f"{request.node.name}.png"))
-        (ARTIFACTS / f"{request.node.name}.html").write_text(pg.content())
-    context.close()
+def opened(launch) -> tuple[WorkbenchApp, object]:  # type: ignore[no-untyped-def]
+    """The example MZ07 cell, served and opened in Chromium."""
+    return launch(ROOT / "projects" / "mz07_cell.json")  # type: ignore[no-any-return]
+
+
+@pytest.fixture
+def app(opened: tuple[WorkbenchApp, object]) -> WorkbenchApp:
+    return opened[0]
+
+
+@pytest.fixture
+def page(opened: tuple[WorkbenchApp, object]) -> object:
+    return opened[1]

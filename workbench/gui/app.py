@@ -11,8 +11,11 @@ from pathlib import Path
 import viser
 
 from workbench.errors import ServerError
+from workbench.gui.assembly_panel import AssemblyPanel
+from workbench.gui.bending_panel import BendingPanel
 from workbench.gui.jog_panel import JogPanel
 from workbench.gui.motion_panel import MotionPanel
+from workbench.gui.polishing_panel import PolishingPanel
 from workbench.gui.project_panel import ProjectPanel
 from workbench.gui.scene import RobotScene
 from workbench.gui.timeline import Timeline
@@ -63,6 +66,9 @@ class WorkbenchApp:
         self.tabs = server.gui.add_tab_group()
         self.robot_tab = self.tabs.add_tab("Robot")
         self.motion_tab = self.tabs.add_tab("Motion")
+        self.bending_tab = self.tabs.add_tab("Bending")
+        self.assembly_tab = self.tabs.add_tab("Assembly")
+        self.polishing_tab = self.tabs.add_tab("Polishing")
         self.project_tab = self.tabs.add_tab("Project")
         self.scene = RobotScene(server, wb)
         self.timeline = Timeline(server, show=self.scene.show)
@@ -70,8 +76,17 @@ class WorkbenchApp:
             self.jog = JogPanel(server, wb, on_moved=self.scene.update)
         with self.motion_tab:
             self.motion = MotionPanel(server, wb, self.timeline)
+        self._build_workflows()
         with self.project_tab:
             self.project_panel = ProjectPanel(server, wb, on_replaced=self.rebuild)
+
+    def _build_workflows(self) -> None:
+        with self.bending_tab:
+            self.bending = BendingPanel(self)
+        with self.assembly_tab:
+            self.assembly = AssemblyPanel(self)
+        with self.polishing_tab:
+            self.polishing = PolishingPanel(self)
 
     def rebuild(self) -> None:
         """Recreate the scene and jog panel after the workbench switched projects."""
@@ -79,12 +94,15 @@ class WorkbenchApp:
             self.timeline.pause()
             self.jog.remove()
             self.motion.remove()
+            for panel in (self.bending, self.assembly, self.polishing):
+                panel.remove()
             self.scene.clear()
             self.scene.build()
             with self.robot_tab:
                 self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
             with self.motion_tab:
                 self.motion = MotionPanel(self.server, self.wb, self.timeline)
+            self._build_workflows()
 
 
 def serve(project: str | Path | None, *, host: str = "127.0.0.1", port: int = 8080) -> None:

@@ -58,6 +58,7 @@ class Timeline:
         self.server = server
         self.show = show
         self.motion: Motion | None = None
+        self._follow: Callable[[float], None] | None = None
         self._playing = threading.Event()
         self._stop = threading.Event()
         s = server.gui
@@ -75,10 +76,15 @@ class Timeline:
         self._thread.start()
 
     # -- loading --------------------------------------------------------------------------
-    def load(self, motion: Motion) -> None:
-        """Show `motion` on the timeline and its plots, at t = 0, paused."""
+    def load(self, motion: Motion, *, follow: Callable[[float], None] | None = None) -> None:
+        """Show `motion` on the timeline and its plots, at t = 0, paused.
+
+        `follow(t)` is called whenever the robot is posed at time `t` [s], for what moves with
+        it (a carried part, a tool path marker); a later `load` replaces it.
+        """
         self.pause()
         self.motion = motion
+        self._follow = follow
         self.time.max = max(motion.duration, 0.01)
         self.time.value = 0.0  # type: ignore[misc]
         self.time.disabled = False
@@ -89,7 +95,14 @@ class Timeline:
         for p in self.plots:
             p.remove()
         self.plots = self._make_plots(motion)
-        self.show(motion.at(0.0))
+        self._pose(0.0)
+
+    def _pose(self, t: float) -> None:
+        if self.motion is None:
+            return
+        self.show(self.motion.at(t))
+        if self._follow is not None:
+            self._follow(t)
 
     def _make_plots(self, m: Motion) -> list[viser.GuiUplotHandle]:
         t = m.times
@@ -169,8 +182,7 @@ class Timeline:
         return self._playing.is_set()
 
     def _on_time(self) -> None:
-        if self.motion is not None:
-            self.show(self.motion.at(self.time.value))
+        self._pose(float(self.time.value))
 
     def _run(self) -> None:
         last = time.monotonic()

@@ -8,47 +8,18 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, model_validator
+from pydantic import Field, model_validator
+
+from workbench.project.assembly import AssemblySpec
+from workbench.project.bending import BendingSpec
+from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
+from workbench.project.polishing import PolishingSpec
 
 SCHEMA_VERSION = 1
 PRESETS = ("mz07",)
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, validate_assignment=True)
-
-
-def _vector(n: int, what: str) -> AfterValidator:
-    def check(v: list[float]) -> list[float]:
-        if len(v) != n:
-            raise ValueError(f"expected {n} numbers {what}, got {len(v)}")
-        return v
-
-    return AfterValidator(check)
-
-
-Vec3mm = Annotated[list[float], _vector(3, "[mm, mm, mm]")]
-Vec3deg = Annotated[list[float], _vector(3, "[roll, pitch, yaw] in degrees")]
-Positive = Annotated[float, Field(gt=0)]
-
-
-def _color(v: list[int]) -> list[int]:
-    if len(v) != 3 or any(not 0 <= c <= 255 for c in v):
-        raise ValueError(f"expected 3 integers 0..255 [r, g, b], got {v}")
-    return v
-
-
-Color = Annotated[list[int], AfterValidator(_color)]
-
-
-class Pose(_Model):
-    """A rigid pose: position [mm] and R = Rz(yaw) Ry(pitch) Rx(roll) [deg]."""
-
-    xyz: Vec3mm = Field(default_factory=lambda: [0.0, 0.0, 0.0])
-    rpy: Vec3deg = Field(default_factory=lambda: [0.0, 0.0, 0.0])
-
-
-class DHRow(_Model):
+class DHRow(StrictModel):
     """One standard DH row Rz(theta + offset) Tz(d) Tx(a) Rx(alpha) with its joint limits."""
 
     theta_offset: float = 0.0  # deg
@@ -65,7 +36,7 @@ class DHRow(_Model):
         return self
 
 
-class Robot(_Model):
+class Robot(StrictModel):
     """The robot: exactly one of `preset`, `dh` or `urdf`, placed at `base` in the world."""
 
     name: str = "robot"
@@ -92,7 +63,7 @@ class Robot(_Model):
         return self
 
 
-class Tool(_Model):
+class Tool(StrictModel):
     """The tool on the flange: TCP pose in the flange frame, optional mesh or box shape."""
 
     name: str = "tool"
@@ -103,7 +74,7 @@ class Tool(_Model):
     color: Color = Field(default_factory=lambda: [200, 200, 210])
 
 
-class CellObject(_Model):
+class CellObject(StrictModel):
     """A named obstacle or fixture of the cell: a box, a cylinder or a mesh, at `pose`."""
 
     name: str
@@ -128,7 +99,7 @@ class CellObject(_Model):
         return self
 
 
-class Cell(_Model):
+class Cell(StrictModel):
     """Everything around the robot."""
 
     objects: list[CellObject] = Field(default_factory=list)
@@ -143,7 +114,7 @@ class Cell(_Model):
         return self
 
 
-class MoveSpec(_Model):
+class MoveSpec(StrictModel):
     """One move of a robot program: a joint move (PTP/MoveJ) or a linear move (LIN/MoveL)."""
 
     name: str = ""
@@ -164,7 +135,7 @@ class MoveSpec(_Model):
         return self
 
 
-class ProgramSpec(_Model):
+class ProgramSpec(StrictModel):
     """A robot program: start joints and moves; planned into a jerk-limited trajectory."""
 
     name: str = "main"
@@ -181,7 +152,7 @@ class ProgramSpec(_Model):
         return self
 
 
-class Project(_Model):
+class Project(StrictModel):
     """A workbench project file."""
 
     schema_version: Literal[1] = 1  # SCHEMA_VERSION
@@ -191,3 +162,6 @@ class Project(_Model):
     tool: Tool = Field(default_factory=Tool)
     cell: Cell = Field(default_factory=Cell)
     program: ProgramSpec | None = None
+    bending: BendingSpec | None = None
+    assembly: AssemblySpec | None = None
+    polishing: PolishingSpec | None = None

@@ -22,9 +22,12 @@ from workbench.project import (
     project_to_json,
     save_project,
 )
+from workbench.service.assembly import AssemblyService
+from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell
 from workbench.service.convert import DEG
 from workbench.service.motion_plan import MotionPlan, Progress, export_text, plan_motion
+from workbench.service.polishing import PolishingService
 from workbench.service.robot_setup import RobotSetup, build_robot
 
 
@@ -104,6 +107,7 @@ class Workbench:
         self._q = robot.q0.copy()
         self._report: CollisionReport | None = None
         self._plan: MotionPlan | None = None
+        self._workflows: dict[str, Any] = {}
 
     def replace_project(self, project: Project) -> None:
         """Switch to another project; on any error the current one stays as it was."""
@@ -256,6 +260,28 @@ class Workbench:
             if self._report is None:
                 self._report = self._checker.check(self._q)
             return self._report
+
+    # -- workflows --------------------------------------------------------------------
+    def _workflow(self, name: str, cls: type) -> Any:
+        with self._lock:
+            if name not in self._workflows:
+                self._workflows[name] = cls(self)
+            return self._workflows[name]
+
+    @property
+    def bending(self) -> BendingService:
+        """Return the press-brake bending workflow of the open project (seed 000)."""
+        return self._workflow("bending", BendingService)  # type: ignore[no-any-return]
+
+    @property
+    def assembly(self) -> AssemblyService:
+        """Return the virtual-assembly workflow of the open project (seed 003)."""
+        return self._workflow("assembly", AssemblyService)  # type: ignore[no-any-return]
+
+    @property
+    def polishing(self) -> PolishingService:
+        """Return the polishing workflow of the open project (seed 004)."""
+        return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:

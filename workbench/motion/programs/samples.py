@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import InputError
 from workbench.atomic_file import atomic_write_text
+from workbench.errors import InputError
 
 FORMAT = "workbench.joint_samples"
 

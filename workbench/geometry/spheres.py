@@ -1,0 +1,207 @@
+"""Enveloping spheres of a link mesh, fitted by particle swarm optimisation (seed 001, step 3).
+
+A particle is a set of k sphere centres. It is decoded to radii by assigning every cover
+point (vertices and area-weighted surface samples) to its nearest centre; each radius is the
+farthest assigned point, so every particle covers every point (the constraint holds by
+construction) and the objective is the total sphere volume (small overshoot).
+
+After the swarm, containment is made exact, not sampled: every triangle is assigned to a
+sphere that contains its three vertices (a ball is convex, so it then contains the whole
+triangle) and radii are inflated to the farthest assigned vertex. The union of spheres thus
+contains the whole surface. It need not contain a closed mesh's interior far from the
+surface (an obstacle entirely inside a link, never touching its surface, is not caught).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.errors import InputError
+from workbench.geometry.lbvh import check_mesh
+from workbench.geometry.sdf import is_watertight
+
+FloatArray = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class SphereSet:
+    """Spheres enveloping a mesh: centres (k,3) [m], radii (k,) [m] and fit figures.
+
+    coverage: fraction of the check points (vertices and dense surface samples) inside the
+    union (1.0 by construction). volume_overshoot: (union volume - mesh volume) / mesh
+    volume, Monte Carlo estimate; NaN for an open mesh.
+    """
+
+    centres: FloatArray
+    radii: FloatArray
+    coverage: float
+    union_volume: float
+    mesh_volume: float
+    volume_overshoot: float
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Return whether each point (M,3) [m] lies in at least one sphere."""
+        p = np.asarray(points, dtype=float)
+        d2 = np.sum((p[:, None, :] - self.centres[None]) ** 2, axis=2)
+        return np.any(d2 <= self.radii[None] ** 2, axis=1)
+
+
+def _surface_samples(tri: FloatArray, n: int, rng: np.random.Generator) -> FloatArray:
+    area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    prob = area / area.sum() if area.sum() > 0 else np.full(len(tri), 1.0 / len(tri))
+    t = rng.choice(len(tri), size=n, p=prob)
+    u, v = rng.random(n), rng.random(n)
+    flip = u + v > 1
+    u[flip], v[flip] = 1 - u[flip], 1 - v[flip]
+    a = tri[t, 0]
+    return a + u[:, None] * (tri[t, 1] - a) + v[:, None] * (tri[t, 2] - a)
+
+
+def _decode(centres: FloatArray, pts: FloatArray) -> FloatArray:
+    """Return radii (P, k) covering `pts` (S,3) by nearest-centre assignment, centres (P,k,3)."""
+    n_p, k = centres.shape[:2]
+    d2 = (
+        np.einsum("pkd,pkd->pk", centres, centres)[:, :, None]
+        - 2 * centres @ pts.T
+        + np.sum(pts**2, axis=1)[None, None]
+    )
+    nearest = np.argmin(d2, axis=1)  # (P, S)
+    dmin = np.take_along_axis(d2, nearest[:, None, :], axis=1)[:, 0]
+    r2 = np.zeros(n_p * k)
+    np.maximum.at(
+        r2, (np.arange(n_p)[:, None] * k + nearest).ravel(), np.maximum(dmin, 0.0).ravel()
+    )
+    return np.sqrt(r2.reshape(n_p, k))
+
+
+def _split_long(tri: FloatArray, max_edge: float, limit: int = 2_000_000) -> FloatArray:
+    """Return the same surface as triangles (T',3,3) with every edge <= max_edge [m].
+
+    Midpoint subdivision (1 -> 4) of the long triangles only; the union of the pieces is
+    the original triangle, so containing each piece contains the triangle.
+    """
+    for _ in range(24):
+        edge = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
+        long = edge > max_edge
+        if not np.any(long) or len(tri) + 3 * int(long.sum()) > limit:
+            break
+        t = tri[long]
+        a, b, c = t[:, 0], t[:, 1], t[:, 2]
+        ab, bc, ca = (a + b) / 2, (b + c) / 2, (c + a) / 2
+        pieces = np.stack(
+            [np.stack(x, axis=1) for x in ((a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca))]
+        )
+        tri = np.concatenate([tri[~long], pieces.reshape(-1, 3, 3)])
+    return tri
+
+
+def _contain_triangles(tri: FloatArray, centres: FloatArray, scale: float) -> FloatArray:
+    """Return radii (k,) such that each triangle lies in one sphere (all three vertices in it)."""
+    need = np.zeros((len(tri), len(centres)))
+    for i in range(3):  # farthest vertex of each triangle from each centre, (T, k)
+        np.maximum(need, np.linalg.norm(tri[:, i, None, :] - centres[None], axis=2), out=need)
+    radii = np.zeros(len(centres))
+    best: FloatArray | None = None
+    for _ in range(4):  # reassign to spheres that already fit, then shrink to what is needed
+        extra = np.maximum(need - radii[None], 0.0)
+        j = np.argmin(extra * 1e6 + need, axis=1)  # least inflation first, then tightest
+        radii = np.zeros(len(centres))
+        np.maximum.at(radii, j, need[np.arange(len(tri)), j])
+        if best is None or np.sum(radii**3) < np.sum(best**3):
+            best = radii.copy()
+    assert best is not None
+    return best * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
+
+
+def fit_spheres(
+    mesh: Any,
+    count: int,
+    *,
+    seed: int = 0,
+    iterations: int = 60,
+    particles: int = 24,
+    samples: int = 2000,
+) -> SphereSet:
+    """Return `count` spheres enveloping `mesh` (trimesh.Trimesh or (vertices, faces)) [m].
+
+    iterations/particles: PSO budget. samples: surface points the swarm must cover (besides
+    vertices). Every triangle is contained exactly afterwards. Raises InputError for
+    count <= 0, MeshError for an empty mesh.
+    """
+    if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
+        v, f = check_mesh(mesh.vertices, mesh.faces)
+    elif isinstance(mesh, tuple) and len(mesh) == 2:
+        v, f = check_mesh(*mesh)
+    else:
+        raise InputError(
+            f"mesh must be a trimesh.Trimesh or a (vertices, faces) tuple, got {type(mesh).__name__}"
+        )
+    if not isinstance(count, int | np.integer) or count <= 0:
+        raise InputError(f"count (spheres per link) must be a positive integer, got {count!r}")
+    if iterations < 0 or particles < 1 or samples < 0:
+        raise InputError(
+            f"iterations >= 0, particles >= 1, samples >= 0 required; got {iterations}, {particles}, {samples}"
+        )
+    rng = np.random.default_rng(seed)
+    tri = v[f]
+    scale = float(np.ptp(v, axis=0).max()) or 1.0
+    used_v = v[np.unique(f)]
+    cover = np.concatenate(
+        [used_v[rng.permutation(len(used_v))[:samples]], _surface_samples(tri, samples, rng)]
+    )
+    lo, hi = cover.min(axis=0), cover.max(axis=0)
+    # Initial swarm: particle 0 from a few Lloyd iterations, the others random cover points.
+    x = cover[rng.integers(0, len(cover), size=(particles, count))] + rng.normal(
+        0, 0.02 * scale, (particles, count, 3)
+    )
+    seeds = cover[rng.choice(len(cover), size=count, replace=len(cover) < count)]
+    for _ in range(10):
+        lab = np.argmin(np.sum((cover[:, None] - seeds[None]) ** 2, axis=2), axis=1)
+        for j in range(count):  # count is small (spheres per link)
+            if np.any(lab == j):
+                seeds[j] = cover[lab == j].mean(axis=0)
+    x[0] = seeds
+    vel = np.zeros_like(x)
+    cost = np.sum(_decode(x, cover) ** 3, axis=1)
+    pbest, pcost = x.copy(), cost.copy()
+    g = int(np.argmin(pcost))
+    for _ in range(iterations):
+        r1, r2 = rng.random(x.shape), rng.random(x.shape)
+        vel = 0.72 * vel + 1.49 * r1 * (pbest - x) + 1.49 * r2 * (pbest[g] - x)
+        x = np.clip(x + vel, lo, hi)
+        cost = np.sum(_decode(x, cover) ** 3, axis=1)
+        better = cost < pcost
+        pbest[better], pcost[better] = x[better], cost[better]
+        g = int(np.argmin(pcost))
+    centres = pbest[g]
+    r_swarm = _decode(centres[None], cover)[0]
+    # Long thin triangles (a cylinder's sides) would force huge spheres: split them first.
+    pieces = _split_long(
+        tri, 0.5 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale
+    )
+    radii = _contain_triangles(pieces, centres, scale)
+    keep = radii > 1e-12 * scale * 2
+    if not np.all(keep):  # spheres left with no triangle: drop them
+        centres, radii = centres[keep], radii[keep]
+    checks = np.concatenate([v[np.unique(f)], _surface_samples(tri, 10 * max(samples, 100), rng)])
+    inside = np.any(
+        np.sum((checks[:, None] - centres[None]) ** 2, axis=2) <= radii[None] ** 2, axis=1
+    )
+    mesh_volume = float(
+        abs(np.sum(np.einsum("ij,ij->i", tri[:, 0], np.cross(tri[:, 1], tri[:, 2])))) / 6.0
+    )
+    blo, bhi = (centres - radii[:, None]).min(axis=0), (centres + radii[:, None]).max(axis=0)
+    mc = rng.uniform(blo, bhi, size=(20000, 3))
+    in_union = np.any(
+        np.sum((mc[:, None] - centres[None]) ** 2, axis=2) <= radii[None] ** 2, axis=1
+    )
+    union_volume = float(np.prod(bhi - blo) * in_union.mean())
+    closed = is_watertight(v, f) and mesh_volume > 1e-12 * scale**3
+    overshoot = (union_volume - mesh_volume) / mesh_volume if closed else float("nan")
+    return SphereSet(
+        centres, radii, float(inside.mean()), union_volume, mesh_volume, float(overshoot)
+    )

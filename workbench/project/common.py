@@ -1,0 +1,42 @@
+"""Building blocks of the project file's models: strict base model, vectors, poses, colours."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+
+class StrictModel(BaseModel):
+    """Base of every project model: unknown fields and non-finite numbers are errors."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, validate_assignment=True)
+
+
+def _vector(n: int, what: str) -> AfterValidator:
+    def check(v: list[float]) -> list[float]:
+        if len(v) != n:
+            raise ValueError(f"expected {n} numbers {what}, got {len(v)}")
+        return v
+
+    return AfterValidator(check)
+
+
+Vec3mm = Annotated[list[float], _vector(3, "[mm, mm, mm]")]
+Vec3deg = Annotated[list[float], _vector(3, "[roll, pitch, yaw] in degrees")]
+Positive = Annotated[float, Field(gt=0)]
+
+
+def _color(v: list[int]) -> list[int]:
+    if len(v) != 3 or any(not 0 <= c <= 255 for c in v):
+        raise ValueError(f"expected 3 integers 0..255 [r, g, b], got {v}")
+    return v
+
+
+Color = Annotated[list[int], AfterValidator(_color)]
+
+
+class Pose(StrictModel):
+    """A rigid pose: position [mm] and R = Rz(yaw) Ry(pitch) Rx(roll) [deg]."""
+
+    xyz: Vec3mm = Field(default_factory=lambda: [0.0, 0.0, 0.0])
+    rpy: Vec3deg = Field(default_factory=lambda: [0.0, 0.0, 0.0])
