@@ -1,0 +1,167 @@
+"""LBVH against brute force (every triangle) and trimesh.proximity."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from workbench.errors import InputError, MeshError
+from workbench.geometry.distance import closest_points_on_triangles
+from workbench.geometry.lbvh import LBVH
+
+
+def _scene() -> trimesh.Trimesh:
+    """A sphere and a disjoint box: closed, with small and large triangles."""
+    sphere = trimesh.creation.icosphere(subdivisions=3, radius=0.5)
+    box = trimesh.creation.box((0.4, 0.8, 0.3))
+    box.apply_translation((1.0, 0.1, 0.05))
+    return trimesh.util.concatenate([sphere, box])
+
+
+def _brute_closest(v: np.ndarray, f: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    tri = v[f]
+    d = np.empty((len(p), len(f)))
+    for i in range(0, len(p), 64):  # chunks of queries against every triangle
+        cp = closest_points_on_triangles(
+            p[i : i + 64, None, :], tri[None, :, 0], tri[None, :, 1], tri[None, :, 2]
+        )
+        d[i : i + 64] = np.linalg.norm(cp - p[i : i + 64, None, :], axis=2)
+    return d.min(axis=1), d
+
+
+def _brute_crossings(
+    v: np.ndarray, f: np.ndarray, o: np.ndarray, direction: np.ndarray
+) -> np.ndarray:
+    a, b, c = (v[f][:, k][None] for k in range(3))
+    e1, e2 = b - a, c - a
+    dv = np.broadcast_to(direction, (len(o), f.shape[0], 3))
+    pv = np.cross(dv, e2)
+    det = np.sum(e1 * pv, axis=2)
+    tv = o[:, None, :] - a
+    u = np.sum(tv * pv, axis=2) / det
+    qv = np.cross(tv, e1)
+    w = np.sum(dv * qv, axis=2) / det
+    t = np.sum(e2 * qv, axis=2) / det
+    return np.sum((u >= 0) & (w >= 0) & (u + w <= 1) & (t > 0), axis=1)
+
+
+def test_tree_structure_is_a_valid_bvh() -> None:
+    m = _scene()
+    bvh = LBVH(m.vertices, m.faces)
+    n, k = bvh.n, bvh.n_internal
+    children = np.concatenate([bvh.left, bvh.right])
+    # Every node except the root is the child of exactly one internal node.
+    assert np.array_equal(np.sort(children), np.arange(1, n + k))
+    # Each internal node's box is the union of its children's boxes; leaves bound triangles.
+    np.testing.assert_array_equal(bvh.lo[:k], np.minimum(bvh.lo[bvh.left], bvh.lo[bvh.right]))
+    np.testing.assert_array_equal(bvh.hi[:k], np.maximum(bvh.hi[bvh.left], bvh.hi[bvh.right]))
+    tri = np.stack([bvh.a, bvh.b, bvh.c], axis=1)
+    np.testing.assert_array_equal(bvh.lo[k:], tri.min(axis=1))
+    # Node ranges split at the Karras split position: left covers [first, g], right [g+1, last].
+    size = np.concatenate([bvh.last - bvh.first + 1, np.ones(n, dtype=int)])
+    np.testing.assert_array_equal(size[:k], size[bvh.left] + size[bvh.right])
+    # The 8-wide collapse references every leaf exactly once.
+    leaves = -bvh.wide_child[bvh.wide_child <= -2] - 2
+    assert np.array_equal(np.sort(leaves), np.arange(n))
+
+
+def test_closest_points_match_brute_force_and_trimesh() -> None:
+    rng = np.random.default_rng(0)
+    m = _scene()
+    bvh = LBVH(m.vertices, m.faces)
+    p = rng.uniform(m.bounds[0] - 0.3, m.bounds[1] + 0.3, (600, 3))
+    cp, d, tid = bvh.closest_points(p)
+    brute, all_d = _brute_closest(m.vertices, m.faces, p)
+    np.testing.assert_allclose(d, brute, rtol=0, atol=1e-12)
+    # The returned triangle is one of the closest, and the point lies on it.
+    np.testing.assert_allclose(all_d[np.arange(len(p)), tid], brute, atol=1e-12)
+    np.testing.assert_allclose(np.linalg.norm(cp - p, axis=1), d, atol=1e-12)
+    cp2, d2, _ = trimesh.proximity.closest_point(m, p[:300])
+    np.testing.assert_allclose(d[:300], d2, atol=1e-9)
+    np.testing.assert_allclose(cp[:300], cp2, atol=1e-7)
+
+
+def test_ray_crossings_match_brute_force_and_containment() -> None:
+    rng = np.random.default_rng(0)
+    m = _scene()
+    bvh = LBVH(m.vertices, m.faces)
+    p = rng.uniform(m.bounds[0] - 0.1, m.bounds[1] + 0.1, (800, 3))
+    direction = np.array([1.0, 0.0123, 0.0071])
+    ours = bvh.ray_crossings(p, direction)
+    np.testing.assert_array_equal(ours, _brute_crossings(m.vertices, m.faces, p, direction))
+    np.testing.assert_array_equal(ours % 2 == 1, m.contains(p))
+
+
+def test_equal_centroids_use_the_index_augmented_key() -> None:
+    """Many triangles share one centroid (one Morton code): the tree must still be exact."""
+    rng = np.random.default_rng(0)
+    base = np.array([[0.1, 0, 0], [-0.05, 0.08, 0], [-0.05, -0.08, 0]])
+    rots = trimesh.transformations.random_rotation_matrix
+    tris = np.stack([base @ rots(rng.random(3))[:3, :3].T for _ in range(300)])
+    tris = np.concatenate([tris, tris[:50] + 1.0])  # a second cluster, so the AABB is not tiny
+    v, f = tris.reshape(-1, 3), np.arange(len(tris) * 3).reshape(-1, 3)
+    bvh = LBVH(v, f)
+    p = rng.uniform(-0.3, 1.3, (300, 3))
+    _, d, _ = bvh.closest_points(p)
+    np.testing.assert_allclose(d, _brute_closest(v, f, p)[0], atol=1e-12)
+
+
+def test_duplicate_and_degenerate_triangles() -> None:
+    rng = np.random.default_rng(0)
+    m = _scene()
+    v = np.concatenate([m.vertices, [[2.0, 2.0, 2.0], [2.5, 2.0, 2.0], [3.0, 2.0, 2.0]]])
+    nv = len(m.vertices)
+    dup = m.faces[:5][:, [1, 2, 0]]  # same triangles, rotated vertex order
+    sliver = [[nv, nv + 1, nv + 2], [nv, nv, nv]]  # collinear, and a single point
+    f = np.concatenate([m.faces, dup, sliver])
+    bvh = LBVH(v, f)
+    assert bvh.duplicate_count == 5 and bvh.degenerate_count == 2
+    p = rng.uniform(-1, 3.5, (300, 3))
+    _, d, tid = bvh.closest_points(p)
+    np.testing.assert_allclose(d, _brute_closest(v, f, p)[0], atol=1e-12)
+    assert tid.max() < len(f) and not np.any(
+        np.isin(tid, np.arange(len(m.faces), len(m.faces) + 5))
+    )
+    # Duplicates would double-count crossings and flip parity: they are dropped.
+    q = rng.uniform(m.bounds[0], m.bounds[1], (400, 3))
+    np.testing.assert_array_equal(
+        bvh.ray_crossings(q, [1.0, 0.0123, 0.0071]) % 2 == 1, m.contains(q)
+    )
+
+
+def test_single_triangle_and_hits_flagged_on_edges() -> None:
+    bvh = LBVH([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    cp, d, tid = bvh.closest_points([[0.2, 0.2, 1.0], [2.0, 0.0, 0.0]])
+    np.testing.assert_allclose(d, [1.0, 1.0])
+    np.testing.assert_allclose(cp, [[0.2, 0.2, 0.0], [1.0, 0.0, 0.0]])
+    assert tid.tolist() == [0, 0]
+    q, t, degenerate = bvh.ray_hits([[0.5, 0.5, -1.0], [0.2, 0.2, -1.0]], [0.0, 0.0, 1.0])
+    assert q.tolist() == [0, 1] and degenerate.tolist() == [True, False]
+    np.testing.assert_allclose(t, [1.0, 1.0])
+
+
+@pytest.mark.parametrize(
+    ("vertices", "faces", "error", "match"),
+    [
+        (np.zeros((0, 3)), np.zeros((0, 3), dtype=int), MeshError, "empty"),
+        ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.zeros((0, 3), dtype=int), MeshError, "empty"),
+        ([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], InputError, "NaN"),
+        ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 3]], InputError, "out of range"),
+        ([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], InputError, "vertices must have shape"),
+        ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0.0, 1.0, 2.0]], InputError, "integer"),
+    ],
+)
+def test_bad_meshes_are_rejected(vertices, faces, error, match) -> None:
+    with pytest.raises(error, match=match):
+        LBVH(vertices, faces)
+
+
+def test_bad_query_points() -> None:
+    bvh = LBVH([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    with pytest.raises(InputError, match="points"):
+        bvh.closest_points([[0, 0, np.inf]])
+    with pytest.raises(InputError, match="points"):
+        bvh.closest_points([0, 0, 0])
+    with pytest.raises(InputError, match="directions"):
+        bvh.ray_crossings([[0, 0, 0]], [0, 0, 0])

@@ -1,0 +1,194 @@
+"""Sparse SDF against exact signed distances (LBVH distance, trimesh containment for the sign)."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+import trimesh
+
+from workbench.errors import InputError, MeshError
+from workbench.geometry.lbvh import LBVH
+from workbench.geometry.sdf import SparseSDF, triangle_box_overlap
+
+
+def _scene() -> trimesh.Trimesh:
+    sphere = trimesh.creation.icosphere(subdivisions=3, radius=0.5)
+    box = trimesh.creation.box((0.4, 0.8, 0.3))  # faces on round coordinates: grazing rays
+    box.apply_translation((1.0, 0.1, 0.05))
+    return trimesh.util.concatenate([sphere, box])
+
+
+def _exact(m: trimesh.Trimesh, p: np.ndarray) -> np.ndarray:
+    d = LBVH(m.vertices, m.faces).closest_points(p)[1]
+    return np.where(m.contains(p), -d, d)
+
+
+def _in_band(sdf: SparseSDF, p: np.ndarray) -> np.ndarray:
+    ci = np.floor((p - sdf.origin) / sdf.cell_size).astype(int)
+    ok = np.all((ci >= 0) & (ci < sdf.dims), axis=1)
+    band = np.zeros(len(p), dtype=bool)
+    band[ok] = sdf.block_index[tuple(ci[ok].T)] >= 0
+    return band
+
+
+@pytest.fixture(scope="module")
+def scene_sdf() -> tuple[trimesh.Trimesh, SparseSDF]:
+    m = _scene()
+    return m, SparseSDF.from_mesh(m, resolution=16, subdivisions=4)
+
+
+def test_band_error_within_stated_bound(scene_sdf) -> None:
+    m, sdf = scene_sdf
+    rng = np.random.default_rng(0)
+    p = rng.uniform(m.bounds[0] - 0.2, m.bounds[1] + 0.2, (4000, 3))
+    band = _in_band(sdf, p)
+    q, ex = sdf.query(p[band]), _exact(m, p[band])
+    near = np.abs(ex) <= sdf.band
+    assert sdf.signed and near.sum() > 800
+    assert np.abs(q[near] - ex[near]).max() <= sdf.max_error
+    # Beyond the band, inside marked cells: truncated, never more than max_error too far.
+    assert np.all(np.abs(q[~near]) <= np.abs(ex[~near]) + sdf.max_error)
+    assert np.all(np.sign(q[~near]) == np.sign(ex[~near]))
+    assert sdf.max_error == pytest.approx(np.sqrt(3) / 2 * sdf.cell_size / 4, rel=1e-4)
+    # Exactly at fine corners the value is the exact distance (up to float32).
+    corner = (
+        sdf.origin
+        + (np.floor((p[band][:200] - sdf.origin) / sdf.fine_cell_size)) * sdf.fine_cell_size
+    )
+    corner += 1e-9  # stay in the same coarse cell despite rounding (the field is 1-Lipschitz)
+    ex = _exact(m, corner)
+    trunc = sdf.band + sdf.max_error
+    np.testing.assert_allclose(sdf.query(corner), np.clip(ex, -trunc, trunc), atol=1e-6)
+
+
+def test_outside_band_is_a_lower_bound_with_the_right_sign(scene_sdf) -> None:
+    m, sdf = scene_sdf
+    rng = np.random.default_rng(1)
+    p = rng.uniform(m.bounds[0] - 1.0, m.bounds[1] + 1.0, (4000, 3))
+    p = np.concatenate([p, rng.uniform(-0.2, 0.2, (300, 3))])  # deep inside the sphere
+    far = ~_in_band(sdf, p)
+    q, ex = sdf.query(p[far]), _exact(m, p[far])
+    assert far.sum() > 2000 and np.sum(ex < 0) > 100
+    assert np.all(np.sign(q) == np.sign(ex))
+    assert np.all(np.abs(q) <= np.abs(ex) + 1e-12)
+    assert np.all(np.abs(q) >= sdf.band * (1 - 1e-6))  # at least the band width
+
+
+def test_against_trimesh_signed_distance(scene_sdf) -> None:
+    m, sdf = scene_sdf
+    rng = np.random.default_rng(2)
+    p = rng.uniform(m.bounds[0], m.bounds[1], (300, 3))
+    band = _in_band(sdf, p)
+    ref = -trimesh.proximity.signed_distance(m, p[band])  # trimesh: positive inside
+    near = np.abs(ref) <= sdf.band
+    assert near.sum() > 50
+    assert np.abs(sdf.query(p[band])[near] - ref[near]).max() <= sdf.max_error
+
+
+def test_memory_is_sparse_and_progress_reported(tmp_path) -> None:
+    m = _scene()
+    calls: list[tuple[float, str]] = []
+    sdf = SparseSDF.from_mesh(
+        m,
+        resolution=24,
+        subdivisions=4,
+        band=0.0,
+        cache_dir=tmp_path,
+        progress=lambda f, s: calls.append((f, s)),
+    )
+    dense = (sdf.dims * sdf.subdivisions + 1).prod() * 4
+    assert sdf.memory_bytes < dense / 2
+    fr = [c[0] for c in calls]
+    assert fr[0] == 0.0 and fr[-1] == 1.0 and fr == sorted(fr)
+    # Second build comes from the cache file, with identical values.
+    calls.clear()
+    again = SparseSDF.from_mesh(
+        m,
+        resolution=24,
+        subdivisions=4,
+        band=0.0,
+        cache_dir=tmp_path,
+        progress=lambda f, s: calls.append((f, s)),
+    )
+    assert len(calls) == 1 and "cache" in calls[0][1]
+    np.testing.assert_array_equal(again.values, sdf.values)
+    # Other parameters: another cache entry.
+    SparseSDF.from_mesh(m, resolution=22, subdivisions=4, band=0.0, cache_dir=tmp_path)
+    assert len(list(tmp_path.glob("sdf-*.npz"))) == 2
+
+
+def test_open_mesh_warns_and_is_unsigned() -> None:
+    m = trimesh.creation.icosphere(subdivisions=3, radius=0.5)
+    m.update_faces(m.face_normals[:, 2] < 0.9)  # cut a hole at the top
+    with pytest.warns(UserWarning, match="not watertight"):
+        sdf = SparseSDF.from_mesh(m, resolution=12)
+    assert not sdf.signed
+    rng = np.random.default_rng(0)
+    p = rng.uniform(-0.6, 0.6, (2000, 3))
+    q = sdf.query(p)
+    assert np.all(q >= 0)
+    d = LBVH(m.vertices, m.faces).closest_points(p)[1]
+    band = _in_band(sdf, p) & (d <= sdf.band)
+    assert band.sum() > 200
+    assert np.abs(q[band] - d[band]).max() <= sdf.max_error
+    assert np.all(q[~band] <= d[~band] + sdf.max_error)
+
+
+def test_grid_aligned_box_signs() -> None:
+    """Box faces lie on fine-grid lines, so axis rays graze edges: signs must still be right."""
+    m = trimesh.creation.box((1.0, 1.0, 1.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sdf = SparseSDF.from_mesh(m, cell_size=0.125, subdivisions=2, band=0.125)
+    rng = np.random.default_rng(0)
+    p = rng.uniform(-0.8, 0.8, (3000, 3))
+    q, ex = sdf.query(p), _exact(m, p)
+    near = _in_band(sdf, p) & (np.abs(ex) <= sdf.band)
+    assert near.sum() > 300
+    assert np.abs(q[near] - ex[near]).max() <= sdf.max_error
+    assert np.all(np.sign(q[np.abs(ex) > sdf.max_error]) == np.sign(ex[np.abs(ex) > sdf.max_error]))
+
+
+def test_triangle_box_overlap_against_sampled_distance() -> None:
+    rng = np.random.default_rng(0)
+    n = 3000
+    v = rng.uniform(-1, 1, (n, 3, 3))
+    centre, half = rng.uniform(-1, 1, (n, 3)), 0.2
+    ok = triangle_box_overlap(v[:, 0], v[:, 1], v[:, 2], centre, half)
+    # Twin: dense samples of the triangle inside the cube means overlap.
+    u, w = np.meshgrid(np.linspace(0, 1, 40), np.linspace(0, 1, 40))
+    keep = u + w <= 1
+    u, w = u[keep], w[keep]
+    pts = (
+        v[:, None, 0]
+        + u[None, :, None] * (v[:, None, 1] - v[:, None, 0])
+        + w[None, :, None] * (v[:, None, 2] - v[:, None, 0])
+    )
+    sampled = np.any(np.all(np.abs(pts - centre[:, None]) <= half, axis=2), axis=1)
+    assert np.all(ok[sampled])  # never misses an overlap
+    assert np.mean(ok & ~sampled) < 0.02  # and rarely claims one the samples did not find
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "match"),
+    [
+        ({"resolution": 1}, InputError, "resolution"),
+        ({"cell_size": -1.0}, InputError, "cell_size"),
+        ({"band": -0.1}, InputError, "band"),
+        ({"subdivisions": 0}, InputError, "subdivisions"),
+    ],
+)
+def test_bad_parameters(kwargs, error, match) -> None:
+    with pytest.raises(error, match=match):
+        SparseSDF.from_mesh(trimesh.creation.box(), **kwargs)
+
+
+def test_bad_meshes() -> None:
+    with pytest.raises(MeshError, match="empty"):
+        SparseSDF.from_mesh((np.zeros((0, 3)), np.zeros((0, 3), dtype=int)))
+    with pytest.raises(InputError, match="NaN"):
+        SparseSDF.from_mesh(([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]))
+    with pytest.raises(InputError, match="trimesh"):
+        SparseSDF.from_mesh("box.stl")

@@ -1,0 +1,99 @@
+"""PSO enveloping spheres: exact containment checked by brute force and dense sampling."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from workbench.errors import InputError, MeshError
+from workbench.geometry.spheres import SphereSet, _contain_triangles, _split_long, fit_spheres
+
+
+def _link() -> trimesh.Trimesh:
+    """A UR-like link: a long cylinder with a fatter cylinder (the joint housing) at one end."""
+    arm = trimesh.creation.cylinder(radius=0.04, height=0.4, sections=20)
+    joint = trimesh.creation.cylinder(radius=0.06, height=0.12, sections=20)
+    joint.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
+    joint.apply_translation((0, 0, 0.2))
+    return trimesh.util.concatenate([arm, joint])
+
+
+@pytest.fixture(scope="module")
+def fitted() -> tuple[trimesh.Trimesh, SphereSet]:
+    m = _link()
+    return m, fit_spheres(m, 6, seed=0)
+
+
+def test_every_vertex_and_dense_surface_sample_is_inside(fitted) -> None:
+    m, s = fitted
+    assert s.centres.shape[1] == 3 and s.radii.shape == (len(s.centres),) and len(s.centres) <= 6
+    assert s.contains(m.vertices).all()
+    pts, _ = trimesh.sample.sample_surface(m, 50_000, seed=1)
+    assert s.contains(pts).all()
+    assert s.coverage == 1.0
+
+
+def test_every_triangle_is_inside_one_sphere(fitted) -> None:
+    """A ball is convex: a triangle is inside if its three vertices are (brute force here)."""
+    m, s = fitted
+    tri = m.vertices[m.faces]
+    pieces = _split_long(tri, 0.03)
+
+    # Splitting keeps the surface: same total area, every piece inside its parent's plane.
+    def area(t: np.ndarray) -> float:
+        return float(
+            0.5 * np.linalg.norm(np.cross(t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]), axis=1).sum()
+        )
+
+    assert area(pieces) == pytest.approx(area(tri), rel=1e-12)
+    assert np.linalg.norm(pieces - np.roll(pieces, 1, axis=1), axis=2).max() <= 0.03
+    radii = _contain_triangles(pieces, s.centres, 0.4)
+    far = np.linalg.norm(pieces[:, :, None, :] - s.centres[None, None], axis=3).max(
+        axis=1
+    )  # (T, k)
+    assert np.all(np.any(far <= radii[None], axis=1))
+    # And the fitted set itself: dense barycentric samples of every original triangle.
+    u, w = np.meshgrid(np.linspace(0, 1, 12), np.linspace(0, 1, 12))
+    keep = u + w <= 1
+    bary = np.stack([1 - u[keep] - w[keep], u[keep], w[keep]], axis=1)
+    assert s.contains(np.einsum("sb,tbd->tsd", bary, tri).reshape(-1, 3)).all()
+
+
+def test_more_spheres_fit_tighter_than_one() -> None:
+    m = _link()
+    one, six = fit_spheres(m, 1), fit_spheres(m, 6)
+    assert np.isfinite(one.volume_overshoot) and six.volume_overshoot < 0.5 * one.volume_overshoot
+    # Single-sphere twin: every vertex inside, radius at least half the largest vertex spread.
+    spread = np.max(np.linalg.norm(m.vertices[:, None] - m.vertices[None], axis=2))
+    assert one.radii[0] >= spread / 2 - 1e-12
+    # Monte Carlo union volume against the closed form of disjoint spheres' upper bound.
+    assert six.union_volume <= np.sum(4 / 3 * np.pi * six.radii**3) + 1e-12
+
+
+def test_seeded_fit_is_reproducible() -> None:
+    m = _link()
+    a, b = fit_spheres(m, 4, seed=3), fit_spheres(m, 4, seed=3)
+    np.testing.assert_array_equal(a.centres, b.centres)
+    np.testing.assert_array_equal(a.radii, b.radii)
+
+
+def test_open_mesh_reports_nan_overshoot_but_still_contains() -> None:
+    m = trimesh.creation.icosphere(subdivisions=2, radius=0.1)
+    m.update_faces(m.face_normals[:, 2] < 0.9)
+    s = fit_spheres(m, 3)
+    assert np.isnan(s.volume_overshoot)
+    assert s.contains(trimesh.sample.sample_surface(m, 5000, seed=0)[0]).all()
+
+
+@pytest.mark.parametrize("count", [0, -2, 1.5])
+def test_bad_sphere_count(count) -> None:
+    with pytest.raises(InputError, match="count"):
+        fit_spheres(_link(), count)
+
+
+def test_bad_meshes() -> None:
+    with pytest.raises(MeshError, match="empty"):
+        fit_spheres((np.zeros((0, 3)), np.zeros((0, 3), dtype=int)), 2)
+    with pytest.raises(InputError, match="NaN"):
+        fit_spheres(([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]), 2)
