@@ -13,6 +13,7 @@ import viser
 from workbench.errors import ServerError
 from workbench.gui.assembly_panel import AssemblyPanel
 from workbench.gui.bending_panel import BendingPanel
+from workbench.gui.collision_panel import CollisionPanel
 from workbench.gui.jog_panel import JogPanel
 from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.polishing_panel import PolishingPanel
@@ -81,6 +82,8 @@ class WorkbenchApp:
             self.project_panel = ProjectPanel(server, wb, on_replaced=self.rebuild)
 
     def _build_workflows(self) -> None:
+        with self.robot_tab:
+            self.collision = CollisionPanel(self)
         with self.bending_tab:
             self.bending = BendingPanel(self)
         with self.assembly_tab:
@@ -94,7 +97,7 @@ class WorkbenchApp:
             self.timeline.pause()
             self.jog.remove()
             self.motion.remove()
-            for panel in (self.bending, self.assembly, self.polishing):
+            for panel in (self.collision, self.bending, self.assembly, self.polishing):
                 panel.remove()
             self.scene.clear()
             self.scene.build()

@@ -25,6 +25,7 @@ from workbench.project import (
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell
+from workbench.service.collision_engine import CollisionService
 from workbench.service.convert import DEG
 from workbench.service.motion_plan import MotionPlan, Progress, export_text, plan_motion
 from workbench.service.polishing import PolishingService
@@ -267,6 +268,11 @@ class Workbench:
             if name not in self._workflows:
                 self._workflows[name] = cls(self)
             return self._workflows[name]
+
+    @property
+    def collision(self) -> CollisionService:
+        """Return the conservative collision engine of the open project (seeds 001, 002)."""
+        return self._workflow("collision", CollisionService)  # type: ignore[no-any-return]
 
     @property
     def bending(self) -> BendingService:
