@@ -6,6 +6,7 @@ from typing import Annotated
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
+
 class StrictModel(BaseModel):
     """Base of every project model: unknown fields and non-finite numbers are errors."""
 
