@@ -89,7 +89,11 @@ def _wrist_fold_angle(dh: FloatArray, limits: FloatArray | None) -> float:
     """Return the smallest angle [rad] between the flange direction and the way back along the
     forearm, over the range of the second-to-last joint (the others at 0)."""
     n = dh.shape[0]
-    lo, hi = (-math.pi, math.pi) if limits is None else (float(limits[n - 2, 0]), float(limits[n - 2, 1]))
+    lo, hi = (
+        (-math.pi, math.pi)
+        if limits is None
+        else (float(limits[n - 2, 0]), float(limits[n - 2, 1]))
+    )
     q = np.zeros((181, n))
     q[:, n - 2] = np.linspace(lo, hi, 181)
     B = dh_fixed_part(dh)
@@ -173,7 +177,9 @@ def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[tri
             if wrist and i == n - 2:
                 # Reach out along the last joint's axis to where the flange link starts.
                 reach = 1.02 * flange_start
-                lo_z, hi_z = (min(lo_z, -reach), hi_z) if dh[n - 1, 1] < 0 else (lo_z, max(hi_z, reach))
+                lo_z, hi_z = (
+                    (min(lo_z, -reach), hi_z) if dh[n - 1, 1] < 0 else (lo_z, max(hi_z, reach))
+                )
             housing = _cylinder_points(np.array([0.0, 0.0, lo_z]), np.array([0.0, 0.0, hi_z]), h[i])
         else:
             t = FLANGE_THICKNESS * scale
