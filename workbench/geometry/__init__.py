@@ -1,7 +1,20 @@
-"""TODO"""
+"""Pure-numpy geometry: transforms, OBBs, distances, LBVH, sparse SDF, enveloping spheres."""
 
-from workbench.geometry.distance import capsule_rectangle_distance, segment_segment_distance  # noqa: F401
-from workbench.geometry.lbvh import LBVH  # noqa: F401
-from workbench.geometry.obb import OBB, obb_overlap  # noqa: F401
-from workbench.geometry.sdf import SparseSDF  # noqa: F401
-from workbench.geometry.spheres import SphereSet, fit_spheres  # noqa: F401
+from __future__ import annotations
+
+from workbench.geometry.distance import capsule_rectangle_distance, segment_segment_distance
+from workbench.geometry.lbvh import LBVH
+from workbench.geometry.obb import OBB, obb_overlap
+from workbench.geometry.sdf import SparseSDF
+from workbench.geometry.spheres import SphereSet, fit_spheres
+
+__all__ = [
+    "LBVH",
+    "OBB",
+    "SparseSDF",
+    "SphereSet",
+    "capsule_rectangle_distance",
+    "fit_spheres",
+    "obb_overlap",
+    "segment_segment_distance",
+]
