@@ -81,3 +81,33 @@ def test_download_gives_the_current_project(page, app: WorkbenchApp) -> None:  #
     data = json.loads(Path(dl.value.path()).read_text())
     assert data == json.loads(app.wb.to_json())
     assert data["robot"]["preset"] == "mz07"
+
+
+def test_switching_ik_configuration_keeps_the_tcp(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+    # A pose with several configurations within the limits.
+    app.wb.set_joints(np.radians([10, -20, 10, 30, -40, -20]))
+    app.jog.refresh()
+    T = app.wb.tcp_pose()
+    labels = [s.label for s in app.wb.ik_solutions(T)]
+    assert len(labels) >= 2, labels
+    q_before = app.wb.joints
+    page.get_by_role("combobox", name="IK configuration").click()
+    page.get_by_role("option", name=f"2: {labels[1]}").click()
+    wait_for(
+        lambda: not np.allclose(app.wb.joints, q_before), what="the arm to change configuration"
+    )
+    assert np.allclose(app.wb.tcp_pose(), T, atol=1e-9), (
+        "the TCP moved when the configuration changed"
+    )
+    # The sliders in the page show the new joints.
+    j2 = page.get_by_role("slider").nth(1).get_attribute("aria-valuenow")
+    wait_for(
+        lambda: (
+            abs(
+                float(page.get_by_role("slider").nth(1).get_attribute("aria-valuenow") or "nan")
+                - np.degrees(app.wb.joints[1])
+            )
+            < 0.1
+        ),
+        what=f"slider J2 to show the new joint value (was {j2})",
+    )
