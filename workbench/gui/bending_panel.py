@@ -1,13 +1,33 @@
-"""The "Bending" tab."""
+"""The "Bending" tab: the part flat and folded at the die, sequence, grasp, OBB tree levels, Plan."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import threading
+import time
+from typing import TYPE_CHECKING, Any
 
+import numpy as np
+import viser
+import viser.uplot as uplot
+from numpy.typing import NDArray
+
+from workbench.errors import WorkbenchError
+from workbench.geometry.transforms import make_transform
 from workbench.gui.handles import Removable
+from workbench.gui.notify import guarded, notify
+from workbench.gui.scene import place
+from workbench.gui.timeline import Motion
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
+    from workbench.service.bending import BendingPlan, DiePlacement
+    from workbench.sheetmetal import OBBTree
+
+MM = 1e3  # m -> mm for display
+PART_COLOR = (120, 170, 230)
+LEVEL_COLORS = ((40, 160, 60), (240, 150, 20), (150, 60, 200), (20, 150, 190), (200, 200, 40))
+HIT_COLOR = (230, 30, 30)
+UNTESTED_COLOR = (150, 150, 150)
 
 
 class BendingPanel:
@@ -15,13 +35,322 @@ class BendingPanel:
 
     def __init__(self, app: WorkbenchApp) -> None:
         self.app = app
+        self.server = app.server
+        self.handles: list[Removable] = []
+        self.nodes: list[Any] = []
+        self.box_nodes: list[Any] = []
+        self._lock = threading.RLock()
+        self._placements: tuple[DiePlacement, ...] | None = None
+        self._tree: OBBTree | None = None
+        self._check: tuple[tuple[int, ...], tuple[int, ...]] | None = None  # tested, hit nodes
+        self._animating = threading.Event()
+        self._quiet = False
+        self.plots: list[Any] = []
         g = app.server.gui
-        self.handles: list[Removable] = [
-            g.add_markdown("This project has no `bending` section.")
+        if not app.wb.bending.available:
+            self.handles.append(g.add_markdown("This project has no `bending` section."))
+            return
+        self._build()
+
+    # -- widgets --------------------------------------------------------------------------
+    def _build(self) -> None:
+        s, g = self.server, self.server.gui
+        svc = self.app.wb.bending
+        part = svc.part
+        nb = len(part.bends)
+        self.info = g.add_markdown(self._describe())
+        self.sequence = g.add_text(
+            "Sequence", ",".join(svc.sequence), hint="Bend names in order, comma-separated"
+        )
+        self.apply_sequence = g.add_button("Apply sequence", icon=viser.Icon.ARROWS_SORT)
+        self.step = g.add_slider(
+            "Fold step", min=0.0, max=float(nb), step=0.05, initial_value=float(nb)
+        )
+        self.animate = g.add_button("Animate folds", icon=viser.Icon.PLAYER_PLAY)
+        flanges = tuple(f.name for f in part.flanges)
+        self.grasp = g.add_dropdown("Grasp flange", options=flanges, initial_value=svc.grasp_flange)
+        off = svc.grasp_offset() * MM
+        self.offset_x = g.add_number("Grasp x [mm]", initial_value=round(float(off[0]), 1), step=1)
+        self.offset_y = g.add_number("Grasp y [mm]", initial_value=round(float(off[1]), 1), step=1)
+        self.levels = []
+        folded = svc.fold(nb)
+        depth = 1 + max(int(folded.obb_tree(f).level.max()) for f in range(len(part.flanges)))
+        with g.add_folder("OBB tree levels"):
+            for lvl in range(depth):
+                name = "root" if lvl == 0 else ("flanges" if lvl == depth - 1 else f"split {lvl}")
+                cb = g.add_checkbox(f"Level {lvl} ({name})", initial_value=lvl == 0)
+                cb.on_update(guarded(s, "OBB levels")(lambda _: self._show_levels()))
+                self.levels.append(cb)
+            self.tree_info = g.add_markdown("")
+        self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
+        self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
+        self.result = g.add_markdown("")
+        self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)")
+        self.handles += [
+            self.info,
+            self.sequence,
+            self.apply_sequence,
+            self.step,
+            self.animate,
+            self.grasp,
+            self.offset_x,
+            self.offset_y,
+            *self.levels,
+            self.tree_info,
+            self.plan_button,
+            self.progress,
+            self.result,
+            self.plot_folder,
         ]
+        self.apply_sequence.on_click(guarded(s, "Bend sequence")(self._on_sequence))
+        self.step.on_update(guarded(s, "Fold step")(lambda _: self.redraw()))
+        self.animate.on_click(guarded(s, "Animate")(self._on_animate))
+        self.grasp.on_update(guarded(s, "Grasp")(self._on_grasp_flange))
+        self.offset_x.on_update(guarded(s, "Grasp offset")(self._on_grasp_offset))
+        self.offset_y.on_update(guarded(s, "Grasp offset")(self._on_grasp_offset))
+        self.plan_button.on_click(guarded(s, "Plan bending")(self._on_plan))
+        self.part_frame = s.scene.add_frame("/bending/part", show_axes=False)
+        self.nodes.append(self.part_frame)
+        self.mesh: Any = None
+        try:
+            self.redraw()
+        except WorkbenchError as exc:
+            self.result.content = f"**Problem:** {exc}"
+
+    def _describe(self) -> str:
+        svc = self.app.wb.bending
+        part = svc.part
+        return (
+            f"**Part `{svc.part_spec().name}`**: {len(part.flanges)} flanges, {len(part.bends)} "
+            f"bends, t = {part.thickness * MM:g} mm, blank area {part.blank_area() * 1e6:.0f} mm²"
+        )
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
+        self._animating.clear()
+        for h in self.plots:
+            h.remove()
         for h in self.handles:
             h.remove()
+        for n in self.box_nodes:
+            n.remove()
+        for n in reversed(self.nodes):
+            n.remove()
+        self.plots.clear()
         self.handles.clear()
+        self.box_nodes.clear()
+        self.nodes.clear()
+
+    # -- scene ----------------------------------------------------------------------------
+    def _die_placements(self) -> tuple[DiePlacement, ...] | None:
+        if self._placements is None:
+            try:
+                self._placements = self.app.wb.bending.placements()[0]
+            except WorkbenchError as exc:
+                self.result.content = f"**Problem:** {exc}"
+                return None
+        return self._placements
+
+    def redraw(self) -> None:
+        """Show the part folded to the slider's step, on the die for its next bend, robot holding it."""
+        with self._lock:
+            svc = self.app.wb.bending
+            nb = len(svc.part.bends)
+            step = float(np.clip(self.step.value, 0.0, nb))
+            state = svc.fold(step)
+            k = min(int(np.floor(step + 1e-9)), nb - 1)
+            mesh = state.solid()
+            if self.mesh is not None:
+                self.mesh.remove()
+                self.nodes.remove(self.mesh)
+            self.mesh = self.server.scene.add_mesh_simple(
+                "/bending/part/mesh",
+                np.asarray(mesh.vertices, np.float32),
+                np.asarray(mesh.faces, np.uint32),
+                color=PART_COLOR,
+                side="double",
+            )
+            self.nodes.append(self.mesh)
+            place(self.part_frame, svc.die_part_pose(k))
+            placements = self._die_placements()
+            if placements is not None:
+                self.app.scene.show(placements[k].q)
+            self._tree = state.obb_tree(svc.grasp_flange)
+            self._check = None
+            self._draw_boxes(state.T_part_flange[self._tree.grasp_flange])
+
+    def _draw_boxes(self, T_part_grasp: NDArray[np.float64]) -> None:
+        for n in self.box_nodes:
+            n.remove()
+        self.box_nodes.clear()
+        tree = self._tree
+        assert tree is not None
+        for i in range(len(tree.flanges)):
+            T = T_part_grasp @ make_transform(tree.boxes.rotation[i], tree.boxes.center[i])
+            h = self.server.scene.add_box(
+                f"/bending/part/obb/n{i}",
+                color=LEVEL_COLORS[int(tree.level[i]) % len(LEVEL_COLORS)],
+                dimensions=tuple(2 * tree.boxes.half_extents[i]),
+                wireframe=True,
+            )
+            place(h, T)
+            self.box_nodes.append(h)
+        self._show_levels()
+
+    def _show_levels(self) -> None:
+        tree = self._tree
+        if tree is None:
+            return
+        on = [bool(cb.value) for cb in self.levels]
+        tested, hit = self._check or ((), ())
+        for i, h in enumerate(self.box_nodes):
+            lvl = int(tree.level[i])
+            h.visible = lvl < len(on) and on[lvl]
+            if self._check is None:
+                h.color = LEVEL_COLORS[lvl % len(LEVEL_COLORS)]
+            elif i in hit:
+                h.color = HIT_COLOR
+            elif i in tested:
+                h.color = LEVEL_COLORS[lvl % len(LEVEL_COLORS)]
+            else:
+                h.color = UNTESTED_COLOR
+        names = self.app.wb.bending.part.flanges
+        rows = [
+            f"L{int(tree.level[i])}: {{{', '.join(names[f].name for f in fl)}}}"
+            + (" **hit**" if i in hit else (" tested" if i in tested else ""))
+            for i, fl in enumerate(tree.flanges)
+            if int(tree.level[i]) < len(on) and on[int(tree.level[i])]
+        ]
+        self.tree_info.content = f"{len(tree.flanges)} nodes. " + "; ".join(rows)
+
+    # -- callbacks ------------------------------------------------------------------------
+    def _reset(self) -> None:
+        self._placements = None
+        self.result.content = ""
+        self.info.content = self._describe()
+        self.redraw()
+
+    def _on_sequence(self, event: viser.GuiEvent) -> None:
+        names = [n for n in str(self.sequence.value).replace(";", ",").split(",") if n.strip()]
+        self.app.wb.bending.set_sequence(names)
+        self.sequence.value = ",".join(self.app.wb.bending.sequence)  # type: ignore[misc]
+        self._reset()
+        notify(self.server, event.client, "Bend sequence", "Applied.", color="green")
+
+    def _on_grasp_flange(self, event: viser.GuiEvent) -> None:
+        svc = self.app.wb.bending
+        svc.set_grasp(str(self.grasp.value))
+        off = svc.grasp_offset() * MM
+        self._reset()
+        self._set_offset_widgets(off)
+
+    def _set_offset_widgets(self, off: NDArray[np.float64]) -> None:
+        self._quiet = True
+        try:
+            self.offset_x.value = round(float(off[0]), 1)  # type: ignore[misc]
+            self.offset_y.value = round(float(off[1]), 1)  # type: ignore[misc]
+        finally:
+            self._quiet = False
+
+    def _on_grasp_offset(self, event: viser.GuiEvent) -> None:
+        if self._quiet:
+            return
+        svc = self.app.wb.bending
+        off = np.array([float(self.offset_x.value), float(self.offset_y.value)]) / MM
+        svc.set_grasp(svc.grasp_flange, off)
+        self._reset()
+
+    def _on_animate(self, event: viser.GuiEvent) -> None:
+        if self._animating.is_set():
+            self._animating.clear()
+            return
+        self._animating.set()
+        nb = float(len(self.app.wb.bending.part.bends))
+
+        def run() -> None:
+            v = 0.0
+            while self._animating.is_set() and v <= nb + 1e-9:
+                self.step.value = round(v, 2)  # type: ignore[misc]  # fires redraw
+                v += 0.1
+                time.sleep(0.05)
+            self._animating.clear()
+
+        threading.Thread(target=run, name="bending-animate", daemon=True).start()
+
+    def _on_plan(self, event: viser.GuiEvent) -> None:
+        svc = self.app.wb.bending
+        self.plan_button.disabled = True
+        self.progress.visible = True
+        self.progress.value = 0.0  # type: ignore[misc]
+
+        def progress(fraction: float, message: str) -> None:
+            self.progress.value = 100.0 * fraction  # type: ignore[misc]
+            self.result.content = f"Planning: {message}"
+
+        try:
+            plan = svc.plan(progress=progress)
+        finally:
+            self.progress.visible = False
+            self.plan_button.disabled = False
+        head = "**OK:** " if plan.ok else "**Collision:** "
+        self.result.content = head + plan.summary()
+        self.step.value = float(len(svc.part.bends))  # type: ignore[misc]  # redraws the folded tree
+        self._show_plots(plan)
+        self._load_timeline(plan)
+
+    def _show_plots(self, plan: BendingPlan) -> None:
+        for h in self.plots:
+            h.remove()
+        x = np.arange(1, len(plan.times) + 1, dtype=float)
+        fx = uplot.Series(label="frame")
+        with self.plot_folder:
+            self.plots = [
+                self.server.gui.add_uplot(
+                    data=(x, plan.tree_tests.astype(float), plan.flat_tests.astype(float)),
+                    series=(
+                        fx,
+                        uplot.Series(label="tree", stroke="#2ca02c", width=2),
+                        uplot.Series(label="flat loop", stroke="#d62728", width=2),
+                    ),
+                    title="OBB tests per frame",
+                    aspect=1.6,
+                ),
+                self.server.gui.add_uplot(
+                    data=(x, plan.tree_seconds * 1e6, plan.flat_seconds * 1e6),
+                    series=(
+                        fx,
+                        uplot.Series(label="tree [µs]", stroke="#2ca02c", width=2),
+                        uplot.Series(label="flat loop [µs]", stroke="#d62728", width=2),
+                    ),
+                    title="Check time per frame [µs]",
+                    aspect=1.6,
+                ),
+            ]
+
+    def _load_timeline(self, plan: BendingPlan) -> None:
+        svc = self.app.wb.bending
+        pb = svc.playback(plan)
+        robot = self.app.wb.robot
+        motion = Motion(
+            name="bending transfer",
+            times=pb.times,
+            positions=pb.positions,
+            velocities=pb.velocities,
+            accelerations=pb.accelerations,
+            tcp_speed=pb.tcp_speed,
+            colliding=pb.colliding,
+            velocity_limits=robot.max_velocity,
+            acceleration_limits=robot.max_acceleration,
+        )
+
+        def follow(t: float) -> None:
+            place(self.part_frame, svc.part_pose_at(plan, t))
+            f = int(np.argmin(np.abs(plan.times - t)))  # the nearest checked frame
+            rep = plan.part_report.frame(f)
+            self._check = (rep.nodes_tested, rep.nodes_hit)
+            self._show_levels()
+
+        self.app.timeline.load(motion, follow=follow)
+        first = plan.first_collision
+        if first is not None:
+            self.app.timeline.time.value = round(float(plan.times[first.frame]), 4)  # type: ignore[misc]

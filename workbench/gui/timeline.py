@@ -15,6 +15,8 @@ from numpy.typing import NDArray
 
 DEG = 180.0 / np.pi
 SPEEDS = ("0.25x", "0.5x", "1x", "2x", "4x")
+# uPlot reads x as a date unless told otherwise.
+SECONDS: dict[str, uplot.Scale] = {"x": uplot.Scale(time=False)}
 JOINT_COLORS = ("#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42a5a5")
 
 
@@ -59,6 +61,7 @@ class Timeline:
         self.show = show
         self.motion: Motion | None = None
         self._follow: Callable[[float], None] | None = None
+        self._plot_folder: viser.GuiFolderHandle | None = None
         self._playing = threading.Event()
         self._stop = threading.Event()
         s = server.gui
@@ -94,6 +97,8 @@ class Timeline:
         self.info.content = f"**{motion.name}**: cycle time **{motion.duration:.3f} s**{coll}"
         for p in self.plots:
             p.remove()
+        if self._plot_folder is not None:
+            self._plot_folder.remove()
         self.plots = self._make_plots(motion)
         self._pose(0.0)
 
@@ -115,14 +120,15 @@ class Timeline:
         neg_limit = uplot.Series(label="-limit", stroke="#888888", dash=(6.0, 4.0), width=1)
         x = uplot.Series(label="t [s]")
         plots = []
-        with self.server.gui.add_folder("Plots", expand_by_default=True) as folder:
-            self._plot_folder = folder
+        self._plot_folder = self.server.gui.add_folder("Plots", expand_by_default=True)
+        with self._plot_folder:
             plots.append(
                 self.server.gui.add_uplot(
                     data=(t, *(m.positions[:, j] * DEG for j in range(dof))),
                     series=(x, *joint_series),
                     title="Joint positions [deg]",
                     aspect=1.6,
+                    scales=SECONDS,
                 )
             )
             for name, values, lim in (
@@ -137,6 +143,7 @@ class Timeline:
                         series=(x, *joint_series, limit, neg_limit),
                         title=name,
                         aspect=1.6,
+                        scales=SECONDS,
                     )
                 )
             speed = m.tcp_speed * 1000.0
@@ -156,6 +163,7 @@ class Timeline:
                     ),
                     title="TCP speed [mm/s] and collisions",
                     aspect=1.6,
+                    scales=SECONDS,
                 )
             )
         return plots
