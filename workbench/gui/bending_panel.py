@@ -16,7 +16,7 @@ from workbench.geometry.transforms import make_transform
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 from workbench.gui.scene import place
-from workbench.gui.timeline import Motion
+from workbench.gui.timeline import SECONDS, Motion
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -314,6 +314,7 @@ class BendingPanel:
                     ),
                     title="OBB tests per frame",
                     aspect=1.6,
+                    scales=SECONDS,
                 ),
                 self.server.gui.add_uplot(
                     data=(x, plan.tree_seconds * 1e6, plan.flat_seconds * 1e6),
@@ -324,6 +325,7 @@ class BendingPanel:
                     ),
                     title="Check time per frame [µs]",
                     aspect=1.6,
+                    scales=SECONDS,
                 ),
             ]
 

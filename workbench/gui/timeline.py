@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 
 DEG = 180.0 / np.pi
 SPEEDS = ("0.25x", "0.5x", "1x", "2x", "4x")
-# uPlot reads x as a date unless told otherwise.
+# uPlot reads x as a date unless told otherwise: every plot with a non-time x axis uses this.
 SECONDS: dict[str, uplot.Scale] = {"x": uplot.Scale(time=False)}
 JOINT_COLORS = ("#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42a5a5")
 
