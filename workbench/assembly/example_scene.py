@@ -158,3 +158,25 @@ def example_scene() -> AssemblyScene:
             )
         )
     return AssemblyScene(fixed=(table,), parts=tuple(parts))
+
+
+def write_part_meshes(folder: str) -> list[str]:
+    """Write plate.stl and screw.stl (in millimetres) into `folder`; return the paths written."""
+    from pathlib import Path
+
+    out = Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name, mesh in (("plate", plate_mesh()), ("screw", screw_mesh())):
+        m = mesh.copy()
+        m.apply_scale(1000.0)
+        p = out / f"{name}.stl"
+        m.export(p)
+        paths.append(str(p))
+    return paths
+
+
+if __name__ == "__main__":
+    import sys
+
+    print("\n".join(write_part_meshes(sys.argv[1] if len(sys.argv) > 1 else "web_assets/parts")))

@@ -1,13 +1,32 @@
-"""The "Assembly" tab."""
+"""The "Assembly" tab: pick a part, place its start and goal, plan its path, play the sequence."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import numpy as np
+import viser
+
+from workbench.geometry.transforms import (
+    make_transform,
+    matrix_to_rpy,
+    wxyz_to_matrix,
+    xyz_rpy_to_transform,
+)
 from workbench.gui.handles import Removable
+from workbench.gui.notify import guarded
+from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
+from workbench.gui.timeline import Motion
+from workbench.service import EXPORT_FORMATS
+from workbench.service.assembly import KEY_POINT_FORMATS, AssemblyPlan
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
+
+MM = 1e-3
+DEG = np.pi / 180.0
+PATH_COLOR = (230, 120, 20)
+KEY_COLOR = (200, 30, 120)
 
 
 class AssemblyPanel:
@@ -15,13 +34,366 @@ class AssemblyPanel:
 
     def __init__(self, app: WorkbenchApp) -> None:
         self.app = app
+        self.wb = app.wb
+        self.handles: list[Removable] = []
+        self.nodes: list[Removable] = []
+        self.plan: AssemblyPlan | None = None
+        self._syncing = False
         g = app.server.gui
-        self.handles: list[Removable] = [
-            g.add_markdown("This project has no `assembly` section.")
+        if not self.wb.assembly.available:
+            self.handles.append(g.add_markdown("This project has no `assembly` section."))
+            return
+        self._build_widgets()
+        self._build_scene()
+        self._select(self.names[0])
+
+    # -- building ---------------------------------------------------------------------------
+    def _build_widgets(self) -> None:
+        s = self.app.server
+        g = s.gui
+        a = self.wb.assembly
+        self.names = a.part_names
+        spec = a.spec
+        self.info = g.add_markdown(
+            f"**{len(self.names)} parts**, robots: {', '.join(a.arms)}. Sequence: "
+            + " → ".join(t.part for t in a.sequence())
+        )
+        self.part = g.add_dropdown("Part", options=tuple(self.names), initial_value=self.names[0])
+        self.start_xyz = g.add_vector3("Start xyz [mm]", (0.0, 0.0, 0.0), step=1.0)
+        self.start_rpy = g.add_vector3("Start rpy [deg]", (0.0, 0.0, 0.0), step=1.0)
+        self.goal_xyz = g.add_vector3("Goal xyz [mm]", (0.0, 0.0, 0.0), step=1.0)
+        self.goal_rpy = g.add_vector3("Goal rpy [deg]", (0.0, 0.0, 0.0), step=1.0)
+        self.status = g.add_markdown("")
+        self.planner = g.add_dropdown(
+            "Planner", options=("ant", "rrt_connect"), initial_value=spec.planner.name
+        )
+        self.cell = g.add_number(
+            "Cell size [mm]",
+            float(spec.planner.cell_size or 0.0),
+            step=0.1,
+            hint="Side of the subdivision cells and the motion-check spacing; 0: 1/20 of the part",
+        )
+        self.step = g.add_number("Step (ant)", int(spec.planner.step), min=1, step=1)
+        self.dis = g.add_number(
+            "dis (ant) [mm]", float(spec.planner.dis or 0.0), step=0.5, hint="0: automatic"
+        )
+        self.plan_button = g.add_button("Plan part", icon=viser.Icon.ROUTE)
+        self.sequence_button = g.add_button("Plan sequence", icon=viser.Icon.LIST_NUMBERS)
+        self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
+        self.result = g.add_markdown("")
+        self.format = g.add_dropdown(
+            "Key points format", options=KEY_POINT_FORMATS, initial_value="csv"
+        )
+        self.download = g.add_button("Download key points", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.prog_robot = g.add_dropdown(
+            "Program of", options=tuple(a.arms), initial_value=next(iter(a.arms))
+        )
+        self.prog_format = g.add_dropdown(
+            "Program format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+        )
+        self.prog_download = g.add_button(
+            "Download robot program", icon=viser.Icon.DOWNLOAD, disabled=True
+        )
+        self.handles += [
+            self.info,
+            self.part,
+            self.start_xyz,
+            self.start_rpy,
+            self.goal_xyz,
+            self.goal_rpy,
+            self.status,
+            self.planner,
+            self.cell,
+            self.step,
+            self.dis,
+            self.plan_button,
+            self.sequence_button,
+            self.progress,
+            self.result,
+            self.format,
+            self.download,
+            self.prog_robot,
+            self.prog_format,
+            self.prog_download,
         ]
+        self.part.on_update(guarded(s, "Part")(lambda _: self._select(str(self.part.value))))
+        for h, which in (
+            (self.start_xyz, "start"),
+            (self.start_rpy, "start"),
+            (self.goal_xyz, "goal"),
+            (self.goal_rpy, "goal"),
+        ):
+            h.on_update(guarded(s, f"Part {which}")(lambda _, w=which: self._on_typed(w)))
+        self.plan_button.on_click(guarded(s, "Plan part")(lambda e: self._on_plan(e, one=True)))
+        self.sequence_button.on_click(
+            guarded(s, "Plan sequence")(lambda e: self._on_plan(e, one=False))
+        )
+        self.download.on_click(guarded(s, "Export key points")(self._on_download))
+        self.prog_download.on_click(guarded(s, "Export program")(self._on_program))
+
+    def _build_scene(self) -> None:
+        s = self.app.server
+        a = self.wb.assembly
+        self.part_nodes = {}
+        for p in a.parts.values():
+            h = _add_mesh(s, f"/assembly/parts/{p.name}", p.mesh, p.color, p.start)
+            self.part_nodes[p.name] = h
+            self.nodes.append(h)
+        self.arm_nodes: dict[str, list[viser.MeshHandle]] = {}
+        for arm in a.arms.values():
+            if arm.main:
+                continue
+            poses = arm.setup.T_world_base @ arm.setup.model.link_transforms(arm.q_home)
+            hs = [
+                _add_mesh(s, f"/assembly/robots/{arm.name}/link{i}", m, arm.color, T)
+                for i, (m, T) in enumerate(zip(arm.setup.link_meshes, poses, strict=True))
+            ]
+            if arm.setup.tool_mesh is not None:
+                hs.append(
+                    _add_mesh(
+                        s,
+                        f"/assembly/robots/{arm.name}/tool",
+                        arm.setup.tool_mesh,
+                        (230, 180, 60),
+                        poses[-1],
+                    )
+                )
+            self.arm_nodes[arm.name] = hs
+            self.nodes.extend(hs)
+        self.goal_ghost: viser.MeshHandle | None = None
+        self.start_gizmo = s.scene.add_transform_controls(
+            "/assembly/start_gizmo", scale=0.12, depth_test=False
+        )
+        self.goal_gizmo = s.scene.add_transform_controls(
+            "/assembly/goal_gizmo", scale=0.12, depth_test=False
+        )
+        self.nodes += [self.start_gizmo, self.goal_gizmo]
+        self.start_gizmo.on_update(guarded(s, "Start gizmo")(lambda e: self._on_gizmo(e, "start")))
+        self.goal_gizmo.on_update(guarded(s, "Goal gizmo")(lambda e: self._on_gizmo(e, "goal")))
+        self.curve: viser.SceneNodeHandle | None = None
+        self.keys: viser.SceneNodeHandle | None = None
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
-        for h in self.handles:
+        for h in (*self.handles, *self.nodes):
             h.remove()
+        for extra in (getattr(self, "curve", None), getattr(self, "keys", None)):
+            if extra is not None:
+                extra.remove()
+        ghost = getattr(self, "goal_ghost", None)
+        if ghost is not None:
+            ghost.remove()
         self.handles.clear()
+        self.nodes.clear()
+
+    # -- state -> widgets and scene ------------------------------------------------------------
+    def _select(self, name: str) -> None:
+        a = self.wb.assembly
+        part = a.part(name)
+        s = self.app.server
+        if self.goal_ghost is not None:
+            self.goal_ghost.remove()
+        self.goal_ghost = s.scene.add_mesh_simple(
+            "/assembly/goal_ghost",
+            np.asarray(part.mesh.vertices, np.float32),
+            np.asarray(part.mesh.faces, np.uint32),
+            color=part.color,
+            opacity=0.35,
+        )
+        self._show_poses(name)
+
+    def _show_poses(self, name: str) -> None:
+        a = self.wb.assembly
+        part = a.part(name)
+        self._syncing = True
+        try:
+            for T, xyz, rpy in (
+                (part.start, self.start_xyz, self.start_rpy),
+                (part.goal, self.goal_xyz, self.goal_rpy),
+            ):
+                x, y, z = (round(float(v), 2) for v in T[:3, 3] / MM)
+                r, p, w = (round(float(v), 2) for v in matrix_to_rpy(T[:3, :3]) / DEG)
+                xyz.value = (x, y, z)  # type: ignore[misc]
+                rpy.value = (r, p, w)  # type: ignore[misc]
+        finally:
+            self._syncing = False
+        place(self.start_gizmo, part.start)
+        place(self.goal_gizmo, part.goal)
+        place(self.part_nodes[name], part.start)
+        assert self.goal_ghost is not None
+        place(self.goal_ghost, part.goal)
+        self._show_interference(name)
+
+    def _show_interference(self, name: str) -> None:
+        a = self.wb.assembly
+        part = a.part(name)
+        at_start = a.interference(name, part.start)
+        at_goal = a.interference(name, part.goal)
+        self.part_nodes[name].color = COLLISION_COLOR if at_start else part.color
+        if self.goal_ghost is not None:
+            self.goal_ghost.color = COLLISION_COLOR if at_goal else part.color
+        lines = []
+        for which, hit in (("start", at_start), ("goal", at_goal)):
+            lines.append(
+                f"**{which.capitalize()} interferes** with {', '.join(hit)}"
+                if hit
+                else f"{which.capitalize()}: interference-free"
+            )
+        robot = part.robot or "none (moves by itself)"
+        self.status.content = f"Carried by **{robot}**. " + "; ".join(lines)
+
+    # -- callbacks --------------------------------------------------------------------------------
+    def _set_pose(self, name: str, which: str, T: np.ndarray) -> None:
+        self.wb.assembly.set_pose(name, which, T)
+        self._show_poses(name)
+
+    def _on_typed(self, which: str) -> None:
+        if self._syncing:
+            return
+        xyz, rpy = (
+            (self.start_xyz, self.start_rpy) if which == "start" else (self.goal_xyz, self.goal_rpy)
+        )
+        T = xyz_rpy_to_transform(np.asarray(xyz.value) * MM, np.asarray(rpy.value) * DEG)
+        self._set_pose(str(self.part.value), which, T)
+
+    def _on_gizmo(self, event: viser.TransformControlsEvent, which: str) -> None:
+        if event.phase != "end":
+            return
+        gz = self.start_gizmo if which == "start" else self.goal_gizmo
+        T = make_transform(wxyz_to_matrix(np.asarray(gz.wxyz)), np.asarray(gz.position))
+        self._set_pose(str(self.part.value), which, T)
+
+    def _options(self) -> dict[str, object]:
+        planner = str(self.planner.value)
+        opts: dict[str, object] = {}
+        cell = float(self.cell.value)
+        if cell != 0.0 or self.wb.assembly.spec.planner.cell_size is not None:
+            opts["cell_size"] = cell * MM  # 0 or too large: the service says what is allowed
+        if planner == "ant":
+            opts["step"] = int(self.step.value)
+            if float(self.dis.value) > 0:
+                opts["dis"] = float(self.dis.value) * MM
+        return opts
+
+    def _on_plan(self, event: viser.GuiEvent, *, one: bool) -> None:
+        name = str(self.part.value)
+        self.plan_button.disabled = self.sequence_button.disabled = True
+        self.progress.visible = True
+        self.progress.value = 0.0  # type: ignore[misc]
+
+        def progress(fraction: float, message: str) -> None:
+            self.progress.value = 100.0 * fraction  # type: ignore[misc]
+            self.result.content = f"Planning: {message}"
+
+        try:
+            plan = self.wb.assembly.plan_sequence(
+                [name] if one else None,
+                str(self.planner.value),
+                progress=progress,
+                **self._options(),  # type: ignore[arg-type]
+            )
+        except Exception:
+            self.result.content = ""
+            raise
+        finally:
+            self.progress.visible = False
+            self.plan_button.disabled = self.sequence_button.disabled = False
+        self.plan = plan
+        pp = plan.tasks[0].part_plan if one else plan.tasks[-1].part_plan
+        self._show_path(pp.key_points, pp.samples)
+        r = pp.path
+        head = (
+            f"**{name}** ({r.planner}): **{len(r.poses)} key points**, "
+            f"length {r.length * 1000:.1f} mm, planned in {r.time_s * 1000:.1f} ms "
+            f"({r.checks} poses checked)"
+            if one
+            else f"**Sequence**: {plan.summary()}"
+        )
+        state = (
+            "collision-free" if plan.ok else f"**{int(plan.colliding.sum())} colliding samples**"
+        )
+        self.result.content = f"{head}\n\nTimed motion: {plan.duration:.2f} s, {state}"
+        self.download.disabled = False
+        self.prog_download.disabled = False
+        self.app.timeline.load(
+            self._motion(plan, "Assembly" if not one else f"Assembly: {name}"), follow=self._follow
+        )
+
+    def _show_path(self, keys: np.ndarray, samples: np.ndarray) -> None:
+        s = self.app.server
+        for h in (self.curve, self.keys):
+            if h is not None:
+                h.remove()
+        self.curve = s.scene.add_spline_catmull_rom(
+            "/assembly/path/curve",
+            points=np.asarray(samples[:, :3, 3], np.float32),
+            curve_type="chordal",
+            thickness=0.003,
+            color=PATH_COLOR,
+        )
+        self.keys = s.scene.add_point_cloud(
+            "/assembly/path/key_points",
+            points=np.asarray(keys[:, :3, 3], np.float32),
+            colors=KEY_COLOR,
+            point_size=0.012,
+            point_shape="circle",
+        )
+
+    def _motion(self, plan: AssemblyPlan, name: str) -> Motion:
+        a = self.wb.assembly
+        main = next(arm for arm in a.arms.values() if arm.main)
+        q = plan.joints[main.name]
+        T = main.setup.T_world_base @ main.setup.model.fk(q) @ main.setup.T_flange_tcp
+        p = T[:, :3, 3]
+        speed = (
+            np.linalg.norm(np.gradient(p, plan.times, axis=0), axis=1)
+            if len(p) > 1
+            else np.zeros(1)
+        )
+        return Motion(
+            name=name,
+            times=plan.times,
+            positions=q,
+            velocities=plan.velocities[main.name],
+            accelerations=plan.accelerations[main.name],
+            tcp_speed=speed,
+            colliding=plan.colliding,
+            velocity_limits=np.asarray(main.setup.model.max_velocity),
+            acceleration_limits=np.asarray(main.setup.model.max_acceleration),
+        )
+
+    def _follow(self, t: float) -> None:
+        plan = self.plan
+        if plan is None:
+            return
+        a = self.wb.assembly
+        i = int(np.clip(np.searchsorted(plan.times, t), 0, len(plan.times) - 1))
+        with self.app.server.atomic():
+            for name, h in self.part_nodes.items():
+                place(h, plan.part_poses[name][i])
+                hit = i in plan.part_interference.get(name, ())
+                h.color = COLLISION_COLOR if hit else a.part(name).color
+            for rname, hs in self.arm_nodes.items():
+                arm = a.arms[rname]
+                poses = arm.setup.T_world_base @ arm.setup.model.link_transforms(
+                    plan.joints_at(rname, t)
+                )
+                for k, h in enumerate(hs):
+                    place(h, poses[min(k, len(poses) - 1)])
+
+    def _on_download(self, event: viser.GuiEvent) -> None:
+        fmt = str(self.format.value)
+        text = self.wb.assembly.export_key_points(fmt)
+        if event.client is not None:
+            plan = self.wb.assembly.last_part_plan
+            stem = plan.part if plan is not None else "part"
+            event.client.send_file_download(
+                f"{stem}_key_points.{fmt}", text.encode(), save_immediately=True
+            )
+
+    def _on_program(self, event: viser.GuiEvent) -> None:
+        robot, fmt = str(self.prog_robot.value), str(self.prog_format.value)
+        text = self.wb.assembly.export_program(robot, fmt, self.plan)
+        if event.client is not None:
+            name = f"assembly_{robot}{EXPORT_FORMATS[fmt]}"
+            event.client.send_file_download(name, text.encode(), save_immediately=True)

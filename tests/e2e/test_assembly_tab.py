@@ -1,0 +1,117 @@
+"""The Assembly tab in a real Chromium: pick a planner, plan a part, see interference, play, export."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from browser_helpers import canvas_png, set_slider, wait_for
+
+pytestmark = pytest.mark.e2e
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _type_vector(page, label: str, index: int, value: float) -> None:  # type: ignore[no-untyped-def]
+    """Type `value` into box `index` (0 x, 1 y, 2 z) of the viser vector input labelled `label`."""
+    row = (
+        page.locator(".mantine-Flex-root, div")
+        .filter(has=page.get_by_text(label, exact=True))
+        .filter(has=page.locator("input"))
+        .last
+    )
+    box = row.locator("input").nth(index)
+    box.click()
+    box.fill(f"{value}")
+    box.press("Enter")
+
+
+def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(ROOT / "projects" / "assembly_cell.json")
+    a = app.wb.assembly
+    page.get_by_role("tab", name="Assembly").click(timeout=90_000)  # slow when the machine is busy
+    page.get_by_text("Plan part").wait_for(timeout=15_000)
+
+    # Change a control: the planner.
+    page.get_by_role("combobox", name="Planner").click()
+    page.get_by_role("option", name="rrt_connect").click()
+    wait_for(lambda: app.assembly.planner.value == "rrt_connect", what="the planner on the server")
+
+    before = canvas_png(page)
+    page.get_by_role("button", name="Plan part").click()
+    wait_for(lambda: app.assembly.plan is not None, timeout=90, what="the part plan on the server")
+    pp = a.last_part_plan
+    assert pp is not None and pp.part == "plate_a" and pp.path.planner == "rrt_connect"
+    np.testing.assert_allclose(pp.key_points[-1], a.part("plate_a").goal, atol=1e-12)
+    page.get_by_text(f"{len(pp.key_points)} key points").first.wait_for(timeout=15_000)
+    plan = app.assembly.plan
+    assert app.timeline.motion is not None
+    assert app.timeline.motion.duration == pytest.approx(plan.duration, abs=1e-9)
+    page.get_by_text(f"{plan.duration:.2f} s, collision-free").first.wait_for(timeout=15_000)
+    page.wait_for_timeout(800)
+    assert canvas_png(page) != before, "the path did not appear in the 3D view"
+
+    # Scrub: the carried plate follows the robot's FK at the typed time.
+    t = round(0.5 * (plan.tasks[0].t_pick + plan.tasks[0].t_place), 2)
+    set_slider(page, "Time [s]", t)
+    wait_for(lambda: abs(app.timeline.time.value - t) < 1e-6, what="the timeline at the typed time")
+    i = int(np.searchsorted(plan.times, t))
+    expected = plan.part_poses["plate_a"][i][:3, 3]
+    wait_for(
+        lambda: np.allclose(app.assembly.part_nodes["plate_a"].position, expected, atol=1e-6),
+        what="plate_a carried along its path",
+    )
+
+    # Export: the downloaded CSV is the server's export of the key points.
+    with page.expect_download() as dl:
+        page.get_by_role("button", name="Download key points").click()
+    text = Path(dl.value.path()).read_text()
+    assert text == a.export_key_points("csv")
+    assert text.startswith("index,x,y,z,roll,pitch,yaw")
+
+    # Interference shown as found: a typed goal inside the table is reported and refused.
+    z_goal = round(float(a.part("plate_a").goal[2, 3]) * 1000, 3)
+    _type_vector(page, "Goal xyz [mm]", 2, 690.0)
+    wait_for(lambda: abs(a.part("plate_a").goal[2, 3] - 0.690) < 1e-9, what="the typed goal")
+    page.get_by_text("Goal interferes with table").first.wait_for(timeout=15_000)
+    assert a.interference("plate_a", a.part("plate_a").goal) == ["table"]
+    page.get_by_role("button", name="Plan part").click()
+    page.get_by_text("interferes with ['table']").first.wait_for(timeout=30_000)
+    _type_vector(page, "Goal xyz [mm]", 2, z_goal)
+    wait_for(lambda: a.interference("plate_a", a.part("plate_a").goal) == [], what="goal clear")
+
+    # The whole sequence (plates first, then screws) on the timeline, with both arms.
+    page.get_by_role("button", name="Plan sequence").click()
+    wait_for(
+        lambda: app.assembly.plan is not None and len(app.assembly.plan.tasks) == 7,
+        timeout=120,
+        what="the sequence plan",
+    )
+    seq = app.assembly.plan
+    assert [task.part for task in seq.tasks][:2] == ["plate_a", "plate_b"] and seq.ok
+    page.get_by_text(f"cycle time {seq.duration:.3f} s").first.wait_for(timeout=15_000)
+    task = seq.tasks[1]  # plate_b, carried by the second arm
+    t = round(0.5 * (task.t_pick + task.t_place), 2)
+    set_slider(page, "Time [s]", t)
+    wait_for(lambda: abs(app.timeline.time.value - t) < 1e-6, what="the time in the sequence")
+    arm = a.arms["MZ07_B"]
+    T = arm.setup.T_world_base @ arm.setup.model.link_transforms(seq.joints_at("MZ07_B", t))
+    wait_for(
+        lambda: np.allclose(app.assembly.arm_nodes["MZ07_B"][3].position, T[3][:3, 3], atol=1e-6),
+        what="the second arm at its planned joints",
+    )
+    for close in page.locator("button.mantine-Notification-closeButton").all():
+        close.click()  # the refused goal's notification, handled above
+    page.wait_for_timeout(1500)
+    page.screenshot(path=str(ROOT / "docs" / "assembly.png"))
+
+    # The second arm's share of the sequence, as a RAPID module.
+    page.get_by_role("combobox", name="Program of").click()
+    page.get_by_role("option", name="MZ07_B").click()
+    wait_for(lambda: app.assembly.prog_robot.value == "MZ07_B", what="the program's robot")
+    with page.expect_download() as dl:
+        page.get_by_role("button", name="Download robot program").click()
+    text = Path(dl.value.path()).read_text()
+    assert text == a.export_program("MZ07_B", "rapid", seq)
+    assert text.startswith("MODULE assembly_MZ07_B") and "MoveAbsJ" in text
