@@ -1,13 +1,72 @@
-"""The "Polishing" tab."""
+"""The "Polishing" tab: workpiece upload, fitted surface, path planning, force-control simulation."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import functools
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
+import numpy as np
+import viser
+import viser.uplot as uplot
+from numpy.typing import NDArray
+
+from workbench.errors import InputError, WorkbenchError
 from workbench.gui.handles import Removable
+from workbench.gui.motion_panel import plan_to_motion
+from workbench.gui.notify import guarded
+from workbench.service import EXPORT_FORMATS
+from workbench.service.polishing import PolishingPath, PolishingSimulation
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
+
+MM = 1e-3
+SURFACE_COLOR = (120, 170, 220)
+PATH_COLOR = (30, 60, 200)
+AXIS_COLOR = (240, 140, 20)
+LEAD_IN_COLOR = (20, 170, 60)
+LEAD_OUT_COLOR = (200, 30, 160)
+GAP_COLOR = (220, 30, 30)
+#: Most tool axes drawn along a path, and most samples sent per plot series.
+MAX_AXES = 250
+MAX_PLOT_POINTS = 4000
+#: Largest mesh whose fitted surface is drawn subdivided (one level: 4 triangles per patch).
+MAX_SUBDIVIDED_FACES = 60000
+MESH_TYPES = (".stl", ".obj", ".ply")
+
+
+def fitted_surface_mesh(surface: Any) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """Return (vertices, faces) of the fitted Bézier surface, each patch split into 4 triangles
+    through its edge midpoints evaluated on the patch (the flat mesh for very large meshes)."""
+    faces = np.asarray(surface.faces)
+    if len(faces) > MAX_SUBDIVIDED_FACES:
+        return np.asarray(surface.vertices), faces
+    f = np.arange(len(faces))
+    mids = np.array([[0.5, 0.5, 0.0], [0.0, 0.5, 0.5], [0.5, 0.0, 0.5]])
+    pts = surface.evaluate(np.repeat(f, 3), np.tile(mids, (len(faces), 1))).reshape(-1, 3, 3)
+    nv = len(surface.vertices)
+    m = nv + 3 * f[:, None] + np.arange(3)[None, :]  # ab, bc, ca midpoints (not shared: fine)
+    a, b, c = faces[:, 0], faces[:, 1], faces[:, 2]
+    tris = np.concatenate(
+        [
+            np.stack([a, m[:, 0], m[:, 2]], 1),
+            np.stack([m[:, 0], b, m[:, 1]], 1),
+            np.stack([m[:, 2], m[:, 1], c], 1),
+            np.stack([m[:, 0], m[:, 1], m[:, 2]], 1),
+        ]
+    )
+    return np.vstack([surface.vertices, pts.reshape(-1, 3)]), tris
+
+
+def _segments(points: NDArray[np.float64]) -> NDArray[np.float32]:
+    return np.stack([points[:-1], points[1:]], axis=1).astype(np.float32)
+
+
+def _stride(n: int) -> int:
+    return max(1, int(np.ceil(n / MAX_PLOT_POINTS)))
 
 
 class PolishingPanel:
@@ -15,13 +74,291 @@ class PolishingPanel:
 
     def __init__(self, app: WorkbenchApp) -> None:
         self.app = app
+        self.server = app.server
+        self.handles: list[Removable] = []
+        self.nodes: dict[str, Removable] = {}
+        self.plots: list[Removable] = []
         g = app.server.gui
-        self.handles: list[Removable] = [
-            g.add_markdown("This project has no `polishing` section.")
+        if app.wb.project.polishing is None:
+            self.handles.append(g.add_markdown("This project has no `polishing` section."))
+            return
+        self.svc = app.wb.polishing
+        spec = self.svc.spec
+        # The parent of the tab's scene nodes, made explicitly so `remove` can remove it.
+        self.root: Removable | None = app.server.scene.add_frame("/polishing", show_axes=False)
+        guard = guarded(app.server, "Polishing")
+        self.workpiece_info = g.add_markdown("")
+        self.upload = g.add_upload_button(
+            "Upload workpiece", icon=viser.Icon.UPLOAD, mime_type=",".join(MESH_TYPES)
+        )
+        self.units = g.add_dropdown(
+            "Units", options=("mm", "m", "auto"), initial_value=spec.units, hint="of the mesh file"
+        )
+        self.pattern = g.add_dropdown(
+            "Pattern", options=("spiral", "raster"), initial_value=spec.pattern
+        )
+        self.step = g.add_slider("Step [mm]", min=0.5, max=20.0, step=0.5, initial_value=spec.step)
+        self.spacing = g.add_slider(
+            "Spacing [mm]", min=2.0, max=60.0, step=1.0, initial_value=spec.spacing
+        )
+        self.force = g.add_slider(
+            "Force [N]", min=1.0, max=float(spec.max_force), step=1.0, initial_value=spec.force
+        )
+        self.feed = g.add_slider(
+            "Feed [mm/s]",
+            min=1.0,
+            max=float(min(200.0, spec.controller.max_speed)),
+            step=1.0,
+            initial_value=spec.feed,
+        )
+        self.plan_button = g.add_button("Plan path", icon=viser.Icon.ROUTE)
+        self.sim_button = g.add_button("Simulate", icon=viser.Icon.PLAYER_PLAY, disabled=True)
+        self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
+        self.path_info = g.add_markdown("")
+        self.sim_info = g.add_markdown("")
+        self.format = g.add_dropdown(
+            "Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+        )
+        self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.plot_folder = g.add_folder("Force control", expand_by_default=True)
+        self.handles += [
+            self.workpiece_info,
+            self.upload,
+            self.units,
+            self.pattern,
+            self.step,
+            self.spacing,
+            self.force,
+            self.feed,
+            self.plan_button,
+            self.sim_button,
+            self.progress,
+            self.path_info,
+            self.sim_info,
+            self.format,
+            self.download,
+            self.plot_folder,
         ]
+        self.upload.on_upload(guard(self._on_upload))
+        for h in (self.pattern, self.step, self.spacing, self.force, self.feed):
+            h.on_update(guard(self._on_parameter))
+        self.plan_button.on_click(guard(self._on_plan))
+        self.sim_button.on_click(guard(self._on_simulate))
+        self.download.on_click(guard(self._on_download))
+        try:
+            self.svc.load_workpiece()
+        except WorkbenchError as exc:
+            self.workpiece_info.content = f"**Workpiece not loaded:** {exc}"
+            self.plan_button.disabled = True
+            return
+        self._show_workpiece()
+
+    # -- scene ---------------------------------------------------------------------------
+    def _set_node(self, name: str, make: Callable[[], Removable] | None) -> None:
+        # Remove the old node first: viser replaces a node of the same name, and removing
+        # the old handle afterwards would remove the new node.
+        old = self.nodes.pop(name, None)
+        if old is not None:
+            old.remove()
+        if make is not None:
+            self.nodes[name] = make()
+
+    def _clear_path_nodes(self) -> None:
+        for name in ("path", "leads_in", "leads_out", "axes", "gaps"):
+            self._set_node(name, None)
+
+    def _show_workpiece(self) -> None:
+        rep = self.svc.report
+        warn = "; ".join(rep.warnings) if rep.warnings else "no defects found"
+        self.workpiece_info.content = (
+            f"**Workpiece** `{Path(rep.path).name}` ({rep.units}): {rep.n_faces} triangles, "
+            f"diagonal {rep.bbox_diagonal / MM:.0f} mm, {rep.n_holes} holes, "
+            f"{rep.n_nonmanifold_edges} non-manifold edges; {warn}."
+        )
+        vertices, faces = fitted_surface_mesh(self.svc.surface)
+        self._set_node(
+            "surface",
+            lambda: self.server.scene.add_mesh_simple(
+                "/polishing/surface",
+                vertices.astype(np.float32),
+                faces.astype(np.uint32),
+                color=SURFACE_COLOR,
+                side="double",
+                cast_shadow=False,
+                receive_shadow=False,
+            ),
+        )
+        self._clear_path_nodes()
+
+    def _show_path(self, pp: PolishingPath) -> None:
+        p = pp.path
+        scene = self.server.scene
+        proc = p.points[p.is_process]
+        self._set_node(
+            "path",
+            lambda: scene.add_line_segments(
+                "/polishing/path", _segments(proc), PATH_COLOR, thickness=0.0015
+            ),
+        )
+        for name, mask, color in (
+            ("leads_in", p.is_lead_in, LEAD_IN_COLOR),
+            ("leads_out", p.is_lead_out, LEAD_OUT_COLOR),
+        ):
+            self._set_node(
+                name,
+                functools.partial(
+                    scene.add_point_cloud,
+                    f"/polishing/{name}",
+                    p.points[mask].astype(np.float32),
+                    color,
+                    point_size=0.008,
+                    point_shape="circle",
+                ),
+            )
+        idx = np.flatnonzero(p.is_process)[:: max(1, int(p.is_process.sum()) // MAX_AXES)]
+        base = p.points[idx]
+        tip = base - 0.03 * p.tool_z[idx]  # the tool axis, drawn 30 mm above the surface
+        self._set_node(
+            "axes",
+            lambda: scene.add_line_segments(
+                "/polishing/axes",
+                np.stack([tip, base], axis=1).astype(np.float32),
+                AXIS_COLOR,
+                thickness=0.001,
+            ),
+        )
+        cov = pp.coverage
+        gaps = cov.samples[cov.distance > cov.tool_radius]
+        self._set_node(
+            "gaps",
+            lambda: scene.add_point_cloud(
+                "/polishing/gaps",
+                gaps.astype(np.float32) if len(gaps) else np.zeros((1, 3), np.float32),
+                GAP_COLOR,
+                point_size=0.003,
+                visible=bool(len(gaps)),
+            ),
+        )
+
+    # -- callbacks -----------------------------------------------------------------------
+    def _busy(self, on: bool) -> None:
+        self.plan_button.disabled = on
+        self.sim_button.disabled = on or self.svc.last_path is None
+        self.progress.visible = on
+        if on:
+            self.progress.value = 0.0  # type: ignore[misc]
+
+    def _report(self, fraction: float, message: str) -> None:
+        self.progress.value = 100.0 * fraction  # type: ignore[misc]
+
+    def _on_upload(self, event: viser.GuiEvent) -> None:
+        up = self.upload.value
+        name = Path(up.name).name or "workpiece.stl"
+        if Path(name).suffix.lower() not in MESH_TYPES:
+            raise InputError(f"workpiece {name!r}: give an STL, OBJ or PLY file")
+        folder = Path(tempfile.mkdtemp(prefix="workbench-workpiece-"))
+        path = folder / name
+        path.write_bytes(up.content)
+        self.svc.load_workpiece(path, units=str(self.units.value))
+        self._show_workpiece()
+        self.path_info.content = ""
+        self.sim_info.content = ""
+        self.sim_button.disabled = True
+        self.download.disabled = True
+
+    def _on_parameter(self, event: viser.GuiEvent) -> None:
+        self.svc.set_parameters(
+            pattern=str(self.pattern.value),
+            step=float(self.step.value) * MM,
+            spacing=float(self.spacing.value) * MM,
+            force=float(self.force.value),
+            feed=float(self.feed.value) * MM,
+        )
+        self.sim_button.disabled = True
+        self.download.disabled = True
+
+    def _on_plan(self, event: viser.GuiEvent) -> None:
+        self._busy(True)
+        try:
+            pp = self.svc.plan_path(progress=self._report)
+        finally:
+            self._busy(False)
+        self._show_path(pp)
+        self.path_info.content = (
+            f"**Path** {pp.summary()}. Lead-in points green, lead-out magenta, tool axes "
+            "orange, uncovered surface red."
+        )
+        self.sim_info.content = ""
+        self.sim_button.disabled = False
+
+    def _on_simulate(self, event: viser.GuiEvent) -> None:
+        self._busy(True)
+        try:
+            motion = self.svc.plan_motion(progress=lambda f, m: self._report(0.7 * f, m))
+            sim = self.svc.simulate(progress=lambda f, m: self._report(0.7 + 0.3 * f, m))
+        finally:
+            self._busy(False)
+        self._show_plots(sim)
+        self.sim_info.content = (
+            f"**Simulation** {sim.summary()}.\n\n**Robot** ({self.svc.configuration}): "
+            f"{motion.summary()}."
+        )
+        self.download.disabled = False
+        self.app.timeline.load(plan_to_motion(motion, self.app.wb))
+
+    def _show_plots(self, sim: PolishingSimulation) -> None:
+        for p in self.plots:
+            p.remove()
+        r = sim.result
+        k = _stride(len(r.t))
+        t = r.t[::k]
+        x = uplot.Series(label="t [s]")
+        g = self.server.gui
+        with self.plot_folder:
+            self.plots = self._plots(g, sim, t, x, k)
+
+    def _plots(
+        self, g: Any, sim: PolishingSimulation, t: NDArray[np.float64], x: Any, k: int
+    ) -> list[Removable]:
+        r = sim.result
+        return [
+            g.add_uplot(
+                data=(t, r.force[::k], r.force_measured[::k], np.full_like(t, sim.target_force)),
+                series=(
+                    x,
+                    uplot.Series(label="contact force [N]", stroke="#1f77b4", width=1.5),
+                    uplot.Series(label="measured [N]", stroke="#9ecae1", width=1),
+                    uplot.Series(label="target [N]", stroke="#d62728", dash=(6.0, 4.0), width=1),
+                ),
+                title="Contact force vs target [N]",
+                scales={"x": uplot.Scale(time=False)},
+                aspect=1.6,
+            ),
+            g.add_uplot(
+                data=(t, r.tracking_error[::k] / MM),
+                series=(x, uplot.Series(label="tracking error [mm]", stroke="#2ca02c", width=1.5)),
+                title="Tracking error [mm]",
+                scales={"x": uplot.Scale(time=False)},
+                aspect=1.6,
+            ),
+        ]
+
+    def _on_download(self, event: viser.GuiEvent) -> None:
+        fmt = str(self.format.value)
+        text = self.svc.export_program(fmt)
+        if event.client is not None:
+            event.client.send_file_download(
+                "polish" + EXPORT_FORMATS[fmt], text.encode(), save_immediately=True
+            )
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
-        for h in self.handles:
+        for h in [*self.plots, *self.nodes.values(), *self.handles]:
             h.remove()
+        if getattr(self, "root", None) is not None:
+            assert self.root is not None
+            self.root.remove()
+            self.root = None
         self.handles.clear()
+        self.plots.clear()
+        self.nodes.clear()

@@ -1,9 +1,99 @@
-"""The project file's `polishing` section: polishing (seed 004): workpiece, tool path and force control."""
+"""The project file's `polishing` section: polishing free-form surfaces (seed 004).
+
+Millimetres, degrees, newtons and seconds, as in the rest of the file; the contact
+stiffness is in N/m (seed 004 prints N/m², a typo). The workpiece is a mesh file (STL,
+OBJ or PLY) relative to the project file, placed in the world at `pose`.
+"""
 
 from __future__ import annotations
 
-from workbench.project.common import StrictModel
+from typing import Annotated, Literal
+
+from pydantic import Field, ValidationInfo, field_validator, model_validator
+
+from workbench.project.common import Pose, Positive, StrictModel
+
+NonNegative = Annotated[float, Field(ge=0)]
+
+
+class ForceControllerSpec(StrictModel):
+    """Gains of the force/position hybrid controller (seed 004, eqs. 5-6) and robot limits."""
+
+    control_rate: Positive = 250.0  # [Hz] controller and speedl command rate
+    latency: NonNegative = 8.0  # [ms] from command to motion
+    kpp: NonNegative = 8.0  # [1/s] position loop P gain
+    kpd: NonNegative = 0.05  # [-] position loop D gain (on the error rate)
+    kfp: NonNegative = 6.0  # [(mm/s)/N] force loop P gain
+    kfi: NonNegative = 50.0  # [(mm/s)/(N s)] force loop I gain
+    max_speed: Positive = 250.0  # [mm/s] speed limit of the commanded TCP velocity
+    max_accel: Positive = 4000.0  # [mm/s²] limit on the change of the command
+
+    @model_validator(mode="after")
+    def _some_force_gain(self) -> ForceControllerSpec:
+        if self.kfp == 0 and self.kfi == 0:
+            raise ValueError(
+                "kfp and kfi are both 0: the force loop would do nothing; give kfp > 0 "
+                "[(mm/s)/N] or kfi > 0 [(mm/s)/(N s)]"
+            )
+        return self
+
+
+class ContactSpec(StrictModel):
+    """The compliant contact of the simulation: spring-damper, friction, form error, sensor."""
+
+    stiffness: Positive = 5000.0  # k [N/m]; the force offset is D = F/k
+    damping: NonNegative = 10.0  # c [N s/m]
+    friction: NonNegative = 0.3  # mu [-], Coulomb
+    lateral_stiffness: Positive = 2.0e5  # [N/m] tool tip compliance against friction
+    form_error: NonNegative = 0.3  # [mm] amplitude of the surface form error along the normal
+    form_wavelength: Positive = 60.0  # [mm] its wavelength along the path
+    noise_std: NonNegative = 0.5  # [N] force sensor noise, standard deviation
+    filter_cutoff: Positive = 40.0  # [Hz] first-order low-pass of the force sensor
+    seed: Annotated[int, Field(ge=0)] = 0  # noise generator seed
 
 
 class PolishingSpec(StrictModel):
-    """The `polishing` section (mm, deg)."""
+    """The `polishing` section (mm, deg, N, s)."""
+
+    workpiece: str  # mesh file (STL, OBJ, PLY), relative to the project file
+    units: Literal["auto", "mm", "m"] = "mm"  # units of the mesh file
+    pose: Pose = Field(default_factory=Pose)  # workpiece frame in the world
+    pattern: Literal["spiral", "raster"] = "spiral"
+    step: Positive = 2.0  # [mm] chord between consecutive path points
+    spacing: Positive = 10.0  # [mm] distance between neighbouring passes on the surface
+    tool_radius: Positive = 6.0  # [mm] radius of the polishing pad (coverage)
+    lead_height: Positive = 10.0  # [mm] height of the first lead-in / last lead-out point
+    n_lead: Annotated[int, Field(ge=1, le=50)] = 3  # lead-in and lead-out points each
+    feed: Positive = 10.0  # [mm/s] feed speed along the path
+    dwell: NonNegative = 0.5  # [s] at the first point before the feed starts (force build-up)
+    max_force: Positive = 100.0  # [N] the tool's force limit
+    force: float = 20.0  # [N] target contact force, in (0, max_force]
+    controller: ForceControllerSpec = Field(default_factory=ForceControllerSpec)
+    contact: ContactSpec = Field(default_factory=ContactSpec)
+
+    @field_validator("force")
+    @classmethod
+    def _force_in_range(cls, v: float, info: ValidationInfo) -> float:
+        limit = info.data.get("max_force")
+        if not v > 0:
+            raise ValueError(f"must be > 0 N (the target contact force), got {v:g}")
+        if limit is not None and v > limit:
+            raise ValueError(
+                f"{v:g} N is above the tool's limit max_force = {limit:g} N; give a force in "
+                f"(0, {limit:g}] N or raise max_force if the tool allows it"
+            )
+        return v
+
+    @model_validator(mode="after")
+    def _feed_below_limit(self) -> PolishingSpec:
+        if self.feed > self.controller.max_speed:
+            raise ValueError(
+                f"feed = {self.feed:g} mm/s is above controller.max_speed = "
+                f"{self.controller.max_speed:g} mm/s; lower the feed"
+            )
+        if self.force > self.max_force:
+            raise ValueError(
+                f"force = {self.force:g} N is above the tool's limit max_force = "
+                f"{self.max_force:g} N; give a force in (0, {self.max_force:g}] N"
+            )
+        return self

@@ -1,0 +1,103 @@
+"""The Polishing tab in a real Chromium: set spacing and force, plan the path, simulate."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from browser_helpers import canvas_png, set_slider, wait_for
+
+pytestmark = pytest.mark.e2e
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def workpiece_png(page) -> bytes:  # type: ignore[no-untyped-def]
+    """Return a PNG of the part of the 3D view around the workpiece (launch's camera)."""
+    return page.screenshot(clip={"x": 520, "y": 300, "width": 300, "height": 220})
+
+
+def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(ROOT / "projects" / "polishing_cell.json")
+    svc = app.wb.polishing
+    # Software WebGL on a loaded machine can keep the page busy for a while: be patient.
+    page.get_by_role("tab", name="Polishing").click(timeout=90_000)
+    page.get_by_text("panel.stl").first.wait_for(timeout=15_000)
+    page.wait_for_timeout(1500)
+    before = workpiece_png(page)
+
+    # Change controls: the section on the server follows.
+    set_slider(page, "Spacing [mm]", 25)
+    set_slider(page, "Force [N]", 30)
+    spec = lambda: app.wb.project.polishing  # noqa: E731
+    wait_for(lambda: spec().spacing == 25.0 and spec().force == 30.0, what="spacing and force")
+
+    page.get_by_role("button", name="Plan path").click()
+    wait_for(lambda: svc.last_path is not None, timeout=60, what="the path on the server")
+    pp = svc.last_path
+    assert pp.path.spacing == pytest.approx(0.025) and pp.force == 30.0
+    assert pp.offset == pytest.approx(30.0 / 5000.0)
+    # The page shows the server's coverage, and the path appears in the 3D view.
+    page.get_by_text(f"coverage {pp.coverage.fraction * 100:.1f} %").first.wait_for(timeout=15_000)
+    assert "path" in app.polishing.nodes and "leads_in" in app.polishing.nodes
+    page.wait_for_timeout(1500)
+    assert workpiece_png(page) != before, "the path did not appear in the 3D view"
+
+    page.get_by_role("button", name="Simulate").click()
+    wait_for(lambda: svc.last_simulation is not None, timeout=120, what="the simulation")
+    sim = svc.last_simulation
+    assert sim.target_force == 30.0
+    assert sim.max_force_error < 4.0
+    page.get_by_text(f"±{sim.max_force_error:.2f} N").first.wait_for(timeout=15_000)
+    page.get_by_text("Contact force vs target [N]").first.wait_for(timeout=15_000)
+    # The robot runs the path on the shared timeline.
+    motion = app.timeline.motion
+    assert motion is not None and svc.last_motion is not None
+    assert motion.duration == pytest.approx(svc.last_motion.cycle_time)
+    q0 = motion.at(0.0)
+    np.testing.assert_allclose(q0, svc.last_motion.trajectory.waypoints[0], atol=1e-9)
+    # Scrubbing the timeline moves the robot in the view.
+    shot = canvas_png(page)
+    set_slider(page, "Time [s]", round(motion.duration / 2, 2))
+    wait_for(lambda: app.timeline.time.value > 1.0, what="the timeline to move")
+    page.wait_for_timeout(1000)
+    assert canvas_png(page) != shot, "the robot did not move with the timeline"
+
+    # A closer view of the tab in action for the docs: the server moves the camera.
+    for client in app.server.get_clients().values():
+        client.camera.position = (1.0, -0.75, 0.8)
+        client.camera.look_at = (0.45, 0.0, 0.33)
+    page.get_by_text("Simulation").first.scroll_into_view_if_needed()
+    page.wait_for_timeout(2500)
+    page.screenshot(path=str(ROOT / "docs" / "polishing.png"))
+
+
+def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(ROOT / "projects" / "polishing_cell.json")
+    svc = app.wb.polishing
+    page.get_by_role("tab", name="Polishing").click(timeout=90_000)
+    page.get_by_text("4602 triangles").first.wait_for(timeout=15_000)
+
+    # An empty file is refused with a notification; the loaded workpiece stays.
+    empty = tmp_path / "empty.stl"
+    empty.write_bytes(b"")
+    with page.expect_file_chooser() as fc:
+        page.get_by_role("button", name="Upload workpiece").click()
+    fc.value.set_files(str(empty))
+    page.get_by_text("is empty").first.wait_for(timeout=20_000)
+    assert svc.report.n_faces == 4602
+
+    # A coarser panel in mm replaces it: the report and the fitted surface follow.
+    from workbench.polishing.example_workpiece import make_panel
+
+    mesh = make_panel(21, 15)
+    mesh.apply_scale(1000.0)
+    coarse = tmp_path / "coarse.stl"
+    mesh.export(str(coarse))
+    with page.expect_file_chooser() as fc:
+        page.get_by_role("button", name="Upload workpiece").click()
+    fc.value.set_files(str(coarse))
+    wait_for(lambda: svc.report.n_faces == len(mesh.faces), timeout=20, what="the new workpiece")
+    page.get_by_text(f"{len(mesh.faces)} triangles").first.wait_for(timeout=15_000)
+    assert app.wb.project.polishing.workpiece.endswith("coarse.stl")
