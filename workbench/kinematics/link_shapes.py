@@ -142,6 +142,12 @@ def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[tri
         else:
             need = 1.05 * r_fore
         flange_start = min(need, abs(dh[n - 1, 1]) - FLANGE_THICKNESS * scale)
+    # The forearm (link n-2) starts outside the upper arm's elbow housing, as a real forearm
+    # sits beside it: otherwise folding the elbow a little makes the two meet.
+    fore_start = 0.0
+    if wrist:
+        e = n - 5  # the upper arm, which carries the elbow housing
+        fore_start = math.sqrt(max((h[e] + r[n - 3]) ** 2 - dh[n - 4, 2] ** 2, 0.0))
     # Base: a cylinder up the joint-1 axis, half as tall as the shoulder height.
     base_h = max(0.5 * abs(dh[0, 1]), 0.1 * scale)
     base_sign = 1.0 if dh[0, 1] >= 0 else -1.0
@@ -167,6 +173,8 @@ def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[tri
                 start = OVERLAP * _exit_distance(u, prev_radius, prev_half)
                 if i == n - 1:
                     start = max(start, flange_start)
+                if wrist and i == n - 3:
+                    start = max(start, fore_start)
                 if start >= length:
                     continue
                 p = p + start * u
@@ -174,12 +182,14 @@ def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[tri
         # Housing of joint i+1 (or the flange plate on the last link), in frame i.
         if i < n - 1:
             lo_z, hi_z = -ell[i], ell[i]
+            # Reach out along the next joint's axis to where the next link starts.
+            reach = 0.0
             if wrist and i == n - 2:
-                # Reach out along the last joint's axis to where the flange link starts.
-                reach = 1.02 * flange_start
-                lo_z, hi_z = (
-                    (min(lo_z, -reach), hi_z) if dh[n - 1, 1] < 0 else (lo_z, max(hi_z, reach))
-                )
+                reach, d_next = 1.02 * flange_start, dh[n - 1, 1]
+            elif wrist and i == n - 4:
+                reach, d_next = 1.02 * fore_start, dh[n - 3, 1]
+            if reach > 0.0:
+                lo_z, hi_z = (min(lo_z, -reach), hi_z) if d_next < 0 else (lo_z, max(hi_z, reach))
             housing = _cylinder_points(np.array([0.0, 0.0, lo_z]), np.array([0.0, 0.0, hi_z]), h[i])
         else:
             t = FLANGE_THICKNESS * scale
