@@ -15,6 +15,7 @@ from workbench.geometry.transforms import (
 )
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
+from workbench.gui.progress import busy
 from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
 from workbench.gui.timeline import Motion
 from workbench.service import EXPORT_FORMATS
@@ -277,27 +278,18 @@ class AssemblyPanel:
 
     def _on_plan(self, event: viser.GuiEvent, *, one: bool) -> None:
         name = str(self.part.value)
-        self.plan_button.disabled = self.sequence_button.disabled = True
-        self.progress.visible = True
-        self.progress.value = 0.0  # type: ignore[misc]
-
-        def progress(fraction: float, message: str) -> None:
-            self.progress.value = 100.0 * fraction  # type: ignore[misc]
-            self.result.content = f"Planning: {message}"
-
+        buttons = [self.plan_button, self.sequence_button]
         try:
-            plan = self.wb.assembly.plan_sequence(
-                [name] if one else None,
-                str(self.planner.value),
-                progress=progress,
-                **self._options(),  # type: ignore[arg-type]
-            )
+            with busy(self.progress, buttons, self.result) as progress:
+                plan = self.wb.assembly.plan_sequence(
+                    [name] if one else None,
+                    str(self.planner.value),
+                    progress=progress,
+                    **self._options(),  # type: ignore[arg-type]
+                )
         except Exception:
             self.result.content = ""
             raise
-        finally:
-            self.progress.visible = False
-            self.plan_button.disabled = self.sequence_button.disabled = False
         self.plan = plan
         pp = plan.tasks[0].part_plan if one else plan.tasks[-1].part_plan
         self._show_path(pp.key_points, pp.samples)

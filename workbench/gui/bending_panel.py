@@ -15,6 +15,7 @@ from workbench.errors import WorkbenchError
 from workbench.geometry.transforms import make_transform
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
+from workbench.gui.progress import busy
 from workbench.gui.scene import place
 from workbench.gui.timeline import SECONDS, Motion
 
@@ -279,19 +280,8 @@ class BendingPanel:
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
         svc = self.app.wb.bending
-        self.plan_button.disabled = True
-        self.progress.visible = True
-        self.progress.value = 0.0  # type: ignore[misc]
-
-        def progress(fraction: float, message: str) -> None:
-            self.progress.value = 100.0 * fraction  # type: ignore[misc]
-            self.result.content = f"Planning: {message}"
-
-        try:
+        with busy(self.progress, [self.plan_button], self.result) as progress:
             plan = svc.plan(progress=progress)
-        finally:
-            self.progress.visible = False
-            self.plan_button.disabled = False
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()
         self.step.value = float(len(svc.part.bends))  # type: ignore[misc]  # redraws the folded tree

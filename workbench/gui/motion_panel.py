@@ -6,6 +6,7 @@ import viser
 
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
+from workbench.gui.progress import busy
 from workbench.gui.timeline import Motion, Timeline
 from workbench.service import EXPORT_FORMATS, MotionPlan, Workbench
 
@@ -77,19 +78,8 @@ class MotionPanel:
         self.plan_button.disabled = False
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
-        self.plan_button.disabled = True
-        self.progress.visible = True
-        self.progress.value = 0.0  # type: ignore[misc]
-
-        def progress(fraction: float, message: str) -> None:
-            self.progress.value = 100.0 * fraction  # type: ignore[misc]
-            self.result.content = f"Planning: {message}"
-
-        try:
+        with busy(self.progress, [self.plan_button], self.result) as progress:
             plan = self.wb.plan_motion(progress=progress)
-        finally:
-            self.progress.visible = False
-            self.plan_button.disabled = False
         self.result.content = ("**OK:** " if plan.ok else "**Problems:** ") + plan.summary()
         self.download.disabled = False
         self.timeline.load(plan_to_motion(plan, self.wb))

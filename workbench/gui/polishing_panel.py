@@ -17,6 +17,7 @@ from workbench.errors import InputError, WorkbenchError
 from workbench.gui.handles import Removable
 from workbench.gui.motion_panel import plan_to_motion
 from workbench.gui.notify import guarded
+from workbench.gui.progress import busy
 from workbench.service import EXPORT_FORMATS
 from workbench.service.polishing import PolishingPath, PolishingSimulation
 
@@ -241,16 +242,6 @@ class PolishingPanel:
         )
 
     # -- callbacks -----------------------------------------------------------------------
-    def _busy(self, on: bool) -> None:
-        self.plan_button.disabled = on
-        self.sim_button.disabled = on or self.svc.last_path is None
-        self.progress.visible = on
-        if on:
-            self.progress.value = 0.0  # type: ignore[misc]
-
-    def _report(self, fraction: float, message: str) -> None:
-        self.progress.value = 100.0 * fraction  # type: ignore[misc]
-
     def _on_upload(self, event: viser.GuiEvent) -> None:
         up = self.upload.value
         name = Path(up.name).name or "workpiece.stl"
@@ -278,11 +269,8 @@ class PolishingPanel:
         self.download.disabled = True
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
-        self._busy(True)
-        try:
-            pp = self.svc.plan_path(progress=self._report)
-        finally:
-            self._busy(False)
+        with busy(self.progress, [self.plan_button, self.sim_button]) as progress:
+            pp = self.svc.plan_path(progress=progress)
         self._show_path(pp)
         self.path_info.content = (
             f"**Path** {pp.summary()}. Lead-in points green, lead-out magenta, tool axes "
@@ -292,12 +280,9 @@ class PolishingPanel:
         self.sim_button.disabled = False
 
     def _on_simulate(self, event: viser.GuiEvent) -> None:
-        self._busy(True)
-        try:
-            motion = self.svc.plan_motion(progress=lambda f, m: self._report(0.7 * f, m))
-            sim = self.svc.simulate(progress=lambda f, m: self._report(0.7 + 0.3 * f, m))
-        finally:
-            self._busy(False)
+        with busy(self.progress, [self.plan_button, self.sim_button]) as progress:
+            motion = self.svc.plan_motion(progress=lambda f, m: progress(0.7 * f, m))
+            sim = self.svc.simulate(progress=lambda f, m: progress(0.7 + 0.3 * f, m))
         self._show_plots(sim)
         self.sim_info.content = (
             f"**Simulation** {sim.summary()}.\n\n**Robot** ({self.svc.configuration}): "
