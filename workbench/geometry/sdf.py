@@ -267,7 +267,13 @@ def _row_parity(
 
 
 def _scatter_d2(
-    lbvh: LBVH, ukey: IntArray, n_fine: IntArray, origin: FloatArray, hf: float, w: float
+    lbvh: LBVH,
+    ukey: IntArray,
+    n_fine: IntArray,
+    origin: FloatArray,
+    hf: float,
+    w: float,
+    pieces: FloatArray | None = None,
 ) -> FloatArray:
     """Return squared distances (P,) at corners `ukey` (sorted), exact where <= w**2, else inf.
 
@@ -275,7 +281,11 @@ def _scatter_d2(
     triangle of a corner at distance d <= w is among them, so the minimum is exact there.
     Long triangles are first split (same surface) so that no AABB enumerates too many cells.
     """
-    tri = _split_for_scatter(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+    tri = (
+        _split_for_scatter(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+        if pieces is None
+        else pieces
+    )
     best = np.full(len(ukey), np.inf)
     nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     length = np.linalg.norm(nrm, axis=1, keepdims=True)
@@ -406,11 +416,14 @@ def _build(
     trunc = r + np.sqrt(3.0) / 2.0 * hf
     # Triangle-driven pass up to W when that enumerates fewer than ~12 (triangle, corner)
     # pairs per corner (about the cost of one LBVH query); else to 2 fine cells + LBVH.
-    ext = np.ptp(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), axis=1)
+    # Counted on the split pieces the pass enumerates: a large triangle's pieces, each grown
+    # by W, visit far more corners than the triangle's own grown box.
+    pieces = _split_for_scatter(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+    ext = np.ptp(pieces, axis=1)
     pairs_full = float(np.prod((ext + 2 * trunc) / hf + 1.0, axis=1).sum())
     w_s = trunc if pairs_full <= 12.0 * len(pts) else min(trunc, 2.0 * hf)
     progress(0.1, f"distances at {len(pts)} fine corners ({len(blocks)} blocks), near triangles")
-    dist = np.sqrt(_scatter_d2(lbvh, ukey, n_fine, origin, hf, w_s))
+    dist = np.sqrt(_scatter_d2(lbvh, ukey, n_fine, origin, hf, w_s, pieces))
     far_c = np.nonzero(dist > w_s)[0]
     if trunc > w_s and far_c.size:
         step = 65536

@@ -2,12 +2,25 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import trimesh
+import viser
 
 from workbench.gui.handles import Removable
+from workbench.gui.notify import guarded
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
+
+
+def _colormap(values: np.ndarray, scale: float) -> np.ndarray:
+    """Return RGB uint8 (..., 3): red inside (negative), white at the surface, blue far outside."""
+    t = np.clip(values / scale, -1.0, 1.0)[..., None]
+    red, white, blue = np.array([220, 40, 40]), np.array([250, 250, 250]), np.array([40, 90, 220])
+    rgb = np.where(t < 0, white + (red - white) * (-t), white + (blue - white) * t)
+    return rgb.astype(np.uint8)
 
 
 class CollisionPanel:
@@ -15,10 +28,108 @@ class CollisionPanel:
 
     def __init__(self, app: WorkbenchApp) -> None:
         self.app = app
-        self.handles: list[Removable] = []
+        g = app.server.gui
+        self.folder = g.add_folder("Collision engine", expand_by_default=True)
+        with self.folder:
+            self.show_spheres = g.add_checkbox("Show spheres", initial_value=False)
+            self.show_field = g.add_checkbox("Show distance field", initial_value=False)
+            self.height = g.add_slider("Slice height [mm]", 0.0, 2000.0, 10.0, 400.0)
+            self.check_button = g.add_button("Check", icon=viser.Icon.SHIELD_CHECK)
+            self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
+            self.report = g.add_markdown("")
+        self.handles: list[Removable] = [self.folder]
+        self.sphere_node: Any = None
+        self.field_node: Any = None
+        self.show_spheres.on_update(guarded(app.server, "Show spheres")(self._on_spheres))
+        self.show_field.on_update(guarded(app.server, "Show distance field")(self._on_field))
+        self.height.on_update(guarded(app.server, "Slice height")(self._on_field))
+        self.check_button.on_click(guarded(app.server, "Check")(self._on_check))
+        # Spheres follow the robot whenever it is posed (jog, timeline).
+        app.scene.on_show.append(self.update_spheres)
+
+    def _engine(self) -> Any:
+        svc = self.app.wb.collision
+        if svc.built:
+            return svc.engine()
+        self.progress.visible = True
+        try:
+            return svc.engine(progress=lambda f, m: setattr(self.progress, "value", 100.0 * f))
+        finally:
+            self.progress.visible = False
+
+    def update_spheres(self, q: Any = None) -> None:
+        """Move the sphere nodes to the links at joints q [rad] (None: the current joints)."""
+        if self.sphere_node is None:
+            return
+        centres, _, _ = self.app.wb.collision.spheres(q)
+        self.sphere_node.batched_positions = centres.astype(np.float32)
+
+    def _on_spheres(self, _event: Any) -> None:
+        if not self.show_spheres.value:
+            if self.sphere_node is not None:
+                self.sphere_node.remove()
+                self.sphere_node = None
+            return
+        self._engine()
+        centres, radii, _ = self.app.wb.collision.spheres(None)
+        ball = trimesh.creation.icosphere(subdivisions=2, radius=1.0)
+        n = len(radii)
+        self.sphere_node = self.app.server.scene.add_batched_meshes_simple(
+            "/collision/spheres",
+            np.asarray(ball.vertices, np.float32),
+            np.asarray(ball.faces, np.uint32),
+            batched_wxyzs=np.tile(np.array([1.0, 0.0, 0.0, 0.0], np.float32), (n, 1)),
+            batched_positions=centres.astype(np.float32),
+            batched_scales=radii.astype(np.float32),
+            batched_colors=(90, 200, 255),
+            opacity=0.35,
+        )
+
+    def _on_field(self, _event: Any) -> None:
+        if self.field_node is not None:
+            self.field_node.remove()
+            self.field_node = None
+        if not self.show_field.value:
+            return
+        self._engine()
+        z = float(self.height.value) / 1000.0
+        values, corners = self.app.wb.collision.sdf_slice("z", z, size=96)
+        size = corners[1] - corners[0]
+        # Image rows run along -y, columns along +x.
+        image = _colormap(values.T[::-1], 0.2)
+        self.field_node = self.app.server.scene.add_image(
+            "/collision/field",
+            image,
+            render_width=float(size[0]),
+            render_height=float(size[1]),
+            position=((corners[0] + corners[1]) / 2),
+        )
+
+    def _on_check(self, _event: Any) -> None:
+        self.check_button.disabled = True
+        try:
+            self._engine()
+            c = self.app.wb.collision.check()
+            if c.colliding:
+                text = (
+                    f"**Collision**: {c.link} hits {c.obstacle},"
+                    f" penetration {c.penetration * 1e3:.1f} mm"
+                )
+            else:
+                text = f"Collision-free, clearance at least {c.clearance * 1e3:.1f} mm"
+            self.report.content = text
+            self.last = c
+        finally:
+            self.check_button.disabled = False
 
     def remove(self) -> None:
         """Remove the panel's widgets and scene nodes."""
+        if self.update_spheres in self.app.scene.on_show:
+            self.app.scene.on_show.remove(self.update_spheres)
+        for node in (self.sphere_node, self.field_node):
+            if node is not None:
+                node.remove()
+        self.sphere_node = self.field_node = None
         for h in self.handles:
             h.remove()
         self.handles.clear()

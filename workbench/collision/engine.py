@@ -1,0 +1,550 @@
+"""One collision checker with three modes, the same reports, and a guarantee between samples.
+
+Modes:
+- ``"exact"``: python-fcl meshes plus a containment test (`RobotCollisionChecker`).
+- ``"spheres"``: every link and the tool wrapped in PSO-fitted spheres against the cell's
+  sparse SDF, and sphere pairs for self-collision (seed 001). Fast and conservative; what
+  it flags is confirmed exactly with fcl, which also names the obstacle.
+- ``"capsules"``: every link as a capsule holding all its vertices, obstacles as their
+  oriented boxes, whose faces are rectangles (seed 002, exact segment-rectangle distance).
+
+Each mode gives, per configuration, "items" with a clearance lower bound [m] (a body or
+sphere or capsule against the cell, or a self-collision pair) and levers (dof,) [m/rad]
+(`JointLevers`): along a joint step dq an item's clearance changes by at most
+``|dq| @ lever``. An interval between two samples a, b is collision-free when every item has
+``clr_a + clr_b > |q_b - q_a| @ lever + 2 * deviation @ lever`` (the point of the motion
+nearest to an obstacle is within half the travel of one end); otherwise it is bisected.
+`deviation` (dof,) [rad] bounds how far the real motion strays from the straight joint
+segment between samples (0 for a path that is linear between samples).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import fcl
+import numpy as np
+import trimesh
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.collision.fcl_checker import CollisionReport
+from workbench.collision.motion_bound import JointLevers
+from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
+from workbench.errors import InputError
+from workbench.geometry.lbvh import LBVH
+from workbench.geometry.sdf import SparseSDF
+from workbench.geometry.spheres import fit_spheres
+
+FloatArray = NDArray[np.float64]
+Mode = Literal["exact", "spheres", "capsules"]
+MODES: tuple[str, ...] = ("exact", "spheres", "capsules")
+Progress = Callable[[float, str], None]
+
+
+@dataclass(frozen=True)
+class ConfigCheck:
+    """One configuration: verdict, clearance lower bound [m] and, when colliding, what touches.
+
+    For the fast modes `colliding` is the exact (fcl) verdict on what the mode flagged;
+    `flagged` says the fast test could not rule a contact out.
+    """
+
+    colliding: bool
+    flagged: bool
+    clearance: float
+    link: str | None = None
+    obstacle: str | None = None
+    penetration: float = 0.0
+    exact: CollisionReport | None = None
+
+
+@dataclass(frozen=True)
+class EnginePathReport(PathReport):
+    """A joint path's report: `PathReport` fields plus the guarantee between samples.
+
+    clearance [m]: lower bound over the whole path (samples and between) when collision-free.
+    first_time [s] / first_q [rad]: where the first collision is (a sample or between two);
+    link/obstacle: the colliding pair's names; penetration [m]: deepest vertex of either body
+    inside the other. `evaluated`: configurations checked, subdivisions included.
+    """
+
+    mode: str = "spheres"
+    clearance: float = float("nan")
+    first_time: float | None = None
+    first_q: FloatArray | None = field(default=None, repr=False)
+    link: str | None = None
+    obstacle: str | None = None
+    penetration: float = 0.0
+    evaluated: int = 0
+    certified: bool = True
+
+    @property
+    def message(self) -> str:
+        """Return the report as one sentence for a user (mm)."""
+        if self.collision_free:
+            return (
+                f"collision-free, including between samples, with clearance"
+                f" {self.clearance * 1e3:.1f} mm ({self.samples} samples,"
+                f" {self.evaluated} configurations checked, {self.mode})"
+            )
+        if not self.certified and self.link is None:
+            return (
+                f"not certified between samples near t = {self.first_time:.3f} s: clearance"
+                " below the subdivision limit; treat it as touching"
+            )
+        where = f"t = {self.first_time:.3f} s" if self.first_time is not None else "?"
+        between = "" if self.first_index is None else f" (sample {self.first_index})"
+        return (
+            f"collision at {where}{between}: {self.link} hits {self.obstacle},"
+            f" penetration {self.penetration * 1e3:.1f} mm"
+        )
+
+
+class CollisionEngine:
+    """Checks a robot against its cell and itself in one of `MODES` (SI units).
+
+    Built from the exact checker (its bodies, cell and enabled self-collision pairs).
+    margin [m]: clearance demanded. spheres_per_link, resolution, subdivisions, cache_dir:
+    sphere and SDF parameters (spheres mode); progress(fraction, message) during builds.
+    """
+
+    def __init__(
+        self,
+        exact: RobotCollisionChecker,
+        mode: str = "spheres",
+        *,
+        margin: float = 0.0,
+        spheres_per_link: int = 8,
+        resolution: int = 64,
+        subdivisions: int = 4,
+        band: float | None = 0.0,
+        cache_dir: str | None = None,
+        progress: Progress | None = None,
+    ) -> None:
+        if mode not in MODES:
+            raise InputError(f"mode: {mode!r} is not one of {', '.join(MODES)}")
+        if not np.isfinite(margin) or margin < 0:
+            raise InputError(f"margin: {margin} m must be a length >= 0")
+        report = progress or (lambda _f, _m: None)
+        self.exact, self.mode, self.margin = exact, mode, float(margin)
+        robot: Any = exact.robot
+        self.dof = robot.dof
+        self.T_world_base = exact.T_world_base
+        names = list(exact.link_names) + (["tool"] if exact.has_tool else [])
+        self.body_names = names
+        self.body_frame = np.array(
+            list(range(self.dof + 1)) + ([self.dof] if exact.has_tool else [])
+        )
+        self.meshes = [exact.scene.moving[n].mesh for n in names]
+        moving = set(names)
+        self.self_pairs = [(a, b) for a, b in exact.scene.pairs if a in moving and b in moving]
+        self.cell_pairs = [(a, b) for a, b in exact.scene.pairs if b not in moving]
+        self.obstacles = list(exact.scene.static)
+        self.levers_of = JointLevers(robot)
+        idx = {n: i for i, n in enumerate(names)}
+        checked = sorted({idx[a] for a, _ in self.cell_pairs})
+        self.body_lever = np.stack(
+            [
+                self.levers_of.levers(int(self.body_frame[i]), m.vertices)
+                for i, m in enumerate(self.meshes)
+            ]
+        )
+        self.sdf: SparseSDF | None = None
+        if mode == "spheres":
+            if spheres_per_link < 1:
+                raise InputError(f"spheres_per_link: {spheres_per_link} must be a positive integer")
+            cs, rs, owner = [], [], []
+            for k, i in enumerate(range(len(names))):
+                report(0.3 * k / len(names), f"fitting spheres to {names[i]}")
+                s = fit_spheres(self.meshes[i], int(spheres_per_link), seed=0)
+                cs.append(s.centres)
+                rs.append(s.radii)
+                owner.append(np.full(len(s.radii), i))
+            self.centres = np.concatenate(cs)
+            self.radii = np.concatenate(rs)
+            self.sphere_body = np.concatenate(owner)
+            self.sphere_lever = np.stack(
+                [
+                    self.levers_of.levers(int(self.body_frame[b]), c[None])
+                    for b, c in zip(self.sphere_body, self.centres, strict=True)
+                ]
+            )
+            self.cell_spheres = np.flatnonzero(np.isin(self.sphere_body, checked))
+            pa, pb = [], []
+            for a, b in self.self_pairs:
+                sa = np.flatnonzero(self.sphere_body == idx[a])
+                sb = np.flatnonzero(self.sphere_body == idx[b])
+                pa.append(np.repeat(sa, len(sb)))
+                pb.append(np.tile(sb, len(sa)))
+            self.pair_a = np.concatenate(pa) if pa else np.zeros(0, np.int64)
+            self.pair_b = np.concatenate(pb) if pb else np.zeros(0, np.int64)
+            cell = self.cell_mesh()
+            if cell is not None:
+                self.sdf = SparseSDF.from_mesh(
+                    cell,
+                    resolution=resolution,
+                    subdivisions=subdivisions,
+                    band=band,
+                    cache_dir=cache_dir,
+                    progress=lambda f, m: report(0.3 + 0.7 * f, m),
+                )
+        if mode == "capsules":
+            self._capsules(checked)
+        report(1.0, "collision engine ready")
+
+    # -- geometry ---------------------------------------------------------------------
+    def cell_mesh(self) -> trimesh.Trimesh | None:
+        """Return the checked obstacles as one world mesh [m] (None for an empty cell)."""
+        parts = []
+        for name in self.obstacles:
+            e = self.exact.scene.static[name]
+            m = e.mesh.copy()
+            m.apply_transform(e.T)
+            parts.append(m)
+        merged: trimesh.Trimesh | None = trimesh.util.concatenate(parts) if parts else None  # type: ignore[assignment]
+        return merged
+
+    def _capsules(self, checked: list[int]) -> None:
+        seg, rad = [], []
+        for m in self.meshes:
+            v = np.asarray(m.vertices, float)
+            c = v.mean(axis=0)
+            _, _, vt = np.linalg.svd(v - c, full_matrices=False)
+            u = vt[0]
+            t = (v - c) @ u
+            p0, p1 = c + t.min() * u, c + t.max() * u
+            d = v - c - np.outer(t, u)
+            seg.append((p0, p1))
+            rad.append(float(np.linalg.norm(d, axis=1).max()) * (1 + 1e-9))
+        self.cap_seg = np.array(seg)  # (B, 2, 3) in body frames
+        self.cap_radius = np.array(rad)
+        self.cap_lever = np.stack(
+            [self.levers_of.levers(int(self.body_frame[i]), s) for i, s in enumerate(self.cap_seg)]
+        )
+        self.cap_checked = checked
+        boxes = []
+        for name in self.obstacles:
+            e = self.exact.scene.static[name]
+            obb = e.mesh.bounding_box_oriented
+            T = e.T @ np.asarray(obb.primitive.transform, float)
+            boxes.append((T, np.asarray(obb.primitive.extents, float) / 2))
+        self.boxes = boxes
+
+    def body_poses(self, qs: ArrayLike) -> FloatArray:
+        """Return world poses (N, B, 4, 4) of every body (links, tool) at qs (N, dof) [rad]."""
+        q = np.atleast_2d(np.asarray(qs, float))
+        if q.ndim != 2 or q.shape[1] != self.dof or not np.all(np.isfinite(q)):
+            raise InputError(
+                f"q: expected finite joints of shape (N, {self.dof}) [rad], got {q.shape}"
+            )
+        T = self.T_world_base @ self.exact.robot.link_transforms(q)
+        return T[:, self.body_frame]
+
+    def spheres(self, q: ArrayLike) -> tuple[FloatArray, FloatArray, list[str]]:
+        """Return world sphere centres (S,3) [m], radii (S,) [m] and each sphere's body name."""
+        if self.mode != "spheres":
+            raise InputError(f"spheres: the {self.mode} mode has no spheres; use mode 'spheres'")
+        T = self.body_poses(q)[0][self.sphere_body]
+        c = np.einsum("sij,sj->si", T[:, :3, :3], self.centres) + T[:, :3, 3]
+        return c, self.radii.copy(), [self.body_names[b] for b in self.sphere_body]
+
+    def _relative(
+        self,
+        body_a: NDArray[np.int64],
+        body_b: NDArray[np.int64],
+        lev_a: FloatArray,
+        lev_b: FloatArray,
+    ) -> FloatArray:
+        """Return levers (P, dof) of body pairs: joints up to the lower frame move both rigidly.
+
+        The distance between two bodies does not change when only joints at or before the
+        frame of the one nearer the base turn; the rest moves the farther body relative to it.
+        """
+        fa, fb = self.body_frame[body_a], self.body_frame[body_b]
+        low = np.minimum(fa, fb)
+        joint = np.arange(1, self.dof + 1)[None]
+        far = np.where((fa >= fb)[:, None], lev_a, lev_b)
+        near = np.where((fa >= fb)[:, None], lev_b, lev_a)
+        same = (fa == fb)[:, None]
+        out = np.where(joint > low[:, None], far, 0.0)
+        return np.where(same, 0.0, out) + 0.0 * near
+
+    # -- clearance items --------------------------------------------------------------
+    def items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """Return clearance lower bounds (N, I) [m] (margin subtracted) and levers (I, dof)."""
+        if self.mode == "spheres":
+            return self._sphere_items(qs)
+        if self.mode == "capsules":
+            return self._capsule_items(qs)
+        return self._exact_items(qs)
+
+    def _sphere_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+        T = self.body_poses(qs)[:, self.sphere_body]
+        c = np.einsum("nsij,sj->nsi", T[..., :3, :3], self.centres) + T[..., :3, 3]
+        n = len(c)
+        cols, levers = [], []
+        if self.sdf is not None and self.cell_spheres.size:
+            cc = c[:, self.cell_spheres].reshape(-1, 3)
+            d = self.sdf.query(cc).reshape(n, -1)
+            cols.append(d - self.radii[self.cell_spheres] - self.sdf.max_error)
+            levers.append(self.sphere_lever[self.cell_spheres])
+        if self.pair_a.size:
+            gap = np.linalg.norm(c[:, self.pair_a] - c[:, self.pair_b], axis=2)
+            cols.append(gap - self.radii[self.pair_a] - self.radii[self.pair_b])
+            levers.append(
+                self._relative(
+                    self.sphere_body[self.pair_a],
+                    self.sphere_body[self.pair_b],
+                    self.sphere_lever[self.pair_a],
+                    self.sphere_lever[self.pair_b],
+                )
+            )
+        if not cols:
+            return np.full((n, 1), np.inf), np.zeros((1, self.dof))
+        return np.concatenate(cols, axis=1) - self.margin, np.concatenate(levers)
+
+    def _capsule_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+        from workbench.geometry.distance import capsule_rectangle_distance, segment_segment_distance
+
+        T = self.body_poses(qs)
+        p = np.einsum("nbij,bkj->nbki", T[..., :3, :3], self.cap_seg) + T[..., None, :3, 3]
+        n = len(p)
+        cols, levers = [], []
+        idx = {nm: i for i, nm in enumerate(self.body_names)}
+        for b in self.cap_checked:
+            for (Tb, half), name in zip(self.boxes, self.obstacles, strict=True):
+                if (self.body_names[b], name) not in self.cell_pairs:
+                    continue
+                local = (p[:, b] - Tb[:3, 3]) @ Tb[:3, :3]  # (N, 2, 3) in the box frame
+                inside = np.any(np.all(np.abs(local) <= half, axis=2), axis=1)
+                best = np.full(n, np.inf)
+                for k in range(3):
+                    u, w = [i for i in range(3) if i != k]
+                    axes = np.eye(3)[[u, w]]
+                    for sgn in (-1.0, 1.0):
+                        centre = np.zeros(3)
+                        centre[k] = sgn * half[k]
+                        d = capsule_rectangle_distance(
+                            local[:, 0], local[:, 1], self.cap_radius[b], centre, axes, half[[u, w]]
+                        )
+                        best = np.minimum(best, d)
+                cols.append(np.where(inside, -self.cap_radius[b], best))
+                levers.append(self.cap_lever[b])
+        for sa, sb in self.self_pairs:
+            ia, ib = idx[sa], idx[sb]
+            d = segment_segment_distance(p[:, ia, 0], p[:, ia, 1], p[:, ib, 0], p[:, ib, 1])
+            cols.append(d - self.cap_radius[ia] - self.cap_radius[ib])
+            levers.append(
+                self._relative(
+                    np.array([ia]), np.array([ib]), self.cap_lever[[ia]], self.cap_lever[[ib]]
+                )[0]
+            )
+        if not cols:
+            return np.full((n, 1), np.inf), np.zeros((1, self.dof))
+        return np.stack(cols, axis=1) - self.margin, np.stack(levers)
+
+    def _exact_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+        scene = self.exact.scene
+        idx = {nm: i for i, nm in enumerate(self.body_names)}
+        out = np.zeros((len(qs), len(scene.pairs)))
+        req, dreq = fcl.CollisionRequest(), fcl.DistanceRequest()
+        for k, q in enumerate(qs):
+            rep = self.exact.check(q, distance=False)
+            hit = set(rep.colliding)
+            for m, (a, b) in enumerate(scene.pairs):
+                if (a, b) in hit:
+                    out[k, m] = 0.0
+                    continue
+                ea, eb = scene._entry(a), scene._entry(b)
+                if fcl.collide(ea.obj, eb.obj, req, fcl.CollisionResult()):
+                    out[k, m] = 0.0
+                else:
+                    out[k, m] = max(fcl.distance(ea.obj, eb.obj, dreq, fcl.DistanceResult()), 0.0)
+        levers = np.stack(
+            [
+                self._relative(
+                    np.array([idx[a]]),
+                    np.array([idx[b]]),
+                    self.body_lever[[idx[a]]],
+                    self.body_lever[[idx[b]]],
+                )[0]
+                if b in idx
+                else self.body_lever[idx[a]]
+                for a, b in scene.pairs
+            ]
+        )
+        return out - self.margin, levers
+
+    def exact_twin(self) -> CollisionEngine:
+        """Return an exact-mode engine on the same checker (built once)."""
+        twin = getattr(self, "_twin", None)
+        if twin is None:
+            twin = (
+                self
+                if self.mode == "exact"
+                else CollisionEngine(self.exact, "exact", margin=self.margin)
+            )
+            self._twin = twin
+        return twin
+
+    # -- checks -----------------------------------------------------------------------
+    def check(self, q: ArrayLike) -> ConfigCheck:
+        """Return the check of one configuration q (dof,) [rad]; flagged ones confirmed exactly."""
+        qq = np.asarray(q, float).reshape(1, -1)
+        clr, _ = self.items(qq)
+        low = float(clr.min())
+        flagged = low <= 0.0
+        if self.mode == "exact" or flagged:
+            rep = self.exact.check(qq[0], distance=False)
+            if rep.in_collision:
+                a, b = rep.colliding[0]
+                return ConfigCheck(True, True, 0.0, a, b, self.penetration(qq[0], a, b), rep)
+            if self.mode != "exact":
+                low = float(self.exact_twin().items(qq)[0].min())
+            return ConfigCheck(False, flagged, max(low, 0.0), exact=rep)
+        return ConfigCheck(False, False, low)
+
+    def penetration(self, q: FloatArray, a: str, b: str) -> float:
+        """Return the depth [m] of the deepest vertex of body a inside b or of b inside a."""
+        scene = self.exact.scene
+        self.exact.check(q, distance=False)  # places the moving bodies at q
+        ea, eb = scene._entry(a), scene._entry(b)
+        depth = 0.0
+        for inner, outer in ((ea, eb), (eb, ea)):
+            v = np.asarray(inner.mesh.vertices, float) @ inner.T[:3, :3].T + inner.T[:3, 3]
+            local = (v - outer.T[:3, 3]) @ outer.T[:3, :3]
+            bvh = LBVH(outer.mesh.vertices, outer.mesh.faces)
+            inside = bvh.ray_crossings(local, np.array([0.5773, 0.5774, 0.5775])) % 2 == 1
+            if np.any(inside):
+                depth = max(depth, float(bvh.closest_points(local[inside])[1].max()))
+        return depth
+
+    def check_path(
+        self,
+        qs: ArrayLike,
+        times: ArrayLike | None = None,
+        *,
+        deviation: ArrayLike | None = None,
+        max_depth: int = 12,
+        budget: int = 5000,
+    ) -> EnginePathReport:
+        """Return the report of the path through samples qs (N, dof) [rad], between samples too.
+
+        times (N,) [s] (default 0, 1, 2, ...). deviation (dof,) [rad]: bound on how far the real
+        motion strays from the straight joint segment between samples. Intervals that cannot
+        be certified are bisected up to `max_depth` times; what the fast test flags is
+        confirmed with the exact checker.
+        """
+        q = np.atleast_2d(np.asarray(qs, float))
+        n = len(q)
+        t = np.arange(n, dtype=float) if times is None else np.asarray(times, float).reshape(-1)
+        if t.shape != (n,) or not np.all(np.isfinite(t)):
+            raise InputError(f"times: expected {n} finite values [s], got shape {t.shape}")
+        dev = np.zeros(self.dof) if deviation is None else np.abs(np.asarray(deviation, float))
+        clr, lev = self.items(q)
+        evaluated = n
+        low = clr.min(axis=1)
+        flagged = low <= 0.0
+        colliding = np.zeros(n, bool)
+        confirmed: dict[int, CollisionReport] = {}
+        for fi in np.flatnonzero(flagged):
+            i = int(fi)
+            rep = self.exact.check(q[i], distance=False)
+            if rep.in_collision:
+                colliding[i] = True
+                confirmed[int(i)] = rep
+        tube = 2.0 * (lev @ dev)
+        between: list[tuple[Any, Any, Any, Any]] = []
+        # A flagged sample that is free exactly: the fast bound cannot certify next to it.
+        fallback = flagged & ~colliding if self.mode != "exact" else np.zeros(n, bool)
+        # Intervals to certify: (t_a, t_b, q_a, q_b, clr_a, clr_b, start sample, depth).
+        work: list[Any] = []
+        for k in range(n - 1):
+            i = int(k)
+            if colliding[i] or colliding[i + 1]:
+                continue
+            if fallback[i] or fallback[i + 1]:
+                between.append(((t[i] + t[i + 1]) / 2, i, (q[i] + q[i + 1]) / 2, None))
+                continue
+            work.append((t[i], t[i + 1], q[i], q[i + 1], clr[i], clr[i + 1], i, 0))
+        clearance = np.inf
+        if n == 1 and not colliding[0]:
+            clearance = float(self.exact_twin().items(q)[0].min()) if fallback[0] else float(low[0])
+        while work:
+            need = [np.abs(w[3] - w[2]) @ lev.T + tube for w in work]
+            todo = [w for w, nd in zip(work, need, strict=True) if not np.all(w[4] + w[5] > nd)]
+            for w, nd in zip(work, need, strict=True):
+                if np.all(w[4] + w[5] > nd):
+                    clearance = min(clearance, float(np.min((w[4] + w[5] - nd) / 2)))
+            if not todo:
+                break
+            if evaluated + len(todo) > budget:  # give up on these: report them uncertified
+                between.extend(((w[0] + w[1]) / 2, w[6], (w[2] + w[3]) / 2, None) for w in todo)
+                break
+            mids = np.array([(w[2] + w[3]) / 2 for w in todo])
+            mclr, _ = self.items(mids)
+            evaluated += len(mids)
+            work = []
+            for w, qm, cm in zip(todo, mids, mclr, strict=True):
+                tm = (w[0] + w[1]) / 2
+                if cm.min() <= 0.0:
+                    rep = self.exact.check(qm, distance=False)
+                    between.append((tm, w[6], qm, rep if rep.in_collision else None))
+                    continue
+                if w[7] >= max_depth:
+                    between.append((tm, w[6], qm, None))
+                    continue
+                work.append((w[0], tm, w[2], qm, w[4], cm, w[6], w[7] + 1))
+                work.append((tm, w[1], qm, w[3], cm, w[5], w[6], w[7] + 1))
+        if self.mode != "exact" and any(rep is None for *_, rep in between):
+            # The fast bound could not settle these intervals (false positives near a
+            # flagged sample): settle them with exact distances and the bodies' levers.
+            exact = self.exact_twin()
+            kept = [e for e in between if e[3] is not None]
+            for i in sorted({e[1] for e in between if e[3] is None}):
+                sub = exact.check_path(
+                    q[i : i + 2], t[i : i + 2], deviation=dev, max_depth=max_depth, budget=64
+                )
+                evaluated += sub.evaluated
+                if sub.collision_free:
+                    clearance = min(clearance, sub.clearance)
+                elif sub.first_time is not None and sub.first_q is not None:
+                    kept.append((sub.first_time, i, sub.first_q, sub.first_report))
+            between = kept
+        hits = np.flatnonzero(colliding)
+        events: list[tuple[Any, Any, Any, Any]] = [
+            (float(t[i]), int(i), q[i], confirmed[int(i)]) for i in hits
+        ] + [(tm, None, qm, rep) for tm, _, qm, rep in between]
+        for _, i0, _, _ in [(tm, i, qm, r) for tm, i, qm, r in between]:
+            colliding[i0] = True  # the interval starting at this sample collides
+        events.sort(key=lambda e: e[0])
+        free = not events
+        base: dict[str, Any] = {
+            "collision_free": free,
+            "first_index": None,
+            "first_report": None,
+            "min_distance": max(clearance, 0.0) if free else 0.0,
+            "samples": n,
+            "colliding_indices": tuple(int(i) for i in np.flatnonzero(colliding)),
+            "mode": self.mode,
+            "clearance": max(clearance, 0.0) if free else 0.0,
+            "evaluated": evaluated,
+        }
+        if free:
+            return EnginePathReport(**base)  # type: ignore[arg-type]
+        tm, i0, qm, rep = events[0]
+        extra: dict[str, object] = {
+            "first_index": i0 if i0 is not None else int(np.searchsorted(t, tm) - 1),
+            "first_report": rep,
+            "first_time": tm,
+            "first_q": qm,
+        }
+        if rep is None:
+            extra["certified"] = False
+        else:
+            a, b = rep.colliding[0]
+            extra.update(link=a, obstacle=b, penetration=self.penetration(qm, a, b))
+        base.update(extra)
+        return EnginePathReport(**base)  # type: ignore[arg-type]
