@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
-from typing import Protocol
+from typing import Any, Protocol
 
 import viser
 
@@ -17,7 +17,7 @@ class _Disableable(Protocol):
 
 @contextmanager
 def busy(
-    bar: viser.GuiProgressBarHandle,
+    bar: Any,  # viser's GuiProgressBarHandle, which viser does not export
     buttons: Sequence[_Disableable],
     status: viser.GuiMarkdownHandle | None = None,
     *,
@@ -30,11 +30,11 @@ def busy(
     """
     for b in buttons:
         b.disabled = True
-    bar.value = 0.0  # type: ignore[misc]
+    bar.value = 0.0
     bar.visible = True
 
     def report(fraction: float, message: str) -> None:
-        bar.value = 100.0 * fraction  # type: ignore[misc]
+        bar.value = 100.0 * fraction
         if status is not None:
             status.content = f"{verb}: {message}"
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 import trimesh
 import viser
@@ -46,6 +48,9 @@ class RobotScene:
         self.wb = wb
         self.nodes: list[viser.SceneNodeHandle] = []
         self.links: dict[str, viser.MeshHandle] = {}
+        # Called with the joints (None: the workbench's own) after every pose, for what
+        # follows the robot (e.g. the collision spheres).
+        self.on_show: list[Callable[[NDArray[np.float64] | None], None]] = []
         self.build()
 
     def build(self) -> None:
@@ -97,6 +102,8 @@ class RobotScene:
                 place(h, poses[-1])
                 h.color = COLLISION_COLOR if "tool" in hit else self._tool_color()
             place(self.tcp_frame, wb.tcp_pose(q))
+        for listener in self.on_show:
+            listener(q)
 
     def _tool_color(self) -> tuple[int, int, int]:
         r, g, b = self.wb.project.tool.color
