@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import time
+from pathlib import Path
 
 import pytest
 
@@ -42,3 +44,21 @@ def wait_for(predicate, *, timeout: float = 15.0, what: str = "condition") -> No
             return
         time.sleep(0.05)
     pytest.fail(f"timed out after {timeout} s waiting for {what}")
+
+
+def save_screenshot(page, name: str) -> Path:  # type: ignore[no-untyped-def]
+    """Save a screenshot of the page as `name` (e.g. "bending.png") and return its path.
+
+    It goes to docs/ (the README's pictures) when WORKBENCH_UPDATE_SCREENSHOTS=1, else to
+    tests/e2e/artifacts/, so an ordinary test run leaves the checkout clean.
+    """
+    here = Path(__file__).resolve().parent
+    folder = (
+        here.parents[1] / "docs"
+        if os.environ.get("WORKBENCH_UPDATE_SCREENSHOTS") == "1"
+        else here / "artifacts"
+    )
+    folder.mkdir(exist_ok=True)
+    path = folder / name
+    page.screenshot(path=str(path))
+    return path

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, set_slider, wait_for
+from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
 
 pytestmark = pytest.mark.e2e
 
@@ -104,7 +104,7 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     for close in page.locator("button.mantine-Notification-closeButton").all():
         close.click()  # the refused goal's notification, handled above
     page.wait_for_timeout(1500)
-    page.screenshot(path=str(ROOT / "docs" / "assembly.png"))
+    save_screenshot(page, "assembly.png")
 
     # The second arm's share of the sequence, as a RAPID module.
     page.get_by_role("combobox", name="Program of").click()

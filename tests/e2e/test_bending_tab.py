@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, set_slider, wait_for
+from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
 
 pytestmark = pytest.mark.e2e
 
@@ -78,4 +78,4 @@ def test_reorder_fold_plan_and_first_collision(launch) -> None:  # type: ignore[
     assert "**hit**" in app.bending.tree_info.content
     page.wait_for_timeout(1500)
     (ROOT / "docs").mkdir(exist_ok=True)
-    page.screenshot(path=str(ROOT / "docs" / "bending.png"))
+    save_screenshot(page, "bending.png")

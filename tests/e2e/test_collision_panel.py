@@ -2,16 +2,13 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, wait_for
+from browser_helpers import canvas_png, save_screenshot, wait_for
 
 from workbench.gui.app import WorkbenchApp
 
 pytestmark = pytest.mark.e2e
-DOCS = Path(__file__).resolve().parents[2] / "docs"
 
 
 def test_show_spheres_and_check(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
@@ -38,4 +35,4 @@ def test_show_spheres_and_check(page, app: WorkbenchApp) -> None:  # type: ignor
     )
     page.get_by_text(text).first.wait_for(timeout=15_000)
     page.wait_for_timeout(500)
-    page.screenshot(path=str(DOCS / "collision.png"))
+    save_screenshot(page, "collision.png")

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, set_slider, wait_for
+from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
 
 pytestmark = pytest.mark.e2e
 
@@ -70,7 +70,7 @@ def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-
         client.camera.look_at = (0.45, 0.0, 0.33)
     page.get_by_text("Simulation").first.scroll_into_view_if_needed()
     page.wait_for_timeout(2500)
-    page.screenshot(path=str(ROOT / "docs" / "polishing.png"))
+    save_screenshot(page, "polishing.png")
 
 
 def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]

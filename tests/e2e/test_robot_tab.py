@@ -7,21 +7,19 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, set_slider, wait_for
+from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
 
 from workbench.gui.app import WorkbenchApp
 from workbench.gui.scene import COLLISION_COLOR, ROBOT_COLOR
 
 pytestmark = pytest.mark.e2e
-DOCS = Path(__file__).resolve().parents[2] / "docs"
 
 
 def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
     sliders = page.get_by_role("slider")
     assert sliders.count() >= 6
     before = canvas_png(page)
-    DOCS.mkdir(exist_ok=True)
-    (DOCS / "screenshot.png").write_bytes(page.screenshot())
+    save_screenshot(page, "screenshot.png")
 
     set_slider(page, "J1 [deg]", 35.0)
     wait_for(
