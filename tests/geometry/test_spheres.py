@@ -7,7 +7,8 @@ import pytest
 import trimesh
 
 from workbench.errors import InputError, MeshError
-from workbench.geometry.spheres import SphereSet, _contain_triangles, _split_long, fit_spheres
+from workbench.geometry.spheres import SphereSet, _contain_triangles, fit_spheres
+from workbench.geometry.subdivide import split_long_triangles
 
 
 def _link() -> trimesh.Trimesh:
@@ -38,7 +39,7 @@ def test_every_triangle_is_inside_one_sphere(fitted) -> None:
     """A ball is convex: a triangle is inside if its three vertices are (brute force here)."""
     m, s = fitted
     tri = m.vertices[m.faces]
-    pieces = _split_long(tri, 0.03)
+    pieces = split_long_triangles(tri, 0.03)
 
     # Splitting keeps the surface: same total area, every piece inside its parent's plane.
     def area(t: np.ndarray) -> float:

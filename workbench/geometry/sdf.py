@@ -42,6 +42,7 @@ from scipy import ndimage
 from workbench.errors import InputError
 from workbench.geometry.distance import point_triangle_distance2_rows
 from workbench.geometry.lbvh import LBVH, check_mesh
+from workbench.geometry.subdivide import split_long_triangles
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -282,7 +283,7 @@ def _scatter_d2(
     Long triangles are first split (same surface) so that no AABB enumerates too many cells.
     """
     tri = (
-        _split_for_scatter(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+        split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
         if pieces is None
         else pieces
     )
@@ -326,23 +327,6 @@ def _scatter_d2(
         start = int(end)
     best[best > w * w] = np.inf
     return best
-
-
-def _split_for_scatter(tri: FloatArray, max_edge: float) -> FloatArray:
-    """Return the same surface with every edge <= max_edge (midpoint 1 -> 4 splits)."""
-    for _ in range(30):
-        edge = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
-        long = edge > max_edge
-        if not np.any(long):
-            break
-        t = tri[long]
-        a, b, c = t[:, 0], t[:, 1], t[:, 2]
-        ab, bc, ca = (a + b) / 2, (b + c) / 2, (c + a) / 2
-        pieces = np.stack(
-            [np.stack(x, axis=1) for x in ((a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca))]
-        )
-        tri = np.concatenate([tri[~long], pieces.reshape(-1, 3, 3)])
-    return tri
 
 
 def _toward_zero_f32(x: FloatArray) -> NDArray[np.float32]:
@@ -418,7 +402,7 @@ def _build(
     # pairs per corner (about the cost of one LBVH query); else to 2 fine cells + LBVH.
     # Counted on the split pieces the pass enumerates: a large triangle's pieces, each grown
     # by W, visit far more corners than the triangle's own grown box.
-    pieces = _split_for_scatter(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+    pieces = split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
     ext = np.ptp(pieces, axis=1)
     pairs_full = float(np.prod((ext + 2 * trunc) / hf + 1.0, axis=1).sum())
     w_s = trunc if pairs_full <= 12.0 * len(pts) else min(trunc, 2.0 * hf)

@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.errors import InputError
 from workbench.geometry.lbvh import check_mesh
 from workbench.geometry.sdf import is_watertight
+from workbench.geometry.subdivide import split_long_triangles
 
 FloatArray = NDArray[np.float64]
 
@@ -76,27 +77,6 @@ def _decode(centres: FloatArray, pts: FloatArray) -> FloatArray:
         r2, (np.arange(n_p)[:, None] * k + nearest).ravel(), np.maximum(dmin, 0.0).ravel()
     )
     return np.sqrt(r2.reshape(n_p, k))
-
-
-def _split_long(tri: FloatArray, max_edge: float, limit: int = 2_000_000) -> FloatArray:
-    """Return the same surface as triangles (T',3,3) with every edge <= max_edge [m].
-
-    Midpoint subdivision (1 -> 4) of the long triangles only; the union of the pieces is
-    the original triangle, so containing each piece contains the triangle.
-    """
-    for _ in range(24):
-        edge = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
-        long = edge > max_edge
-        if not np.any(long) or len(tri) + 3 * int(long.sum()) > limit:
-            break
-        t = tri[long]
-        a, b, c = t[:, 0], t[:, 1], t[:, 2]
-        ab, bc, ca = (a + b) / 2, (b + c) / 2, (c + a) / 2
-        pieces = np.stack(
-            [np.stack(x, axis=1) for x in ((a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca))]
-        )
-        tri = np.concatenate([tri[~long], pieces.reshape(-1, 3, 3)])
-    return tri
 
 
 def _contain_triangles(tri: FloatArray, centres: FloatArray, scale: float) -> FloatArray:
@@ -180,8 +160,10 @@ def fit_spheres(
     centres = pbest[g]
     r_swarm = _decode(centres[None], cover)[0]
     # Long thin triangles (a cylinder's sides) would force huge spheres: split them first.
-    pieces = _split_long(
-        tri, 0.5 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale
+    pieces = split_long_triangles(
+        tri,
+        0.5 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale,
+        limit=2_000_000,
     )
     radii = _contain_triangles(pieces, centres, scale)
     keep = radii > 1e-12 * scale * 2
