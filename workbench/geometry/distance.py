@@ -43,26 +43,25 @@ def closest_points_on_segments(points: ArrayLike, a: ArrayLike, b: ArrayLike) ->
     return a_ + t[..., None] * ab
 
 
-def closest_points_on_triangles(
-    points: ArrayLike, a: ArrayLike, b: ArrayLike, c: ArrayLike
-) -> FloatArray:
-    """Return the closest points (..., 3) on triangles (a, b, c) to `points` [m].
+def _region_weights(
+    d1: FloatArray,
+    d2: FloatArray,
+    d3: FloatArray,
+    d4: FloatArray,
+    d5: FloatArray,
+    d6: FloatArray,
+    ab2_ac2: FloatArray,
+) -> tuple[FloatArray, FloatArray, NDArray[np.bool_]]:
+    """Return (v, w, degenerate): the closest point is a + v*ab + w*ac (Ericson 5.1.5).
 
-    Ericson's Voronoi-region method (Real-Time Collision Detection, 5.1.5), evaluated for
-    every region with masks. Zero-area triangles fall back to their three edges.
+    d1..d6 are the dot products of the edges ab, ac with ap, bp, cp; `ab2_ac2` is
+    |ab|^2 |ac|^2, the scale for calling a triangle degenerate (zero area).
     """
-    p, a_, b_, c_ = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (points, a, b, c)))
-    ab, ac, ap = b_ - a_, c_ - a_, p - a_
-    d1, d2 = _dot(ab, ap), _dot(ac, ap)
-    bp = p - b_
-    d3, d4 = _dot(ab, bp), _dot(ac, bp)
-    cp = p - c_
-    d5, d6 = _dot(ab, cp), _dot(ac, cp)
     va = d3 * d6 - d5 * d4
     vb = d5 * d2 - d1 * d6
     vc = d1 * d4 - d3 * d2
     denom = va + vb + vc
-    degenerate = ~(denom > 1e-30 * np.maximum(_dot(ab, ab) * _dot(ac, ac), 1e-300))
+    degenerate = ~(denom > 1e-30 * np.maximum(ab2_ac2, 1e-300))
     safe = np.where(degenerate, 1.0, denom)
     # Every region's closest point is a + v*ab + w*ac: pick (v, w) per region, latest wins.
     v, w = vb / safe, vc / safe
@@ -80,6 +79,25 @@ def closest_points_on_triangles(
     v, w = np.where(m, 1.0, v), np.where(m, 0.0, w)
     m = (d1 <= 0) & (d2 <= 0)
     v, w = np.where(m, 0.0, v), np.where(m, 0.0, w)
+    return v, w, degenerate
+
+
+def closest_points_on_triangles(
+    points: ArrayLike, a: ArrayLike, b: ArrayLike, c: ArrayLike
+) -> FloatArray:
+    """Return the closest points (..., 3) on triangles (a, b, c) to `points` [m].
+
+    Ericson's Voronoi-region method (Real-Time Collision Detection, 5.1.5), evaluated for
+    every region with masks. Zero-area triangles fall back to their three edges.
+    """
+    p, a_, b_, c_ = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (points, a, b, c)))
+    ab, ac, ap = b_ - a_, c_ - a_, p - a_
+    d1, d2 = _dot(ab, ap), _dot(ac, ap)
+    bp = p - b_
+    d3, d4 = _dot(ab, bp), _dot(ac, bp)
+    cp = p - c_
+    d5, d6 = _dot(ab, cp), _dot(ac, cp)
+    v, w, degenerate = _region_weights(d1, d2, d3, d4, d5, d6, _dot(ab, ab) * _dot(ac, ac))
     out = a_ + ab * v[..., None] + ac * w[..., None]
     if np.any(degenerate):
         if out.ndim == 1:
@@ -128,25 +146,7 @@ def point_triangle_distance2_rows(
         dot(ab, cp),
         dot(ac, cp),
     )
-    va, vb, vc = d3 * d6 - d5 * d4, d5 * d2 - d1 * d6, d1 * d4 - d3 * d2
-    denom = va + vb + vc
-    degenerate = ~(denom > 1e-30 * np.maximum(dot(ab, ab) * dot(ac, ac), 1e-300))
-    safe = np.where(degenerate, 1.0, denom)
-    v, w = vb / safe, vc / safe
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t_bc = np.nan_to_num((d4 - d3) / ((d4 - d3) + (d5 - d6)))
-        m = (va <= 0) & (d4 - d3 >= 0) & (d5 - d6 >= 0)
-        v, w = np.where(m, 1.0 - t_bc, v), np.where(m, t_bc, w)
-        m = (vb <= 0) & (d2 >= 0) & (d6 <= 0)
-        v, w = np.where(m, 0.0, v), np.where(m, np.nan_to_num(d2 / (d2 - d6)), w)
-        m = (vc <= 0) & (d1 >= 0) & (d3 <= 0)
-        v, w = np.where(m, np.nan_to_num(d1 / (d1 - d3)), v), np.where(m, 0.0, w)
-    m = (d6 >= 0) & (d5 <= d6)
-    v, w = np.where(m, 0.0, v), np.where(m, 1.0, w)
-    m = (d3 >= 0) & (d4 <= d3)
-    v, w = np.where(m, 1.0, v), np.where(m, 0.0, w)
-    m = (d1 <= 0) & (d2 <= 0)
-    v, w = np.where(m, 0.0, v), np.where(m, 0.0, w)
+    v, w, degenerate = _region_weights(d1, d2, d3, d4, d5, d6, dot(ab, ab) * dot(ac, ac))
     r = ap - ab * v - ac * w
     out = dot(r, r)
     if np.any(degenerate):
