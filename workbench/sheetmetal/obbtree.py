@@ -142,11 +142,21 @@ def _traverse(
         a.ravel() for a in np.meshgrid(np.arange(F), start, np.arange(M), indexing="ij")
     )
     tested_f, tested_n, hit_f, hit_n, hits = [], [], [], [], []
+    # Bounding-sphere radii: boxes whose spheres are apart cannot overlap, so only the
+    # pairs whose spheres meet pay for the 15-axis separating-axis test.
+    n_rad = np.sqrt((ne * ne).sum(axis=0))
+    o_rad = np.sqrt((oe * oe).sum(axis=0))
     while len(f_idx):
         fo = f_idx * M + o_idx
-        ok = sat_overlap_t(
-            oc[:, fo] - nc[:, n_idx], nr[:, :, n_idx], ne[:, n_idx], orot[:, :, fo], oe[:, o_idx]
-        )
+        d = oc[:, fo] - nc[:, n_idx]
+        reach = n_rad[n_idx] + o_rad[o_idx]
+        near = np.flatnonzero((d * d).sum(axis=0) <= reach * reach)
+        ok = np.zeros(len(f_idx), dtype=bool)
+        if len(near):
+            fn, nn = fo[near], n_idx[near]
+            ok[near] = sat_overlap_t(
+                d[:, near], nr[:, :, nn], ne[:, nn], orot[:, :, fn], oe[:, o_idx[near]]
+            )
         tested_f.append(f_idx)
         tested_n.append(n_idx)
         f_idx, n_idx, o_idx = f_idx[ok], n_idx[ok], o_idx[ok]
