@@ -147,3 +147,36 @@ def test_helpers_transformed_corners_from_points_record() -> None:
 def test_bad_input(center, rotation, half, word) -> None:
     with pytest.raises(InputError, match=word):
         OBB(center, rotation, half)
+
+
+def test_few_pair_path_equals_the_vectorised_test() -> None:
+    # sat_overlap_t answers small batches with a Python loop; both paths must agree exactly,
+    # parallel edges included.
+    from workbench.geometry import obb as obb_module
+    from workbench.geometry.transforms import rpy_to_matrix
+
+    rng = np.random.default_rng(7)
+    n = 5000
+    Ra = rpy_to_matrix(rng.uniform(-np.pi, np.pi, (n, 3)))
+    Rb = rpy_to_matrix(rng.uniform(-np.pi, np.pi, (n, 3)))
+    Rb[:1000] = Ra[:1000]
+    ca, cb = rng.uniform(-1, 1, (n, 3)), rng.uniform(-1, 1, (n, 3))
+    ea, eb = rng.uniform(0.05, 0.6, (n, 3)), rng.uniform(0.05, 0.6, (n, 3))
+    f = np.ascontiguousarray
+    args = (
+        f((cb - ca).T),
+        f(np.moveaxis(Ra, (1, 2), (0, 1))),
+        f(ea.T),
+        f(np.moveaxis(Rb, (1, 2), (0, 1))),
+        f(eb.T),
+    )
+    assert n > obb_module.FEW_PAIRS
+    vectorised = obb_module.sat_overlap_t(*args)
+    looped = obb_module._sat_few(*args, obb_module.SAT_EPS)
+    assert 0.1 < vectorised.mean() < 0.9
+    np.testing.assert_array_equal(looped, vectorised)
+    # And through the public entry point in batches small enough for the loop.
+    for k in range(0, 40, 4):
+        sl = slice(k, k + 4)
+        small = tuple(x[..., sl] for x in args)
+        np.testing.assert_array_equal(obb_module.sat_overlap_t(*small), vectorised[sl])

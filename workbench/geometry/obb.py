@@ -204,6 +204,8 @@ def sat_overlap_t(
     eps: float = SAT_EPS,
 ) -> NDArray[np.bool_]:
     """Return overlap verdicts from component-first arrays: d = cb - ca (3, ...), A[k, i] (3, 3, ...), a (3, ...), B, b."""
+    if d.ndim == 2 and max(x.shape[-1] for x in (d, A, a, B, b)) <= FEW_PAIRS:
+        return _sat_few(d, A, a, B, b, eps)
     R = np.einsum("ki...,kj...->ij...", A, B)  # R[i, j] = a_i . b_j
     t = np.einsum("ki...,k...->i...", A, d)  # centre offset in A's frame
     absR = np.abs(R) + eps
@@ -217,6 +219,66 @@ def sat_overlap_t(
     rb = b[_I1][None] * absR[:, _I2] + b[_I2][None] * absR[:, _I1]
     sep |= np.any(lhs > ra + rb, axis=(0, 1))
     return ~sep
+
+
+# Below this many pairs a plain Python loop beats numpy's per-call cost (a tree's deeper
+# levels test a handful of pairs); `_sat_few` and the vectorised test agree exactly.
+FEW_PAIRS = 8
+
+
+def _sat_few(
+    d: NDArray[np.float64],
+    A: NDArray[np.float64],
+    a: NDArray[np.float64],
+    B: NDArray[np.float64],
+    b: NDArray[np.float64],
+    eps: float,
+) -> NDArray[np.bool_]:
+    """Return `sat_overlap_t` for a few (3, P) pairs, one pair at a time in Python floats."""
+    n = max(x.shape[-1] for x in (d, A, a, B, b))  # the batch axis broadcasts, as in numpy
+    d, A, a, B, b = (np.broadcast_to(x, x.shape[:-1] + (n,)) for x in (d, A, a, B, b))
+    out = np.zeros(n, dtype=bool)
+    dl, Al, al, Bl, bl = (
+        d.T.tolist(),
+        A.transpose(2, 0, 1).tolist(),
+        a.T.tolist(),
+        B.transpose(2, 0, 1).tolist(),
+        b.T.tolist(),
+    )
+    for p in range(len(dl)):
+        dp, Ap, ap, Bp, bp = dl[p], Al[p], al[p], Bl[p], bl[p]
+        R = [
+            [Ap[0][i] * Bp[0][j] + Ap[1][i] * Bp[1][j] + Ap[2][i] * Bp[2][j] for j in range(3)]
+            for i in range(3)
+        ]
+        t = [Ap[0][i] * dp[0] + Ap[1][i] * dp[1] + Ap[2][i] * dp[2] for i in range(3)]
+        aR = [[abs(R[i][j]) + eps for j in range(3)] for i in range(3)]
+        if any(
+            abs(t[i]) > ap[i] + aR[i][0] * bp[0] + aR[i][1] * bp[1] + aR[i][2] * bp[2]
+            for i in range(3)
+        ):
+            continue
+        if any(
+            abs(t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j])
+            > ap[0] * aR[0][j] + ap[1] * aR[1][j] + ap[2] * aR[2][j] + bp[j]
+            for j in range(3)
+        ):
+            continue
+        sep = False
+        for i in range(3):
+            i1, i2 = (i + 1) % 3, (i + 2) % 3
+            for j in range(3):
+                j1, j2 = (j + 1) % 3, (j + 2) % 3
+                lhs = abs(t[i2] * R[i1][j] - t[i1] * R[i2][j])
+                ra = ap[i1] * aR[i2][j] + ap[i2] * aR[i1][j]
+                rb = bp[j1] * aR[i][j2] + bp[j2] * aR[i][j1]
+                if lhs > ra + rb:
+                    sep = True
+                    break
+            if sep:
+                break
+        out[p] = not sep
+    return out
 
 
 def obb_overlap(a: OBB, b: OBB) -> NDArray[np.bool_]:
