@@ -19,30 +19,17 @@ import numpy as np
 
 from workbench.geometry import OBB, obb_overlap
 from workbench.geometry.transforms import make_transform, rot_z
+from workbench.project.bending import PartSpec
+from workbench.service.bending import part_spec_to_si
 from workbench.sheetmetal import SheetMetalPart
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def seed_part() -> SheetMetalPart:
-    d = json.loads((ROOT / "projects" / "parts" / "seed_part.json").read_text())
-    return SheetMetalPart.from_spec(
-        {
-            "thickness": d["thickness"] * 1e-3,
-            "flanges": [
-                {"name": f["name"], "polygon": np.array(f["polygon"]) * 1e-3} for f in d["flanges"]
-            ],
-            "bends": [
-                dict(
-                    b,
-                    included_angle=np.radians(b["included_angle"]),
-                    inner_radius=b["inner_radius"] * 1e-3,
-                )
-                for b in d["bends"]
-            ],
-            "sequence": d["sequence"],
-        }
-    )
+    """Return seed 000's Fig. 7 part from its project file (mm/deg converted as the service does)."""
+    data = json.loads((ROOT / "projects" / "parts" / "seed_part.json").read_text())
+    return SheetMetalPart.from_spec(part_spec_to_si(PartSpec.model_validate(data), None))
 
 
 def cell() -> tuple[OBB, list[str]]:

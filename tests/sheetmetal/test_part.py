@@ -9,29 +9,16 @@ import numpy as np
 import pytest
 
 from workbench.errors import InputError
+from workbench.project.bending import PartSpec
+from workbench.service.bending import part_spec_to_si
 from workbench.sheetmetal import SheetMetalPart, bend_allowance
 
 SEED = Path(__file__).resolve().parents[2] / "projects" / "parts" / "seed_part.json"
 
 
 def seed_spec() -> dict:
-    """The seed part converted from mm/deg (file) to SI (model)."""
-    d = json.loads(SEED.read_text())
-    return {
-        "thickness": d["thickness"] * 1e-3,
-        "flanges": [
-            {"name": f["name"], "polygon": np.array(f["polygon"]) * 1e-3} for f in d["flanges"]
-        ],
-        "bends": [
-            dict(
-                b,
-                included_angle=np.radians(b["included_angle"]),
-                inner_radius=b["inner_radius"] * 1e-3,
-            )
-            for b in d["bends"]
-        ],
-        "sequence": d["sequence"],
-    }
+    """The seed part converted from mm/deg (file) to SI (model), as the service does it."""
+    return part_spec_to_si(PartSpec.model_validate(json.loads(SEED.read_text())), None)
 
 
 def rect(w: float, h: float) -> list[list[float]]:
