@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -103,13 +104,26 @@ class RobotCollisionChecker:
         """Return the collision report of configuration `q` [rad]."""
         return self.scene.check(self._poses(q), distance=distance)
 
-    def check_path(self, qs: NDArray[np.float64], *, distance: bool = False) -> PathReport:
-        """Return the report of a sampled path (N, dof): every sample is checked exactly."""
+    def check_path(
+        self,
+        qs: NDArray[np.float64],
+        *,
+        distance: bool = False,
+        progress: Callable[[float, str], None] | None = None,
+    ) -> PathReport:
+        """Return the report of a sampled path (N, dof): every sample is checked exactly.
+
+        `min_distance` is the clearance over the samples when `distance` is set (0 where one
+        collides, inf when distances were not asked for). `progress(fraction, message)` is
+        called every 50 samples.
+        """
         qs = np.atleast_2d(np.asarray(qs, float))
         hits: list[int] = []
         first: CollisionReport | None = None
         dmin = np.inf
         for i, q in enumerate(qs):
+            if progress is not None and i % 50 == 0:
+                progress(i / len(qs), f"collision check {i}/{len(qs)}")
             rep = self.check(q, distance=distance)
             dmin = min(dmin, rep.min_distance)
             if rep.in_collision:

@@ -147,36 +147,43 @@ def plan_motion(
     )
     report(0.2, "jerk-limited timing")
     traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
+    plan = plan_from_trajectory(
+        program, traj, setup, checker, dt=dt, progress=lambda f, m: report(0.3 + 0.7 * f, m)
+    )
+    report(1.0, "done")
+    return plan
+
+
+def plan_from_trajectory(
+    program: Program,
+    trajectory: Trajectory,
+    setup: RobotSetup,
+    checker: RobotCollisionChecker,
+    *,
+    dt: float,
+    validate_dt: float = 0.01,
+    progress: Progress | None = None,
+) -> MotionPlan:
+    """Return the `MotionPlan` of a timed program: limits checked every `validate_dt` [s] and at
+    the trajectory's peaks, samples every `dt` [s] with TCP speed, each sample checked exactly."""
+    model = setup.model
     limits = validate_trajectory(
-        traj,
+        trajectory,
         max_velocity=model.max_velocity,
         max_acceleration=model.max_acceleration,
         max_jerk=model.max_jerk,
         position_limits=model.limits,
+        dt=validate_dt,
     )
-    times, q, qd, qdd = traj.sample(dt)
-    flange = setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp
-    tcp = flange[:, :3, 3]
+    times, q, qd, qdd = trajectory.sample(dt)
+    tcp = (setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp)[:, :3, 3]
     tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
-    report(0.3, "collision check")
+    path_report = checker.check_path(q, progress=progress)
     colliding = np.zeros(len(times), bool)
-    n = len(times)
-    for i in range(n):
-        colliding[i] = checker.check(q[i], distance=False).in_collision
-        if progress is not None and i % 50 == 0:
-            report(0.3 + 0.7 * i / n, f"collision check {i}/{n}")
-    hits = np.flatnonzero(colliding)
-    first = checker.check(q[hits[0]], distance=False) if hits.size else None
-    path_report = PathReport(
-        collision_free=not hits.size,
-        first_index=int(hits[0]) if hits.size else None,
-        first_report=first,
-        min_distance=0.0 if hits.size else float("nan"),
-        samples=n,
-        colliding_indices=tuple(int(h) for h in hits),
+    colliding[list(path_report.colliding_indices)] = True
+    return MotionPlan(
+        program, trajectory, times, q, qd, qdd, tcp_speed, colliding, limits, path_report
     )
-    report(1.0, "done")
-    return MotionPlan(program, traj, times, q, qd, qdd, tcp_speed, colliding, limits, path_report)
 
 
 def export_text(plan: MotionPlan, fmt: str) -> str:

@@ -17,10 +17,9 @@ import trimesh
 from numpy.typing import NDArray
 from pydantic import ValidationError
 
-from workbench.collision import PathReport
 from workbench.errors import InputError, MeshError, WorkbenchError
 from workbench.geometry.transforms import invert_transform
-from workbench.motion import Move, Program, smooth_joint_path, validate_trajectory
+from workbench.motion import Move, Program, smooth_joint_path
 from workbench.polishing import (
     Coverage,
     ForceControlResult,
@@ -41,7 +40,7 @@ from workbench.polishing.chart import SurfaceChart
 from workbench.polishing.robot_path import solve_path_ik, tool_frames
 from workbench.project.polishing import PolishingSpec
 from workbench.service.convert import MM, pose_to_matrix
-from workbench.service.motion_plan import MotionPlan, export_text
+from workbench.service.motion_plan import MotionPlan, export_text, plan_from_trajectory
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
@@ -390,42 +389,21 @@ class PolishingService:
             position_limits=model.limits,
             exact_stop=[0, n_lead, len(q) - 1],
         )
-        limits = validate_trajectory(
-            traj,
-            max_velocity=model.max_velocity,
-            max_acceleration=model.max_acceleration,
-            max_jerk=model.max_jerk,
-            position_limits=model.limits,
-            dt=max(0.01, traj.duration / 5000),
-        )
-        step_t = dt if dt is not None else max(0.02, traj.duration / 600)
-        times, qs, qd, qdd = traj.sample(step_t)
-        tcp = (setup.T_world_base @ model.fk(qs) @ setup.T_flange_tcp)[:, :3, 3]
-        tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
-        report(0.5, "collision check")
-        colliding = np.zeros(len(times), bool)
-        for i in range(len(times)):
-            colliding[i] = self.wb.checker.check(qs[i], distance=False).in_collision
-            if progress is not None and i % 100 == 0:
-                report(0.5 + 0.5 * i / len(times), f"collision check {i}/{len(times)}")
-        hits = np.flatnonzero(colliding)
-        first = self.wb.checker.check(qs[hits[0]], distance=False) if hits.size else None
-        path_report = PathReport(
-            collision_free=not hits.size,
-            first_index=int(hits[0]) if hits.size else None,
-            first_report=first,
-            min_distance=0.0 if hits.size else float("nan"),
-            samples=len(times),
-            colliding_indices=tuple(int(h) for h in hits),
-        )
         moves = [Move.joint(q[0], speed=0.5, name="approach")]
         moves += [
             Move.linear(T, speed=feed, zone=0.0 if i in (0, len(T_base_tcp) - 2) else 0.5 * MM)
             for i, T in enumerate(T_base_tcp[1:])
         ]
         program = Program("polish", tuple(moves))
-        plan = MotionPlan(
-            program, traj, times, qs, qd, qdd, tcp_speed, colliding, limits, path_report
+        step_t = dt if dt is not None else max(0.02, traj.duration / 600)
+        plan = plan_from_trajectory(
+            program,
+            traj,
+            setup,
+            self.wb.checker,
+            dt=step_t,
+            validate_dt=max(0.01, traj.duration / 5000),
+            progress=lambda f, m: report(0.5 + 0.5 * f, m),
         )
         self.configuration = config
         self.last_motion = plan
