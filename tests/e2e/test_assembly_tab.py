@@ -101,8 +101,14 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
         lambda: np.allclose(app.assembly.arm_nodes["MZ07_B"][3].position, T[3][:3, 3], atol=1e-6),
         what="the second arm at its planned joints",
     )
-    for close in page.locator("button.mantine-Notification-closeButton").all():
-        close.click()  # the refused goal's notification, handled above
+    # Close the notifications (the refused goal's, handled above) one at a time: closing one
+    # re-indexes the rest, so a list taken up front points past the end.
+    closers = page.locator("button.mantine-Notification-closeButton")
+    for _ in range(20):
+        if closers.count() == 0:
+            break
+        closers.first.click()
+        page.wait_for_timeout(300)
     page.wait_for_timeout(1500)
     save_screenshot(page, "assembly.png")
 
