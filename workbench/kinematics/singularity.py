@@ -81,8 +81,13 @@ def arm_singularities(
         shoulder_distance = abs(float(wc @ _unit(normal)))
     else:  # joint 1 parallel to joint 2: fall back to the distance from the joint-1 axis
         shoulder_distance = float(np.linalg.norm(wc - (wc @ z[0]) * z[0]))
-    JJ = jacobian @ jacobian.T
-    manip = float(np.sqrt(max(np.linalg.det(JJ), 0.0)))
+    # sqrt(det(J J^T)) as the product of J's singular values: forming J J^T squares the
+    # condition number, so at a singularity its determinant's rounding (~1e-19) comes back
+    # through the square root as ~1e-9; the singular values keep the error near 1e-16.
+    if jacobian.shape[1] < jacobian.shape[0]:
+        manip = 0.0  # fewer joints than task dimensions: J J^T is singular everywhere
+    else:
+        manip = float(np.prod(np.linalg.svd(jacobian, compute_uv=False)))
     return Singularities(
         wrist=wrist_angle < margin,
         elbow=elbow_angle < margin,
