@@ -30,10 +30,12 @@ import numpy as np
 import trimesh
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.assembly.carry import carry_ik
 from workbench.assembly.contacts import Bodies
 from workbench.assembly.interference import InterferenceChecker
-from workbench.assembly.motion import check_pose
+from workbench.assembly.motion import check_pose, motion_samples
 from workbench.assembly.plan import PartPath
+from workbench.assembly.planners.common import retreat
 from workbench.collision.motion_bound import JointLevers
 from workbench.collision.robot_checker import RobotCollisionChecker
 from workbench.collision.shapes import Solid
@@ -450,14 +452,24 @@ def plan_carried_path(
 
     q_near, q_start: as for `carry_ends`; options: those of `plan_joint_rrt_connect`.
     The part's poses at the ends are the given ones (up to the IK's accuracy, ~1e-9 m).
+    A part seated in a hole at an end is first withdrawn straight (as in the pose-space
+    planners, `common.retreat`), the robot following by IK in the same configuration: a
+    random joint-space search would hardly thread the narrow passage of an insertion.
     """
     checks0, stats0 = (
         space.checks,
         (space.part_checker.stats.poses, space.part_checker.stats.exact_pairs),
     )
     t0 = time.perf_counter()
-    qs, qg, branch = carry_ends(space, start, goal, q_near, q_start=q_start)
-    q, nodes = plan_joint_rrt_connect(space, qs, qg, **options)  # type: ignore[arg-type]
+    S, G = check_pose(start, "start"), check_pose(goal, "goal")
+    qs, qg, branch = carry_ends(space, S, G, q_near, q_start=q_start)
+    ch, res = space.part_checker, space.resolution
+    a = retreat(ch, S, G[:3, 3], res)
+    b = retreat(ch, G, (S if a is None else a)[:3, 3], res)
+    head = _withdrawal(space, S, a, qs, "start")
+    tail = _withdrawal(space, G, b, qg, "goal")[::-1]
+    q_mid, nodes = plan_joint_rrt_connect(space, head[-1], tail[0], **options)  # type: ignore[arg-type]
+    q = np.concatenate([head[:-1], q_mid, tail[1:]])
     dt = time.perf_counter() - t0
     poses = space.part_poses(q)
     dense = space.part_poses(space.path_samples(q))
@@ -477,6 +489,40 @@ def plan_carried_path(
         joints=q,
         branch=branch,
     )
+
+
+def _withdrawal(
+    space: CarrySpace, T0: FloatArray, T1: FloatArray | None, q0: FloatArray, end: str
+) -> FloatArray:
+    """Return joints (n, dof) from q0 (part at T0) along the straight part motion T0 -> T1, checked.
+
+    The part's poses every `resolution` of travel, the robot following by IK from q0 in one
+    configuration; each joint step is validated as any edge. Just q0 when T1 is None.
+    """
+    if T1 is None:
+        return q0[None]
+    P = motion_samples(T0, T1, space.part_checker.radius, space.resolution, include_start=True)
+    T_world_tcp = P @ space.T_part_tcp
+    ik = carry_ik(
+        space.model,
+        space.T_world_base,
+        space.T_flange_tcp,
+        T_world_tcp,
+        q0,
+        what=f"withdrawal from the {end}",
+    )
+    q = ik.q
+    if np.abs(q[0] - q0).max() > 1e-6:
+        q = np.concatenate([q0[None], q])
+    for i in range(len(q) - 1):
+        if not space.motion_free(q[i], q[i + 1]):
+            raise PlanningError(
+                f"{end}: the part is seated (it cannot leave its {end} pose by itself) and the "
+                f"robot cannot follow its straight withdrawal (step {i + 1} of {len(q) - 1}: "
+                f"{space.explain(q[i + 1]) or 'a contact between the checked samples'}); "
+                "change the grasp or the approach"
+            )
+    return q
 
 
 def solid_at(name: str, mesh: trimesh.Trimesh) -> Solid:
