@@ -537,16 +537,16 @@ class AssemblyService:
         q_start: ArrayLike | None,
         report: Progress,
     ) -> PartPlan:
-        part = self.part(name)
-        assert part.robot is not None
-        arm = self.arms[part.robot]
-        where = f"assembly.parts[{self.part_names.index(name)}]"
         space = self.carry_space(
             name,
             cell_size,
             resolution=opts.pop("resolution", None),
             robot_resolution=opts.pop("robot_resolution", None),
         )
+        part = self.part(name)
+        assert part.robot is not None  # carry_space refused a part without one
+        arm = self.arms[part.robot]
+        where = f"assembly.parts[{self.part_names.index(name)}]"
         try:
             path = plan_carried_path(
                 space, part.start, part.goal, arm.q_home, q_start=q_start, **opts
