@@ -554,12 +554,16 @@ class AssemblyService:
         except (CollisionError, UnreachableError) as exc:
             raise type(exc)(f"{where} ({name}) carried by {arm.name}: {exc}") from None
         assert path.joints is not None
-        # Dense joints for the motion module: no point of the part moves more than
-        # PATH_SPACING between two waypoints (the lever bound of the joint steps).
+        # Waypoints for the motion module along each straight joint segment, about every
+        # PATH_SPACING of the part's motion (|Δp| + 0.1 m·angle, measured on 16 sub-steps),
+        # as the pose planners' samples; the timed motion is checked again afterwards.
         K = path.joints
         dense = [K[:1]]
+        u = np.linspace(0.0, 1.0, 17)[:, None]
         for a, b in zip(K[:-1], K[1:], strict=True):
-            n = max(1, int(np.ceil(float(np.abs(b - a) @ space.part_lever) / PATH_SPACING)))
+            P = space.part_poses(a + u * (b - a))
+            travel = float(np.sum(pose_distance(P[:-1], P[1:], 0.1)))
+            n = max(1, int(np.ceil(travel / PATH_SPACING)))
             dense.append(a + (np.arange(1, n + 1) / n)[:, None] * (b - a))
         joints = np.concatenate(dense)
         plan = PartPlan(name, arm.name, path, space.part_poses(joints), joints, path.branch)

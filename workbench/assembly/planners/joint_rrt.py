@@ -27,7 +27,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import trimesh
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.assembly.carry import carry_ik
@@ -409,9 +408,16 @@ def carry_ends(
             )
         sols[name] = (rows, branches)
     if q_start is not None:
-        qs0 = np.asarray(q_start, float)
+        qs0 = np.asarray(q_start, float).reshape(-1)
+        if qs0.shape != (space.dof,) or np.abs(space.part_poses(qs0)[0] - S).max() > 1e-6:
+            raise InputError(
+                f"q_start {np.round(np.degrees(qs0), 2).tolist()} deg does not hold the part "
+                "at its start pose; give the configuration where the approach ended"
+            )
         rs, bs = sols["start"]
-        same = np.flatnonzero(np.abs(rs - qs0).max(axis=1) < 1e-6)
+        # Its branch: the IK row equal to it up to whole turns of the joints.
+        turns = np.abs(np.angle(np.exp(1j * (rs - qs0))))
+        same = np.flatnonzero(turns.max(axis=1) < 1e-6)
         sols["start"] = (qs0[None], bs[same[:1]] if len(same) else np.array([-1]))
     valid: dict[str, list[int]] = {}
     for name, (rows, _) in sols.items():
@@ -485,7 +491,7 @@ def plan_carried_path(
         length=length,
         resolution=space.resolution,
         cell_size=space.part_checker.cell_size,
-        stats={"robot_resolution_um": int(round(space.robot_resolution * 1e6))},
+        stats={"withdrawal_steps": len(head) + len(tail) - 2, "key_points": len(q)},
         joints=q,
         branch=branch,
     )
@@ -497,7 +503,8 @@ def _withdrawal(
     """Return joints (n, dof) from q0 (part at T0) along the straight part motion T0 -> T1, checked.
 
     The part's poses every `resolution` of travel, the robot following by IK from q0 in one
-    configuration; each joint step is validated as any edge. Just q0 when T1 is None.
+    configuration; each joint step is validated as any edge, then the steps are merged where
+    a longer straight joint motion is free too. Just q0 when T1 is None.
     """
     if T1 is None:
         return q0[None]
@@ -522,9 +529,12 @@ def _withdrawal(
                 f"{space.explain(q[i + 1]) or 'a contact between the checked samples'}); "
                 "change the grasp or the approach"
             )
-    return q
-
-
-def solid_at(name: str, mesh: trimesh.Trimesh) -> Solid:
-    """Return a mesh `Solid` named `name` (for `CarrySpace(extra=...)`)."""
-    return Solid(name=name, kind="mesh", mesh=mesh)
+    # Keep only the configurations needed: from each kept one, the farthest next one that
+    # a straight joint motion reaches freely (the steps above prove the path exists).
+    kept = [0]
+    while kept[-1] < len(q) - 1:
+        j = kept[-1] + 1
+        while j + 1 < len(q) and space.motion_free(q[kept[-1]], q[j + 1]):
+            j += 1
+        kept.append(j)
+    return q[kept]
