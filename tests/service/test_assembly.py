@@ -417,6 +417,15 @@ def test_joint_space_planning_refuses_bad_input_naming_the_field(wb):
         a.set_pose("plate_a", "goal", goal)
     with pytest.raises(InputError, match="planner must be one of"):
         a.plan_part("plate_a", "prm")
+    s1 = a.part("screw_1").goal.copy()
+    bad = s1.copy()
+    bad[2, 3] -= 0.008  # head pushed into plate B
+    a.set_pose("screw_1", "goal", bad)
+    try:
+        with pytest.raises(CollisionError, match=r"assembly.parts\[3\].goal.*plate_b"):
+            a.plan_part("screw_1", "joint_rrt_connect")
+    finally:
+        a.set_pose("screw_1", "goal", s1)
     data = _data()
     data["assembly"]["parts"][2]["robot"] = None
     w2 = Workbench.from_dict(data, base_dir=PROJECT.parent)
