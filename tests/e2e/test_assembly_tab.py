@@ -35,7 +35,7 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
 
     # Change a control: the planner.
     page.get_by_role("combobox", name="Planner").click()
-    page.get_by_role("option", name="rrt_connect").click()
+    page.get_by_role("option", name="rrt_connect", exact=True).click()
     wait_for(lambda: app.assembly.planner.value == "rrt_connect", what="the planner on the server")
 
     before = canvas_png(page)
@@ -121,3 +121,27 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     text = Path(dl.value.path()).read_text()
     assert text == a.export_program("MZ07_B", "rapid", seq)
     assert text.startswith("MODULE assembly_MZ07_B") and "MoveAbsJ" in text
+
+    # The joint-space planner: the carrying robot's joints, robot and part checked together.
+    page.get_by_role("combobox", name="Planner").click()
+    page.get_by_role("option", name="joint_rrt_connect").click()
+    wait_for(lambda: app.assembly.planner.value == "joint_rrt_connect", what="the joint planner")
+    page.get_by_role("button", name="Plan part").click()
+    wait_for(
+        lambda: (
+            app.assembly.plan is not None
+            and app.assembly.plan.tasks[0].part_plan.path.planner == "joint_rrt_connect"
+        ),
+        timeout=120,
+        what="the joint-space part plan on the server",
+    )
+    jp = app.assembly.plan
+    pp = jp.tasks[0].part_plan
+    assert pp.part == "plate_a" and pp.path.joints is not None and jp.ok
+    arm = a.arms[pp.robot]
+    T = arm.setup.T_world_base @ arm.setup.model.fk(pp.joints) @ arm.setup.T_flange_tcp
+    np.testing.assert_allclose(T @ np.linalg.inv(a.part("plate_a").T_part_tcp), pp.samples)
+    page.get_by_text(f"(joint_rrt_connect): {len(pp.key_points)} key points").first.wait_for(
+        timeout=15_000
+    )
+    page.get_by_text(f"{jp.duration:.2f} s, collision-free").first.wait_for(timeout=15_000)

@@ -260,3 +260,179 @@ def test_unknown_part_robot_or_sequence_entry_names_the_field():
     data["assembly"]["sequence"][0]["part"] = "plate_x"
     with pytest.raises(ProjectError, match="plate_x"):
         Workbench.from_dict(data, base_dir=PROJECT.parent)
+
+
+# -- joint-space planning of carried parts ------------------------------------------------------
+#: Every point of an arm, its tool and a held part lies within this distance [m] of every joint axis.
+REACH = 1.6
+
+
+def _ik(arm, T_world_tcp):  # type: ignore[no-untyped-def]
+    s = arm.setup
+    T = np.linalg.inv(s.T_world_base) @ T_world_tcp @ np.linalg.inv(s.T_flange_tcp)
+    return s.model.ik(T, q_near=arm.q_home)[0]
+
+
+def _dense(q: np.ndarray, spacing: float) -> np.ndarray:
+    """Twin sampling: linear joint motion, no point within REACH of the axes moves > spacing."""
+    out = [q[:1]]
+    for a_, b_ in zip(q[:-1], q[1:], strict=True):
+        n = max(1, int(np.ceil(np.abs(b_ - a_).sum() * REACH / spacing)))
+        out.append(a_ + (np.arange(1, n + 1) / n)[:, None] * (b_ - a_))
+    return np.concatenate(out)
+
+
+def _robot_hits_parts(wb: Workbench, robot: str, q: np.ndarray, held: str) -> bool:
+    """Twin: python-fcl of the robot's links and tool against every other part where it stands."""
+    a = wb.assembly
+    arm = a.arms[robot]
+    fixed = {n for n, _ in a.fixed_obstacles()}
+    others = [_fcl(m) for n, m in a.obstacles_for(held) if n not in fixed]
+    meshes = [*arm.setup.link_meshes[1:], arm.setup.tool_mesh]
+    links = [_fcl(m) for m in meshes]
+    for qi in q:
+        L = arm.setup.T_world_base @ arm.setup.model.link_transforms(qi)
+        for k, obj in enumerate(links):
+            T = L[min(k + 1, len(L) - 1)]
+            obj.setTransform(fcl.Transform(T[:3, :3], T[:3, 3]))
+            for o in others:
+                if fcl.collide(obj, o, fcl.CollisionRequest(), fcl.CollisionResult()):
+                    return True
+    return False
+
+
+@pytest.mark.parametrize("name", ["plate_b", "screw_2"])
+def test_joint_space_plan_of_a_carried_part_rechecks_free_densely(wb, name):
+    a = wb.assembly
+    part = a.part(name)
+    p = a.plan_part(name, "joint_rrt_connect")
+    assert p.path.planner == "joint_rrt_connect" and p.robot == part.robot
+    arm = a.arms[part.robot]
+    K = p.path.joints
+    assert K is not None and len(K) == len(p.key_points)
+    # The robot's own FK holds the part at every key point, from its start to its goal.
+    T = arm.setup.T_world_base @ arm.setup.model.fk(K) @ arm.setup.T_flange_tcp
+    np.testing.assert_allclose(T @ np.linalg.inv(part.T_part_tcp), p.key_points, atol=1e-12)
+    np.testing.assert_allclose(p.key_points[0], part.start, atol=1e-9)
+    np.testing.assert_allclose(p.key_points[-1], part.goal, atol=1e-9)
+    lim = arm.setup.model.limits
+    assert np.all(K >= lim[:, 0] - 1e-9) and np.all(K <= lim[:, 1] + 1e-9)
+    # Re-checked densely (the twin's own spacing) by the exact checkers: the robot against
+    # the cell and itself, the robot against the other parts, the part against everything.
+    Q = _dense(K, p.path.cell_size)
+    assert arm.checker.check_path(Q).collision_free
+    assert not _robot_hits_parts(wb, arm.name, Q, name)
+    P = arm.setup.T_world_base @ arm.setup.model.fk(Q) @ arm.setup.T_flange_tcp
+    assert _exact_free(wb, name, P @ np.linalg.inv(part.T_part_tcp), 1.0)
+
+
+def test_a_sequence_planned_in_joint_space_is_continuous_and_checked(wb):
+    a = wb.assembly
+    p = a.plan_sequence(["screw_0"], "joint_rrt_connect")
+    assert p.ok, p.summary()
+    task = p.tasks[0]
+    wp = task.trajectory.waypoints
+    assert np.abs(np.diff(wp[1:-1], axis=0)).max() < 0.5  # approach, path, retreat: one branch
+    arm = a.arms[task.robot]
+    part = a.part("screw_0")
+    for t, T_part in ((task.t_pick, part.start), (task.t_place, part.goal)):
+        q, _, _ = task.trajectory.at([t - task.t0])
+        T = arm.setup.T_world_base @ arm.setup.model.fk(q[0]) @ arm.setup.T_flange_tcp
+        np.testing.assert_allclose(T, T_part @ part.T_part_tcp, atol=1e-6)
+    np.testing.assert_allclose(wp[-1], arm.q_home)  # back home after the retreat
+
+
+def test_robot_robot_contact_is_found_when_two_arms_reach_one_spot_and_not_when_apart(wb):
+    a = wb.assembly
+    spot = xyz_rpy_to_transform([0.0, 0.0, 0.80], [np.pi, 0.0, 0.0])
+    times = np.array([0.0, 1.5])
+    joints = {n: np.stack([arm.q_home, _ik(arm, spot)]) for n, arm in a.arms.items()}
+    poses = {n: np.stack([a.part(n).start] * 2) for n in a.part_names}
+    contacts = a.cross_contacts([], times, joints, poses)
+    assert contacts and {c.index for c in contacts} == {1}
+    assert all(c.time == 1.5 for c in contacts)
+    # Twin: python-fcl on the same link and tool meshes, every pair of the two arms.
+    bodies = {}
+    for n, arm in a.arms.items():
+        meshes = [*arm.setup.link_meshes, arm.setup.tool_mesh]
+        L = arm.setup.T_world_base @ arm.setup.model.link_transforms(joints[n][1])
+        names = [*arm.checker.link_names, "tool"]
+        for k, (m, nm) in enumerate(zip(meshes, names, strict=True)):
+            T = L[min(k, len(L) - 1)]
+            o = _fcl(m)
+            o.setTransform(fcl.Transform(T[:3, :3], T[:3, 3]))
+            bodies[f"{n}/{nm}"] = o
+    expected = {
+        (x, y)
+        for x in bodies
+        for y in bodies
+        if x.startswith("MZ07/")
+        and y.startswith("MZ07_B/")
+        and fcl.collide(bodies[x], bodies[y], fcl.CollisionRequest(), fcl.CollisionResult())
+    }
+    assert {(c.body_a, c.body_b) for c in contacts} == expected
+    plan = a.plan_sequence(["plate_a"])
+    assert plan.contacts == ()  # the example's arms stay apart
+
+
+def test_robot_part_contact_names_both_bodies_and_the_carried_tool_is_excused(wb):
+    from types import SimpleNamespace
+
+    a = wb.assembly
+    plate = a.part("plate_b")
+    arm = a.arms["MZ07"]  # not plate_b's robot
+    # The gripper box ends 30 mm short of the TCP: 35 mm past the grasp puts it 5 mm deep.
+    into = plate.goal @ plate.T_part_tcp @ xyz_rpy_to_transform([0, 0, 0.035], [0, 0, 0])
+    times = np.array([0.0, 0.5, 1.0])
+    joints = {n: np.stack([x.q_home] * 3) for n, x in a.arms.items()}
+    joints["MZ07"][1] = _ik(arm, into)
+    poses = {n: np.stack([a.part(n).goal] * 3) for n in a.part_names}
+    contacts = a.cross_contacts([], times, joints, poses)
+    assert ("MZ07/tool", "part plate_b") in {(c.body_a, c.body_b) for c in contacts}
+    assert {c.index for c in contacts} == {1}
+    c = next(c for c in contacts if c.body_a == "MZ07/tool")
+    assert "MZ07/tool hits part plate_b at t = 0.500 s" in c.describe()
+    # Twin: python-fcl on the tool mesh and the plate mesh.
+    T = arm.setup.T_world_base @ arm.setup.model.fk(joints["MZ07"][1])
+    tool, pl = _fcl(arm.setup.tool_mesh), _fcl(plate.mesh)
+    tool.setTransform(fcl.Transform(T[:3, :3], T[:3, 3]))
+    pl.setTransform(fcl.Transform(plate.goal[:3, :3], plate.goal[:3, 3]))
+    assert fcl.collide(tool, pl, fcl.CollisionRequest(), fcl.CollisionResult())
+    # While MZ07 carries plate_b in a task, its tool on the plate is the grasp, not a crash.
+    task = SimpleNamespace(robot="MZ07", part="plate_b", t0=0.25, t1=0.75)
+    excused = a.cross_contacts([task], times, joints, poses)  # type: ignore[list-item]
+    assert ("MZ07/tool", "part plate_b") not in {(c.body_a, c.body_b) for c in excused}
+
+
+def test_joint_space_planning_refuses_bad_input_naming_the_field(wb):
+    a = wb.assembly
+    goal = a.part("plate_a").goal
+    far = goal.copy()
+    far[:3, 3] = [0.0, 0.0, 1.9]
+    a.set_pose("plate_a", "goal", far)
+    try:
+        with pytest.raises(UnreachableError, match=r"assembly.parts\[0\].*goal.*out of reach"):
+            a.plan_part("plate_a", "joint_rrt_connect")
+    finally:
+        a.set_pose("plate_a", "goal", goal)
+    with pytest.raises(InputError, match="planner must be one of"):
+        a.plan_part("plate_a", "prm")
+    s1 = a.part("screw_1").goal.copy()
+    bad = s1.copy()
+    bad[2, 3] -= 0.008  # head pushed into plate B
+    a.set_pose("screw_1", "goal", bad)
+    try:
+        with pytest.raises(CollisionError, match=r"assembly.parts\[3\].goal.*plate_b"):
+            a.plan_part("screw_1", "joint_rrt_connect")
+    finally:
+        a.set_pose("screw_1", "goal", s1)
+    data = _data()
+    data["assembly"]["parts"][2]["robot"] = None
+    w2 = Workbench.from_dict(data, base_dir=PROJECT.parent)
+    with pytest.raises(InputError, match=r"assembly.parts\[2\].robot.*joint space"):
+        w2.assembly.plan_part("screw_0", "joint_rrt_connect")
+    data = _data()
+    data["assembly"]["planner"]["name"] = "joint_rrt_connect"
+    data["assembly"]["planner"]["robot_resolution"] = 0
+    with pytest.raises(ProjectError, match=r"assembly.planner.robot_resolution"):
+        Workbench.from_dict(data, base_dir=PROJECT.parent)

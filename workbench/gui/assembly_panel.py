@@ -19,7 +19,7 @@ from workbench.gui.progress import busy
 from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
 from workbench.gui.timeline import Motion
 from workbench.service import EXPORT_FORMATS
-from workbench.service.assembly import KEY_POINT_FORMATS, AssemblyPlan
+from workbench.service.assembly import KEY_POINT_FORMATS, PLANNER_CHOICES, AssemblyPlan
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -66,7 +66,11 @@ class AssemblyPanel:
         self.goal_rpy = g.add_vector3("Goal rpy [deg]", (0.0, 0.0, 0.0), step=1.0)
         self.status = g.add_markdown("")
         self.planner = g.add_dropdown(
-            "Planner", options=("ant", "rrt_connect"), initial_value=spec.planner.name
+            "Planner",
+            options=PLANNER_CHOICES,
+            initial_value=spec.planner.name,
+            hint="ant, rrt_connect: the part's pose (the robot follows by IK); "
+            "joint_rrt_connect: the carrying robot's joints, robot and part checked",
         )
         self.cell = g.add_number(
             "Cell size [mm]",
@@ -304,6 +308,8 @@ class AssemblyPanel:
         state = (
             "collision-free" if plan.ok else f"**{int(plan.colliding.sum())} colliding samples**"
         )
+        if plan.contacts:
+            state += f" (first contact: {plan.contacts[0].describe()})"
         self.result.content = f"{head}\n\nTimed motion: {plan.duration:.2f} s, {state}"
         self.download.disabled = False
         self.prog_download.disabled = False

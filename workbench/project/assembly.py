@@ -58,12 +58,14 @@ class AssemblyPartSpec(StrictModel):
 class AssemblyPlannerSpec(StrictModel):
     """The part path planner and its parameters."""
 
-    name: Literal["ant", "rrt_connect"] = "ant"
+    name: Literal["ant", "rrt_connect", "joint_rrt_connect"] = "ant"
     cell_size: Positive | None = None  # subdivision cell [mm]; default 1/20 of each part
     step: Annotated[int, Field(ge=1)] = 20  # ant: segments along the dominant axis
     dis: Positive | None = None  # ant: grid spacing on a cutting plane [mm]
-    seed: Annotated[int, Field(ge=0)] = 0  # rrt_connect: random seed
-    max_time: Positive = 10.0  # rrt_connect: time limit [s]
+    seed: Annotated[int, Field(ge=0)] = 0  # rrt_connect, joint_rrt_connect: random seed
+    max_time: Positive = 10.0  # rrt_connect, joint_rrt_connect: time limit [s]
+    # joint_rrt_connect: largest travel of a robot point between two checks [mm]; default cell_size
+    robot_resolution: Positive | None = None
 
 
 class AssemblyTaskSpec(StrictModel):

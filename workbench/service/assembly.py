@@ -2,10 +2,13 @@
 
 Everything here is SI (m, rad, s); the project's `assembly` section is in mm and degrees.
 A part move is planned by `plan_part_path` among the cell's objects and the other parts
-(earlier parts of the sequence at their goal, later ones at their start); the robot that
-carries it follows by inverse kinematics in one arm configuration; the robot motion is
-timed by the motion module (ruckig, jerk-limited); the timed motion is checked again:
-robot against cell (python-fcl) and carried part against everything (interference checker).
+(earlier parts of the sequence at their goal, later ones at their start) and the robot that
+carries it follows by inverse kinematics in one arm configuration, or (planner
+"joint_rrt_connect") it is planned in the carrying robot's joint space, robot and part
+checked together; the robot motion is timed by the motion module (ruckig, jerk-limited);
+the timed motion is checked again: each robot against the cell (python-fcl), each carried
+part against everything (interference checker), robots against each other and robots
+against the parts (`contacts.Bodies`), the last two reported with both bodies and the time.
 """
 
 from __future__ import annotations
@@ -25,9 +28,18 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.assembly import InterferenceChecker, PartPath, plan_part_path
 from workbench.assembly.carry import CarryIK, carry_ik
 from workbench.assembly.cells import check_cell_size, check_mesh
+from workbench.assembly.contacts import Bodies, Contact
 from workbench.assembly.motion import check_pose, interpolate, path_samples, pose_distance
-from workbench.collision import RobotCollisionChecker
-from workbench.errors import CollisionError, InputError, MeshError, ProjectError, WorkbenchError
+from workbench.assembly.planners.joint_rrt import CarrySpace, plan_carried_path
+from workbench.collision import RobotCollisionChecker, Solid
+from workbench.errors import (
+    CollisionError,
+    InputError,
+    MeshError,
+    ProjectError,
+    UnreachableError,
+    WorkbenchError,
+)
 from workbench.geometry.transforms import invert_transform, make_transform
 from workbench.motion import Move, Program, Trajectory, smooth_joint_path
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
@@ -42,6 +54,9 @@ if TYPE_CHECKING:
 
 Progress = Callable[[float, str], None]
 KEY_POINT_FORMATS = ("csv", "json")
+#: Planners for a part move: the part's pose (seed 003's single ant, RRT-Connect in SE(3)), or
+#: the carrying robot's joints (RRT-Connect in joint space, robot and part checked).
+PLANNER_CHOICES = ("ant", "rrt_connect", "joint_rrt_connect")
 #: Spacing [m] of the TCP samples handed to the motion module along approach, carry, retreat.
 PATH_SPACING = 0.02
 
@@ -117,7 +132,9 @@ class AssemblyPlan:
 
     times (N,) [s]; joints[robot] (N, dof) [rad] (velocities/accelerations likewise);
     part_poses[part] (N, 4, 4) [m]; robot_collisions[robot] and part_interference[part]:
-    sample indices where the timed motion hits the cell (robot) or an obstacle (part).
+    sample indices where the timed motion hits the cell (robot) or an obstacle (part);
+    contacts: every robot–robot and robot–part contact (both bodies, e.g. "MZ07/link3" and
+    "part screw_2", sample index and time [s]).
     """
 
     tasks: tuple[TaskPlan, ...]
@@ -128,6 +145,7 @@ class AssemblyPlan:
     part_poses: dict[str, NDArray[np.float64]] = field(repr=False)
     robot_collisions: dict[str, tuple[int, ...]]
     part_interference: dict[str, tuple[int, ...]]
+    contacts: tuple[Contact, ...] = ()
 
     @property
     def duration(self) -> float:
@@ -140,6 +158,7 @@ class AssemblyPlan:
         out = np.zeros(len(self.times), dtype=bool)
         for idx in (*self.robot_collisions.values(), *self.part_interference.values()):
             out[list(idx)] = True
+        out[[c.index for c in self.contacts]] = True
         return out
 
     @property
@@ -152,6 +171,8 @@ class AssemblyPlan:
         order = " → ".join(t.part for t in self.tasks)
         hits = int(self.colliding.sum())
         state = "collision-free at every sample" if hits == 0 else f"{hits} colliding samples"
+        if self.contacts:
+            state += f" (first contact: {self.contacts[0].describe()})"
         return f"{len(self.tasks)} part moves ({order}); cycle time {self.duration:.3f} s; {state}"
 
     def part_pose(self, name: str, t: float) -> NDArray[np.float64]:
@@ -194,6 +215,7 @@ class AssemblyService:
         self._arms: dict[str, AssemblyArm] | None = None
         self._checkers: dict[tuple[str, tuple[str, ...], float | None], InterferenceChecker] = {}
         self._fixed: list[tuple[str, trimesh.Trimesh]] | None = None
+        self._bodies: Bodies | None = None
         self.last_part_plan: PartPlan | None = None
         self.last_plan: AssemblyPlan | None = None
 
@@ -406,7 +428,50 @@ class AssemblyService:
             if p.dis is not None:
                 opts["dis"] = p.dis * MM
             return opts
-        return {"seed": p.seed, "max_time": p.max_time}
+        opts = {"seed": p.seed, "max_time": p.max_time}
+        if planner == "joint_rrt_connect" and p.robot_resolution is not None:
+            opts["robot_resolution"] = p.robot_resolution * MM
+        return opts
+
+    def carry_space(
+        self,
+        name: str,
+        cell_size: float | None = None,
+        *,
+        resolution: float | None = None,
+        robot_resolution: float | None = None,
+    ) -> CarrySpace:
+        """Return the joint-space validity test of part `name` held by its robot (SI units).
+
+        The part against its obstacles (interference checker), the robot's links and tool
+        against the cell, itself and the other parts where they stand (python-fcl).
+        resolution, robot_resolution [m]: largest travel of a point of the part / the robot
+        between two checks (default the cell size). InputError if no robot carries the part.
+        """
+        part = self.part(name)
+        if part.robot is None:
+            i = self.part_names.index(name)
+            raise InputError(
+                f"assembly.parts[{i}].robot: part {name!r} has no robot, so it cannot be "
+                f"planned in joint space; name one of {list(self.arms)} or pick a pose planner"
+            )
+        arm = self.arms[part.robot]
+        fixed = {n for n, _ in self.fixed_obstacles()}
+        others = [
+            (Solid(f"part {n}", "mesh", mesh=m), np.eye(4))
+            for n, m in self.obstacles_for(name)
+            if n not in fixed
+        ]
+        return CarrySpace(
+            arm.checker,
+            self.checker(name, cell_size),
+            arm.setup.T_flange_tcp,
+            part.T_part_tcp,
+            extra=others,
+            obstacle_names=[n for n, _ in self.obstacles_for(name)],
+            resolution=resolution,
+            robot_resolution=robot_resolution,
+        )
 
     def plan_part(
         self,
@@ -415,18 +480,26 @@ class AssemblyService:
         *,
         cell_size: float | None = None,
         progress: Progress | None = None,
+        q_start: ArrayLike | None = None,
         **options: Any,
     ) -> PartPlan:
         """Return the PartPlan of part `name` from its start to its goal, with its robot's joints.
 
-        planner: "ant" or "rrt_connect" (default: the section's); cell_size [m]; options
-        override the section's planner options (SI). Raises CollisionError when the start or
-        goal interferes (naming the obstacles), PlanningError when no path is found,
-        UnreachableError when the carrying robot cannot follow in one configuration.
+        planner: one of PLANNER_CHOICES (default: the section's): "ant" and "rrt_connect"
+        plan the part's pose and the robot follows by IK; "joint_rrt_connect" plans the
+        carrying robot's joints (options seed, max_time, max_nodes, range_,
+        shortcut_iterations, resolution, robot_resolution [m]) from `q_start` [rad] (default:
+        the IK solution nearest the robot's home at the part's start). cell_size [m];
+        options override the section's planner options (SI). Raises CollisionError when the
+        start or goal interferes (naming the obstacles or the robot's bodies), PlanningError
+        when no path is found, UnreachableError when the carrying robot cannot follow in one
+        configuration or the start or goal is out of its reach.
         """
         report = progress or (lambda f, m: None)
         part = self.part(name)
         planner = planner or self.spec.planner.name
+        if planner not in PLANNER_CHOICES:
+            raise InputError(f"planner must be one of {PLANNER_CHOICES}, got {planner!r}")
         report(0.05, f"{name}: subdividing into cells")
         ch = self.checker(name, cell_size)
         names = [n for n, _ in self.obstacles_for(name)]
@@ -440,6 +513,8 @@ class AssemblyService:
                 )
         report(0.3, f"{name}: planning ({planner})")
         opts = {**self.planner_options(planner), **options}
+        if planner == "joint_rrt_connect":
+            return self._plan_joint(name, cell_size, opts, q_start, report)
         path = plan_part_path(part.start, part.goal, part.mesh, [], planner, checker=ch, **opts)
         samples = path_samples(path.poses, ch.radius, PATH_SPACING)
         joints: NDArray[np.float64] | None = None
@@ -452,6 +527,48 @@ class AssemblyService:
         plan = PartPlan(name, part.robot, path, samples, joints, branch)
         self.last_part_plan = plan
         report(1.0, f"{name}: {len(path.poses)} key points")
+        return plan
+
+    def _plan_joint(
+        self,
+        name: str,
+        cell_size: float | None,
+        opts: dict[str, Any],
+        q_start: ArrayLike | None,
+        report: Progress,
+    ) -> PartPlan:
+        space = self.carry_space(
+            name,
+            cell_size,
+            resolution=opts.pop("resolution", None),
+            robot_resolution=opts.pop("robot_resolution", None),
+        )
+        part = self.part(name)
+        assert part.robot is not None  # carry_space refused a part without one
+        arm = self.arms[part.robot]
+        where = f"assembly.parts[{self.part_names.index(name)}]"
+        try:
+            path = plan_carried_path(
+                space, part.start, part.goal, arm.q_home, q_start=q_start, **opts
+            )
+        except (CollisionError, UnreachableError) as exc:
+            raise type(exc)(f"{where} ({name}) carried by {arm.name}: {exc}") from None
+        assert path.joints is not None
+        # Waypoints for the motion module along each straight joint segment, about every
+        # PATH_SPACING of the part's motion (|Δp| + 0.1 m·angle, measured on 16 sub-steps),
+        # as the pose planners' samples; the timed motion is checked again afterwards.
+        K = path.joints
+        dense = [K[:1]]
+        u = np.linspace(0.0, 1.0, 17)[:, None]
+        for a, b in zip(K[:-1], K[1:], strict=True):
+            P = space.part_poses(a + u * (b - a))
+            travel = float(np.sum(pose_distance(P[:-1], P[1:], 0.1)))
+            n = max(1, int(np.ceil(travel / PATH_SPACING)))
+            dense.append(a + (np.arange(1, n + 1) / n)[:, None] * (b - a))
+        joints = np.concatenate(dense)
+        plan = PartPlan(name, arm.name, path, space.part_poses(joints), joints, path.branch)
+        self.last_part_plan = plan
+        report(1.0, f"{name}: {len(path.poses)} key points (joint space)")
         return plan
 
     def _carry(
@@ -508,7 +625,6 @@ class AssemblyService:
             def sub(f: float, m: str, k: int = k) -> None:
                 report((k + 0.8 * f) / n_tasks, m)
 
-            pp = self.plan_part(part.name, planner, cell_size=cell_size, progress=sub, **options)
             arm = self.arms[part.robot]
             pick = part.start @ part.T_part_tcp
             place = part.goal @ part.T_part_tcp
@@ -516,12 +632,40 @@ class AssemblyService:
             up = make_transform(np.eye(3), [0.0, 0.0, -task.retreat * MM])
             approach = _line(pick @ back, pick)
             retreat = _line(place, place @ up)
-            carried = pp.samples @ part.T_part_tcp
-            tcp = np.concatenate([approach, carried[1:], retreat[1:]])
-            ik = self._carry(arm, tcp, q_now[arm.name], f"task {k + 1} ({part.name})")
-            i_pick = len(approach) - 1
-            i_place = i_pick + len(carried) - 1
-            waypoints = np.concatenate([q_now[arm.name][None], ik.q])
+            what = f"task {k + 1} ({part.name})"
+            if (planner or self.spec.planner.name) == "joint_rrt_connect":
+                # The joint path starts where the approach ends and the retreat starts where
+                # it ends, so the three share the arm configuration at pick and place.
+                ik_a = self._carry(arm, approach, q_now[arm.name], f"{what} approach")
+                pp = self.plan_part(
+                    part.name,
+                    planner,
+                    cell_size=cell_size,
+                    progress=sub,
+                    q_start=ik_a.q[-1],
+                    **options,
+                )
+                assert pp.joints is not None
+                ik_r = self._carry(arm, retreat, pp.joints[-1], f"{what} retreat")
+                if np.abs(ik_r.q[0] - pp.joints[-1]).max() > 1e-6:
+                    raise UnreachableError(
+                        f"{what} retreat: the straight retreat from the goal needs another arm "
+                        "configuration than the planned one; shorten the retreat or move the goal"
+                    )
+                q_task = np.concatenate([ik_a.q, pp.joints[1:], ik_r.q[1:]])
+                i_pick = len(approach) - 1
+                i_place = i_pick + len(pp.joints) - 1
+            else:
+                pp = self.plan_part(
+                    part.name, planner, cell_size=cell_size, progress=sub, **options
+                )
+                carried = pp.samples @ part.T_part_tcp
+                tcp = np.concatenate([approach, carried[1:], retreat[1:]])
+                q_task = self._carry(arm, tcp, q_now[arm.name], what).q
+                i_pick = len(approach) - 1
+                i_place = i_pick + len(carried) - 1
+            # Back home after the retreat: the arm leaves the shared workspace to the others.
+            waypoints = np.concatenate([q_now[arm.name][None], q_task, arm.q_home[None]])
             model = arm.setup.model
             report((k + 0.85) / n_tasks, f"{part.name}: jerk-limited timing")
             traj = smooth_joint_path(
@@ -530,7 +674,7 @@ class AssemblyService:
                 np.asarray(model.max_acceleration) * speed,
                 np.asarray(model.max_jerk) * speed,
                 position_limits=model.limits,
-                exact_stop=[0, 1, i_pick + 1, i_place + 1, len(waypoints) - 1],
+                exact_stop=[0, 1, i_pick + 1, i_place + 1, len(waypoints) - 2, len(waypoints) - 1],
             )
             wt = traj.waypoint_times
             tasks.append(
@@ -545,7 +689,7 @@ class AssemblyService:
                 )
             )
             t0 = tasks[-1].t1
-            q_now[arm.name] = ik.q[-1]
+            q_now[arm.name] = arm.q_home.copy()
         report(0.95, "checking the timed motion")
         plan = self._sample(tasks, dt)
         self.last_plan = plan
@@ -614,6 +758,73 @@ class AssemblyService:
             part_poses=poses,
             robot_collisions=robot_hits,
             part_interference=part_hits,
+            contacts=self.cross_contacts(tasks, times, joints, poses),
+        )
+
+    def cell_bodies(self) -> Bodies:
+        """Return every robot body ("robot/link3", "robot/tool") and part ("part name") as `Bodies`.
+
+        Pairs: each robot's bodies against every other robot's, and each robot's moving
+        bodies (not its base) against every part.
+        """
+        with self._lock:
+            if self._bodies is None:
+                solids: list[Solid] = []
+                owner: list[str] = []
+                for name, arm in self.arms.items():
+                    for body, entry in arm.checker.scene.moving.items():
+                        solids.append(Solid(f"{name}/{body}", "mesh", mesh=entry.mesh))
+                        owner.append(name)
+                for part in self.parts.values():
+                    solids.append(Solid(f"part {part.name}", "mesh", mesh=part.mesh))
+                    owner.append("")
+                names = [sol.name for sol in solids]
+                base = {f"{n}/{a.checker.link_names[0]}" for n, a in self.arms.items()}
+                pairs = []
+                for i, a in enumerate(names):
+                    for j in range(i + 1, len(names)):
+                        if owner[i] and owner[j] and owner[i] != owner[j]:
+                            pairs.append((a, names[j]))  # robot - robot
+                        elif owner[i] and not owner[j] and a not in base:
+                            pairs.append((a, names[j]))  # robot - part
+                self._bodies = Bodies(solids, pairs)
+            return self._bodies
+
+    def cross_contacts(
+        self,
+        tasks: list[TaskPlan],
+        times: NDArray[np.float64],
+        joints: dict[str, NDArray[np.float64]],
+        part_poses: dict[str, NDArray[np.float64]],
+    ) -> tuple[Contact, ...]:
+        """Return the robot–robot and robot–part contacts of sampled motions, in time order.
+
+        joints[robot] (N, dof) [rad] and part_poses[part] (N, 4, 4) [m] at times (N,) [s].
+        A carrying robot's tool touches its own part from the approach to the retreat of
+        that task by design: that one pair is not checked during the task [t0, t1].
+        """
+        bodies = self.cell_bodies()
+        N = len(times)
+        P = np.empty((N, len(bodies.names), 4, 4))
+        k = 0
+        for name, arm in self.arms.items():
+            L = arm.setup.T_world_base @ arm.setup.model.link_transforms(joints[name])
+            for body in arm.checker.scene.moving:
+                frame = arm.checker.link_names.index(body) if body != "tool" else L.shape[1] - 1
+                P[:, k] = L[:, frame]
+                k += 1
+        for part in self.parts.values():
+            P[:, k] = part_poses[part.name]
+            k += 1
+        active = np.ones((N, len(bodies.pa)), dtype=bool)
+        pairs = bodies.pairs
+        for task in tasks:
+            key = (f"{task.robot}/tool", f"part {task.part}")
+            if key in pairs:
+                during = (times >= task.t0) & (times <= task.t1)
+                active[during, pairs.index(key)] = False
+        return tuple(
+            Contact(n, float(times[n]), *pairs[p]) for n, p in bodies.contacts(P, active=active)
         )
 
     # -- export --------------------------------------------------------------------------
@@ -635,7 +846,7 @@ class AssemblyService:
             if task.robot != robot:
                 continue
             wp = task.trajectory.waypoints
-            stops = {1, len(wp) - 1} | {
+            stops = {1, len(wp) - 2, len(wp) - 1} | {
                 int(np.argmin(np.abs(task.trajectory.waypoint_times - (t - task.t0))))
                 for t in (task.t_pick, task.t_place)
             }
