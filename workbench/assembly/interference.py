@@ -222,8 +222,12 @@ class InterferenceChecker:
         """Return True if the part at pose T (4, 4) truly interferes with obstacle `k` (fcl + containment)."""
         T = np.asarray(T, dtype=float)
         self.moving.fcl_obj.setTransform(_fcl_tf(T))
-        part_in, ob_in = self._enclosable(T[None])
-        return self._exact(T, k, bool(part_in[0, k]), bool(ob_in[0, k]))
+        ob = self.obstacles[k]
+        if fcl.collide(self.moving.fcl_obj, ob.fcl_obj, self._request, fcl.CollisionResult()):
+            return True
+        pairs = np.zeros((1, len(self.obstacles)), dtype=bool)
+        pairs[0, k] = True
+        return self._first_enclosed(T[None], pairs) == 0
 
     def _enclosable(self, T: NDArray[np.float64]) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
         """Return (P, n) masks: a part component may lie inside obstacle k / one of k's inside the part.
@@ -253,15 +257,21 @@ class InterferenceChecker:
         ob_in = np.logical_or.reduceat(q, self._ob_comp_start, axis=1)
         return part_in, ob_in
 
-    def _exact(self, T: NDArray[np.float64], k: int, part_in: bool, ob_in: bool) -> bool:
-        """Exact verdict for obstacle k, the part's fcl object already placed at T."""
-        ob = self.obstacles[k]
-        if fcl.collide(self.moving.fcl_obj, ob.fcl_obj, self._request, fcl.CollisionResult()):
-            return True
-        # Surfaces apart: interference only if one body encloses the other.
-        if part_in and _inside(self.moving.probes @ T[:3, :3].T + T[:3, 3], ob):
-            return True
-        return ob_in and _inside((ob.probes - T[:3, 3]) @ T[:3, :3], self.moving)
+    def _first_enclosed(self, T: NDArray[np.float64], pairs: NDArray[np.bool_]) -> int:
+        """Return the first of poses T (m, 4, 4) where the part and an obstacle of `pairs` (m, n)
+        enclose one another (their surfaces known apart), or -1."""
+        part_in, ob_in = self._enclosable(T)
+        part_in &= pairs
+        ob_in &= pairs
+        for i in np.nonzero((part_in | ob_in).any(axis=1))[0].tolist():
+            R, t = T[i, :3, :3], T[i, :3, 3]
+            for k in np.nonzero(part_in[i])[0].tolist():
+                if _inside(self.moving.probes @ R.T + t, self.obstacles[k]):
+                    return i
+            for k in np.nonzero(ob_in[i])[0].tolist():
+                if _inside((self.obstacles[k].probes - t) @ R, self.moving):
+                    return i
+        return -1
 
     # -- verdicts ------------------------------------------------------------------------
     def first_interference(
@@ -317,32 +327,40 @@ class InterferenceChecker:
         use_cells: bool,
         chunk: int,
     ) -> int:
-        """Return the first of the poses T[hot] (in order) that interferes, or -1; cand: AABB pairs."""
+        """Return the first of the poses T[hot] (in order) that interferes, or -1; cand: AABB pairs (P, n)."""
         for s in range(0, len(hot), chunk):
             rows = hot[s : s + chunk]
-            hit = self._first_in(T[rows], cand[rows], use_cells)
+            c = cand[rows]
+            self.stats.aabb_pairs += int(c.sum())
+            if use_cells:
+                for k in np.nonzero(c.any(axis=0))[0].tolist():
+                    r = np.nonzero(c[:, k])[0]
+                    self.stats.cell_pairs += len(r)
+                    c[r, k] = self.cell_stage_pair(T[rows[r]], k)
+            # Surfaces first, in order, up to the first contact; then enclosure, which
+            # needs surfaces apart, on the poses before it in one vectorised pass.
+            hit, apart = -1, []
+            for i in np.nonzero(c.any(axis=1))[0].tolist():
+                self.moving.fcl_obj.setTransform(_fcl_tf(T[rows[i]]))
+                for k in np.nonzero(c[i])[0].tolist():
+                    self.stats.exact_pairs += 1
+                    if fcl.collide(
+                        self.moving.fcl_obj,
+                        self.obstacles[k].fcl_obj,
+                        self._request,
+                        fcl.CollisionResult(),
+                    ):
+                        hit = i
+                        break
+                if hit >= 0:
+                    break
+                apart.append(i)
+            if apart:
+                e = self._first_enclosed(T[rows[apart]], c[apart])
+                if e >= 0:
+                    return int(rows[apart[e]])
             if hit >= 0:
                 return int(rows[hit])
-        return -1
-
-    def _first_in(self, T: NDArray[np.float64], cand: NDArray[np.bool_], use_cells: bool) -> int:
-        """Return the first of poses T (m, 4, 4) that interferes, cand (m, n) their AABB pairs."""
-        self.stats.aabb_pairs += int(cand.sum())
-        if use_cells:
-            for kc in np.nonzero(cand.any(axis=0))[0].tolist():
-                rows = np.nonzero(cand[:, kc])[0]
-                self.stats.cell_pairs += len(rows)
-                cand[rows, kc] = self.cell_stage_pair(T[rows], kc)
-        rows = np.nonzero(cand.any(axis=1))[0]
-        if len(rows) == 0:
-            return -1
-        part_in, ob_in = self._enclosable(T[rows])
-        for i, p in enumerate(rows):
-            self.moving.fcl_obj.setTransform(_fcl_tf(T[p]))
-            for k in np.nonzero(cand[p])[0].tolist():
-                self.stats.exact_pairs += 1
-                if self._exact(T[p], k, bool(part_in[i, k]), bool(ob_in[i, k])):
-                    return int(p)
         return -1
 
     def interferes(self, T: ArrayLike) -> bool:

@@ -14,6 +14,11 @@ of the previous point onto the plane are candidates too (so a part can line up w
 hole), and a part seated in a hole at the start or goal is first withdrawn along a
 free axis (see `common.retreat`), as the seed's straight splitting cannot leave a hole
 sideways.
+
+Speed without changing the result: a plane's candidates are decided in vectorised
+batches (their motions share one rotation, so they are sampled together and the AABB
+stage clears them in one call), taking the first free one in cost order as the seed's
+one-by-one loop would; motions are checked AABB -> exact (`cells=False`).
 """
 
 from __future__ import annotations
@@ -52,6 +57,7 @@ def plan_ant(
     step: number of segments (>= 1); dis: grid spacing on each plane [m] (default: the
     larger of 2 cell sizes and half_width / 25); half_width: grid half size [m] (default
     D/2 + the part's radius); resolution: motion check spacing [m] (default cell size).
+    start and goal must be free of interference (`plan_part_path` checks them first).
     """
     if not isinstance(step, int | np.integer) or step < 1:
         raise InputError(f"step must be an integer >= 1, got {step!r}")
