@@ -155,10 +155,28 @@ class InterferenceChecker:
         # containment pre-test, and the fcl request object.
         self._ob_bounds = np.asarray([b.bounds for b in self.obstacles], float).reshape(-1, 2, 3)
         self._probes_flat = self.moving.probes.reshape(-1, 3)
-        self._ob_closed = np.array([b.grid.closed for b in self.obstacles], dtype=bool)
-        boxes = [b.component_boxes for b in self.obstacles]
-        self._ob_comp_boxes = np.concatenate(boxes) if boxes else np.zeros((0, 2, 3))
-        self._ob_comp_start = np.cumsum([0] + [len(b) for b in boxes[:-1]])
+        # Static halves of the enclosure pre-test, rotation-free: a part component fits in
+        # an obstacle's box only if its probes' diameter is at most the box's diagonal; an
+        # obstacle component fits in the part's world AABB only if no side of its box
+        # exceeds 2 |half extents| (the largest that AABB gets along an axis).
+        P = self.moving.probes
+        diam = np.max(np.linalg.norm(P[:, :, None] - P[:, None], axis=-1), axis=(1, 2))
+        diag = np.linalg.norm(self._ob_bounds[:, 1] - self._ob_bounds[:, 0], axis=1)
+        self._may_hold_part = np.array(
+            [
+                b.grid.closed and bool(np.any(diam <= d))
+                for b, d in zip(self.obstacles, diag, strict=True)
+            ],
+            dtype=bool,
+        )
+        reach = 2.0 * float(np.linalg.norm(self._box_h))
+        self._fitting_boxes = [
+            b.component_boxes[
+                np.all(b.component_boxes[:, 1] - b.component_boxes[:, 0] <= reach, axis=1)
+            ]
+            for b in self.obstacles
+        ]
+        self._may_fit_in_part = np.array([len(f) > 0 for f in self._fitting_boxes], dtype=bool)
         self._request = fcl.CollisionRequest()
 
     # -- stages, each (P, 4, 4) poses -> (P, n_obstacles) bool --------------------------
@@ -229,40 +247,48 @@ class InterferenceChecker:
         pairs[0, k] = True
         return self._first_enclosed(T[None], pairs) == 0
 
-    def _enclosable(self, T: NDArray[np.float64]) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
-        """Return (P, n) masks: a part component may lie inside obstacle k / one of k's inside the part.
+    def _enclosable(
+        self, T: NDArray[np.float64], pairs: NDArray[np.bool_]
+    ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+        """Return (P, n) masks within `pairs` (P, n): a part component may lie inside obstacle k /
+        one of k's components inside the part.
 
         Necessary conditions for enclosure: the box of a part component's probe vertices
         lies in the obstacle's box; an obstacle component's box lies in the part's world
-        AABB (which holds the whole part at any rotation).
+        AABB (which holds the whole part at any rotation). Obstacles that can never pass
+        (see __init__) are skipped.
         """
+        part_in = np.zeros_like(pairs)
+        ob_in = np.zeros_like(pairs)
+        used = pairs.any(axis=0)
         R, t = T[:, :3, :3], T[:, :3, 3]
-        C = len(self.moving.probes)
-        pw = (self._probes_flat @ np.swapaxes(R, 1, 2) + t[:, None]).reshape(len(T), C, -1, 3)
-        plo, phi = pw.min(axis=2), pw.max(axis=2)  # (P, C, 3)
-        ob = self._ob_bounds
-        m = np.ones((len(T), C, len(ob)), dtype=bool)
-        for a in range(3):
-            m &= (plo[:, :, a, None] >= ob[:, 0, a]) & (phi[:, :, a, None] <= ob[:, 1, a])
-        part_in = m.any(axis=1) & self._ob_closed
-        c = R.dot(self._box_c) + t
-        h = np.abs(R).dot(self._box_h)
-        lo, hi = c - h, c + h
-        cb = self._ob_comp_boxes  # (K, 2, 3), grouped by obstacle
-        q = np.ones((len(T), len(cb)), dtype=bool)
-        for a in range(3):
-            q &= (cb[:, 0, a] >= lo[:, a : a + 1]) & (cb[:, 1, a] <= hi[:, a : a + 1])
-        if len(cb) == 0:
-            return part_in, np.zeros_like(part_in)
-        ob_in = np.logical_or.reduceat(q, self._ob_comp_start, axis=1)
+        ks = np.nonzero(used & self._may_hold_part)[0]
+        if len(ks):
+            C = len(self.moving.probes)
+            pw = (self._probes_flat @ np.swapaxes(R, 1, 2) + t[:, None]).reshape(len(T), C, -1, 3)
+            plo, phi = pw.min(axis=2), pw.max(axis=2)  # (P, C, 3)
+            ob = self._ob_bounds[ks]
+            m = np.ones((len(T), C, len(ks)), dtype=bool)
+            for a in range(3):
+                m &= (plo[:, :, a, None] >= ob[:, 0, a]) & (phi[:, :, a, None] <= ob[:, 1, a])
+            part_in[:, ks] = m.any(axis=1) & pairs[:, ks]
+        ks = np.nonzero(used & self._may_fit_in_part)[0]
+        if len(ks):
+            c = R.dot(self._box_c) + t
+            h = np.abs(R).dot(self._box_h)
+            lo, hi = c - h, c + h
+            for k in ks.tolist():
+                cb = self._fitting_boxes[k]  # (Ck, 2, 3)
+                q = np.ones((len(T), len(cb)), dtype=bool)
+                for a in range(3):
+                    q &= (cb[:, 0, a] >= lo[:, a : a + 1]) & (cb[:, 1, a] <= hi[:, a : a + 1])
+                ob_in[:, k] = q.any(axis=1) & pairs[:, k]
         return part_in, ob_in
 
     def _first_enclosed(self, T: NDArray[np.float64], pairs: NDArray[np.bool_]) -> int:
         """Return the first of poses T (m, 4, 4) where the part and an obstacle of `pairs` (m, n)
         enclose one another (their surfaces known apart), or -1."""
-        part_in, ob_in = self._enclosable(T)
-        part_in &= pairs
-        ob_in &= pairs
+        part_in, ob_in = self._enclosable(T, pairs)
         for i in np.nonzero((part_in | ob_in).any(axis=1))[0].tolist():
             R, t = T[i, :3, :3], T[i, :3, 3]
             for k in np.nonzero(part_in[i])[0].tolist():
