@@ -147,3 +147,22 @@ def test_bad_group_sizes_are_refused():
     ch = InterferenceChecker(screw_mesh(), [plate_mesh()])
     with pytest.raises(InputError, match="sizes"):
         ch.first_free_group(np.repeat(np.eye(4)[None], 3, axis=0), [1, 1])
+
+
+def test_random_poses_in_and_around_a_box_match_the_twin():
+    import trimesh
+
+    rng = np.random.default_rng(8)
+    small = trimesh.creation.box([0.03, 0.02, 0.05])
+    big = trimesh.creation.icosphere(subdivisions=1, radius=0.08)
+    T = np.repeat(np.eye(4)[None], 80, axis=0)
+    T[:, :3, :3] = rpy_to_matrix(rng.uniform(-np.pi, np.pi, (80, 3)))
+    T[:, :3, 3] = rng.uniform(-0.12, 0.12, (80, 3))
+    for moving, obstacle in ((small, big), (big, small)):
+        ch = InterferenceChecker(moving, [obstacle])
+        ref = np.array([_twin(moving, t, obstacle) for t in T])
+        assert 0.2 < ref.mean() < 0.9
+        for cells in (True, False):
+            got = np.array([ch.first_interference(t[None], cells=cells) == 0 for t in T])
+            assert np.array_equal(got, ref)
+        assert ch.first_interference(T, cells=False) == int(np.argmax(ref))
