@@ -97,3 +97,78 @@ def test_ant_failure_names_the_plane():
     s[0, 3], g[0, 3] = -0.5, 0.5
     with pytest.raises(PlanningError, match="cutting plane"):
         plan_part_path(s, g, part, [wall], "ant", step=2, dis=0.05, half_width=0.1)
+
+
+def _block_scene():
+    from workbench.geometry.transforms import make_transform, rpy_to_matrix
+
+    part = trimesh.creation.box([0.05, 0.05, 0.05])
+    block = trimesh.creation.box([0.2, 0.3, 0.3])
+    floor = trimesh.creation.box([1.2, 1.2, 0.02]).apply_translation([0, 0, -0.2])
+    s = make_transform(np.eye(3), [-0.5, 0.0, 0.0])
+    g = make_transform(rpy_to_matrix([0.0, 0.0, np.pi / 2]), [0.5, 0.02, 0.0])
+    return part, [block, floor], s, g
+
+
+def _twin_free(part, obstacles, poses, radius, step) -> bool:
+    """Twin: every sample (<= step apart) against every obstacle by fcl + trimesh containment."""
+    import fcl
+
+    def bvh(m):
+        b = fcl.BVHModel()
+        b.beginModel(len(m.vertices), len(m.faces))
+        b.addSubModel(np.asarray(m.vertices), np.asarray(m.faces, np.int32))
+        b.endModel()
+        return fcl.CollisionObject(b, fcl.Transform())
+
+    a, obs = bvh(part), [bvh(o) for o in obstacles]
+    for T in path_samples(poses, radius, step):
+        a.setTransform(fcl.Transform(T[:3, :3], T[:3, 3]))
+        placed = part.vertices[:1] @ T[:3, :3].T + T[:3, 3]
+        for o, m in zip(obs, obstacles, strict=True):
+            if fcl.collide(a, o, fcl.CollisionRequest(), fcl.CollisionResult()):
+                return False
+            if m.contains(placed)[0]:
+                return False
+    return True
+
+
+def test_ant_goes_around_a_block_on_the_cutting_planes():
+    part, obs, s, g = _block_scene()
+    r = plan_part_path(s, g, part, obs, "ant", cell_size=0.005)
+    assert len(r.poses) == 21 and r.nodes > 19  # the straight line was blocked
+    assert np.max(np.abs(r.poses[1:-1, 1:3, 3])) > 0.1  # went round the block
+    ch = InterferenceChecker(part, obs, 0.005)
+    assert _twin_free(part, obs, r.poses, ch.radius, 0.005)
+
+
+def test_ant_candidate_search_matches_one_candidate_at_a_time():
+    from workbench.assembly.motion import motion_samples
+    from workbench.assembly.planners.ant import _first_free
+
+    part, obs, s, g = _block_scene()
+    ch = InterferenceChecker(part, obs, 0.01)
+    rng = np.random.default_rng(2)
+    prev = s.copy()
+    prev[:3, 3] = [-0.45, 0.0, 0.0]
+    R = g[:3, :3]
+    wants = []
+    for trial in range(8):
+        goal = g if trial % 2 else None
+        # Without the goal: candidates in the block's slab; with it: in front of the block.
+        x, w = (-0.25, 0.7) if goal is not None else (-0.05, 0.3 if trial < 6 else 0.1)
+        c = np.c_[np.full(30, x), rng.uniform(-w, w, (30, 2))]
+
+        def free(k, goal=goal, c=c):
+            T = np.eye(4)
+            T[:3, :3], T[:3, 3] = R, c[k]
+            moves = [motion_samples(prev, T, ch.radius, 0.01)]
+            if goal is not None:
+                moves.append(motion_samples(T, goal, ch.radius, 0.01))
+            return not any(ch.interferes(x) for m in moves for x in m)
+
+        want = next((k for k in range(len(c)) if free(k)), -1)
+        k, tried = _first_free(ch, prev, R, c, goal, 0.01)
+        assert k == want and tried == (k + 1 if k >= 0 else len(c))
+        wants.append(want)
+    assert -1 in wants and len(set(wants)) > 3  # varied answers: a real search

@@ -6,7 +6,15 @@ obstacle's occupied cells (boxes fixed in the world); plus an obstacle vertex lo
 the part's occupied cells, for an obstacle wholly inside the part. Both stages are
 conservative: they never call a pair free that touches.
 Stage 3 (exact, the last word): python-fcl BVH mesh collision, plus a winding-number
-containment test in both directions because fcl meshes are surfaces.
+containment test in both directions because fcl meshes are surfaces. The containment
+test runs only where it can succeed: a component of one body can lie inside the other
+only if its bounding box lies inside the other's.
+
+The cell stage is a filter, not part of the verdict: with or without it the answer is
+the exact one. The planners check motions with `cells=False` (AABB, then exact), as in
+numpy the cell stage costs more per pose than one python-fcl collide on every scene of
+`benchmarks/assembly.py`; direct verdict calls keep the seed's two stages by default
+(`cell_filter`).
 """
 
 from __future__ import annotations
@@ -37,7 +45,7 @@ MAX_OBSTACLE_CELLS_PER_AXIS = 128
 
 @dataclass
 class CheckStats:
-    """Counters of work done: poses checked and pairs reaching each stage."""
+    """Counters of work done: poses through the AABB stage and pairs reaching each later stage."""
 
     poses: int = 0
     aabb_pairs: int = 0
@@ -51,16 +59,18 @@ class _Body:
         self.grid = grid
         self.bounds = np.asarray(mesh.bounds, dtype=float)
         self.fcl_obj = fcl.CollisionObject(_bvh(mesh), fcl.Transform())
-        # One vertex per connected component, for the containment test.
         labels = trimesh.graph.connected_component_labels(mesh.face_adjacency, len(mesh.faces))
         # Up to 32 vertices per connected component, for the containment test: with the
         # surfaces apart, each component lies wholly inside or wholly outside the other body.
         rng = np.random.default_rng(0)
-        sets = []
+        sets, boxes = [], []
         for c in np.unique(labels):
             v = np.unique(mesh.faces[labels == c])
             sets.append(mesh.vertices[rng.choice(v, 32, replace=len(v) < 32)])
+            boxes.append([mesh.vertices[v].min(axis=0), mesh.vertices[v].max(axis=0)])
         self.probes = np.asarray(sets, dtype=float)  # (components, 32, 3)
+        # Each component's box (components, 2, 3) [m]: it can be enclosed only if this is.
+        self.component_boxes = np.asarray(boxes, dtype=float)
         self.triangles = np.ascontiguousarray(mesh.triangles, dtype=float)
 
 
@@ -111,11 +121,14 @@ class InterferenceChecker:
         cell_size: float | None = None,
         *,
         obstacle_cell_size: float | None = None,
+        cell_filter: bool = True,
     ) -> None:
         """Subdivide the part and obstacles into cells of side `cell_size` [m] (default 1/20 of the part).
 
         obstacle_cell_size [m]: obstacles' cell side (default: cell_size, coarsened so an
         obstacle has at most MAX_OBSTACLE_CELLS_PER_AXIS cells along any axis).
+        cell_filter: whether verdict calls run the cell stage between AABB and exact by
+        default (the seed's two stages); it changes speed only, never the verdict.
         """
         check_mesh(moving, "moving", require_closed=True)
         if isinstance(obstacles, trimesh.Trimesh) or not isinstance(obstacles, Sequence):
@@ -136,22 +149,50 @@ class InterferenceChecker:
         lo, hi = self.moving.bounds
         self._box_c, self._box_h = 0.5 * (lo + hi), 0.5 * (hi - lo)
         self.radius = float(np.max(np.linalg.norm(moving.vertices, axis=1)))
+        self.cell_filter = bool(cell_filter)
         self.stats = CheckStats()
+        # Cached once: obstacle bounds for the AABB stage, the part's probes for the
+        # containment pre-test, and the fcl request object.
+        self._ob_bounds = np.asarray([b.bounds for b in self.obstacles], float).reshape(-1, 2, 3)
+        self._probes_flat = self.moving.probes.reshape(-1, 3)
+        # Static halves of the enclosure pre-test, rotation-free: a part component fits in
+        # an obstacle's box only if its probes' diameter is at most the box's diagonal; an
+        # obstacle component fits in the part's world AABB only if no side of its box
+        # exceeds 2 |half extents| (the largest that AABB gets along an axis).
+        P = self.moving.probes
+        diam = np.max(np.linalg.norm(P[:, :, None] - P[:, None], axis=-1), axis=(1, 2))
+        diag = np.linalg.norm(self._ob_bounds[:, 1] - self._ob_bounds[:, 0], axis=1)
+        self._may_hold_part = np.array(
+            [
+                b.grid.closed and bool(np.any(diam <= d))
+                for b, d in zip(self.obstacles, diag, strict=True)
+            ],
+            dtype=bool,
+        )
+        reach = 2.0 * float(np.linalg.norm(self._box_h))
+        self._fitting_boxes = [
+            b.component_boxes[
+                np.all(b.component_boxes[:, 1] - b.component_boxes[:, 0] <= reach, axis=1)
+            ]
+            for b in self.obstacles
+        ]
+        self._may_fit_in_part = np.array([len(f) > 0 for f in self._fitting_boxes], dtype=bool)
+        self._request = fcl.CollisionRequest()
 
     # -- stages, each (P, 4, 4) poses -> (P, n_obstacles) bool --------------------------
     def aabb_stage(self, T: ArrayLike) -> NDArray[np.bool_]:
         """Return (P, n_obstacles): True where the part's world AABB meets an obstacle's AABB."""
         T = _poses(T)
-        c = T[:, :3, :3] @ self._box_c + T[:, :3, 3]
-        h = np.abs(T[:, :3, :3]) @ self._box_h
-        if not self.obstacles:
-            return np.zeros((len(T), 0), dtype=bool)
-        ob = np.stack([b.bounds for b in self.obstacles])  # (n, 2, 3)
-        return np.all(
-            (c[:, None] - h[:, None] <= ob[None, :, 1])
-            & (c[:, None] + h[:, None] >= ob[None, :, 0]),
-            axis=-1,
-        )
+        R = T[:, :3, :3]
+        c = R.dot(self._box_c) + T[:, :3, 3]
+        h = np.abs(R).dot(self._box_h)
+        lo, hi = c - h, c + h
+        ob = self._ob_bounds  # (n, 2, 3)
+        # Axis by axis on (P, n): numpy is slow on a trailing axis of 3.
+        m = (lo[:, :1] <= ob[:, 1, 0]) & (hi[:, :1] >= ob[:, 0, 0])
+        for a in (1, 2):
+            m &= (lo[:, a : a + 1] <= ob[:, 1, a]) & (hi[:, a : a + 1] >= ob[:, 0, a])
+        return m
 
     def cell_stage_pair(self, T: ArrayLike, k: int) -> NDArray[np.bool_]:
         """Return (P,): True where the part's cells meet obstacle `k`'s cells (conservative)."""
@@ -197,47 +238,155 @@ class InterferenceChecker:
 
     def exact_pair(self, T: NDArray[np.float64], k: int) -> bool:
         """Return True if the part at pose T (4, 4) truly interferes with obstacle `k` (fcl + containment)."""
-        ob = self.obstacles[k]
+        T = np.asarray(T, dtype=float)
         self.moving.fcl_obj.setTransform(_fcl_tf(T))
-        if fcl.collide(
-            self.moving.fcl_obj, ob.fcl_obj, fcl.CollisionRequest(), fcl.CollisionResult()
-        ):
+        ob = self.obstacles[k]
+        if fcl.collide(self.moving.fcl_obj, ob.fcl_obj, self._request, fcl.CollisionResult()):
             return True
-        # Surfaces apart: interference only if one body encloses the other.
-        if ob.grid.closed:
-            p = self.moving.probes @ T[:3, :3].T + T[:3, 3]
-            if _inside(p, ob):
-                return True
-        q = (ob.probes - T[:3, 3]) @ T[:3, :3]
-        return _inside(q, self.moving)
+        pairs = np.zeros((1, len(self.obstacles)), dtype=bool)
+        pairs[0, k] = True
+        return self._first_enclosed(T[None], pairs) == 0
 
-    # -- verdicts ------------------------------------------------------------------------
-    def first_interference(self, T: ArrayLike, *, chunk: int = 16) -> int:
-        """Return the index of the first of poses (P, 4, 4) at which the part interferes, or -1.
+    def _enclosable(
+        self, T: NDArray[np.float64], pairs: NDArray[np.bool_]
+    ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+        """Return (P, n) masks within `pairs` (P, n): a part component may lie inside obstacle k /
+        one of k's components inside the part.
 
-        Poses are checked in order, `chunk` at a time, and checking stops at the first hit.
+        Necessary conditions for enclosure: the box of a part component's probe vertices
+        lies in the obstacle's box; an obstacle component's box lies in the part's world
+        AABB (which holds the whole part at any rotation). Obstacles that can never pass
+        (see __init__) are skipped.
         """
-        T = _poses(T)
-        for s in range(0, len(T), chunk):
-            hit = self._first_in(T[s : s + chunk])
-            if hit >= 0:
-                return s + hit
+        part_in = np.zeros_like(pairs)
+        ob_in = np.zeros_like(pairs)
+        used = pairs.any(axis=0)
+        R, t = T[:, :3, :3], T[:, :3, 3]
+        ks = np.nonzero(used & self._may_hold_part)[0]
+        if len(ks):
+            C = len(self.moving.probes)
+            pw = (self._probes_flat @ np.swapaxes(R, 1, 2) + t[:, None]).reshape(len(T), C, -1, 3)
+            plo, phi = pw.min(axis=2), pw.max(axis=2)  # (P, C, 3)
+            ob = self._ob_bounds[ks]
+            m = np.ones((len(T), C, len(ks)), dtype=bool)
+            for a in range(3):
+                m &= (plo[:, :, a, None] >= ob[:, 0, a]) & (phi[:, :, a, None] <= ob[:, 1, a])
+            part_in[:, ks] = m.any(axis=1) & pairs[:, ks]
+        ks = np.nonzero(used & self._may_fit_in_part)[0]
+        if len(ks):
+            c = R.dot(self._box_c) + t
+            h = np.abs(R).dot(self._box_h)
+            lo, hi = c - h, c + h
+            for k in ks.tolist():
+                cb = self._fitting_boxes[k]  # (Ck, 2, 3)
+                q = np.ones((len(T), len(cb)), dtype=bool)
+                for a in range(3):
+                    q &= (cb[:, 0, a] >= lo[:, a : a + 1]) & (cb[:, 1, a] <= hi[:, a : a + 1])
+                ob_in[:, k] = q.any(axis=1) & pairs[:, k]
+        return part_in, ob_in
+
+    def _first_enclosed(self, T: NDArray[np.float64], pairs: NDArray[np.bool_]) -> int:
+        """Return the first of poses T (m, 4, 4) where the part and an obstacle of `pairs` (m, n)
+        enclose one another (their surfaces known apart), or -1."""
+        part_in, ob_in = self._enclosable(T, pairs)
+        for i in np.nonzero((part_in | ob_in).any(axis=1))[0].tolist():
+            R, t = T[i, :3, :3], T[i, :3, 3]
+            for k in np.nonzero(part_in[i])[0].tolist():
+                if _inside(self.moving.probes @ R.T + t, self.obstacles[k]):
+                    return i
+            for k in np.nonzero(ob_in[i])[0].tolist():
+                if _inside((self.obstacles[k].probes - t) @ R, self.moving):
+                    return i
         return -1
 
-    def _first_in(self, T: NDArray[np.float64]) -> int:
-        self.stats.poses += len(T)
+    # -- verdicts ------------------------------------------------------------------------
+    def first_interference(
+        self, T: ArrayLike, *, chunk: int = 16, cells: bool | None = None
+    ) -> int:
+        """Return the index of the first of poses (P, 4, 4) at which the part interferes, or -1.
+
+        The AABB stage runs on all poses at once; the poses it does not clear go on in
+        order, `chunk` at a time, through the cell stage (if `cells`, default
+        `cell_filter`) and the exact check, and checking stops at the first hit.
+        """
+        T = _poses(T)
+        use_cells = self.cell_filter if cells is None else bool(cells)
         cand = self.aabb_stage(T)
-        self.stats.aabb_pairs += int(cand.sum())
-        for k in range(len(self.obstacles)):
-            rows = np.nonzero(cand[:, k])[0]
-            if len(rows):
-                self.stats.cell_pairs += len(rows)
-                cand[rows, k] = self.cell_stage_pair(T[rows], k)
-        for p in np.nonzero(cand.any(axis=1))[0]:
-            for kk in np.nonzero(cand[p])[0]:
-                self.stats.exact_pairs += 1
-                if self.exact_pair(T[p], int(kk)):
-                    return int(p)
+        self.stats.poses += len(T)
+        return self._first_hot(T, cand, np.nonzero(cand.any(axis=1))[0], use_cells, chunk)
+
+    def first_free_group(
+        self, T: ArrayLike, sizes: ArrayLike, *, chunk: int = 16, cells: bool | None = None
+    ) -> int:
+        """Return the index of the first group of poses at none of which the part interferes, or -1.
+
+        T (P, 4, 4) holds the groups one after another (say the samples of candidate
+        motions, best first) and sizes (G,) their lengths. The AABB stage runs on all
+        poses at once; then groups are decided in order, each stopping at its first hit,
+        so a group the AABB stage clears costs nothing more.
+        """
+        T = _poses(T)
+        n = np.asarray(sizes, dtype=np.int64).reshape(-1)
+        if np.any(n < 0) or int(n.sum()) != len(T):
+            raise InputError(f"sizes must be >= 0 and sum to the {len(T)} poses, got {n.sum()}")
+        use_cells = self.cell_filter if cells is None else bool(cells)
+        cand = self.aabb_stage(T)
+        self.stats.poses += len(T)
+        hot: NDArray[np.bool_] = np.any(cand, axis=1)
+        ends = np.cumsum(n)
+        csum = np.concatenate([[0], np.cumsum(hot)])
+        n_hot = csum[ends] - csum[ends - n]
+        for g in range(len(n)):
+            if n_hot[g] == 0:
+                return g
+            a, b = int(ends[g] - n[g]), int(ends[g])
+            rows = a + np.nonzero(hot[a:b])[0]
+            if self._first_hot(T, cand, rows, use_cells, chunk) < 0:
+                return g
+        return -1
+
+    def _first_hot(
+        self,
+        T: NDArray[np.float64],
+        cand: NDArray[np.bool_],
+        hot: NDArray[np.intp],
+        use_cells: bool,
+        chunk: int,
+    ) -> int:
+        """Return the first of the poses T[hot] (in order) that interferes, or -1; cand: AABB pairs (P, n)."""
+        for s in range(0, len(hot), chunk):
+            rows = hot[s : s + chunk]
+            c = cand[rows]
+            self.stats.aabb_pairs += int(c.sum())
+            if use_cells:
+                for k in np.nonzero(c.any(axis=0))[0].tolist():
+                    r = np.nonzero(c[:, k])[0]
+                    self.stats.cell_pairs += len(r)
+                    c[r, k] = self.cell_stage_pair(T[rows[r]], k)
+            # Surfaces first, in order, up to the first contact; then enclosure, which
+            # needs surfaces apart, on the poses before it in one vectorised pass.
+            hit, apart = -1, []
+            for i in np.nonzero(c.any(axis=1))[0].tolist():
+                self.moving.fcl_obj.setTransform(_fcl_tf(T[rows[i]]))
+                for k in np.nonzero(c[i])[0].tolist():
+                    self.stats.exact_pairs += 1
+                    if fcl.collide(
+                        self.moving.fcl_obj,
+                        self.obstacles[k].fcl_obj,
+                        self._request,
+                        fcl.CollisionResult(),
+                    ):
+                        hit = i
+                        break
+                if hit >= 0:
+                    break
+                apart.append(i)
+            if apart:
+                e = self._first_enclosed(T[rows[apart]], c[apart])
+                if e >= 0:
+                    return int(rows[apart[e]])
+            if hit >= 0:
+                return int(rows[hit])
         return -1
 
     def interferes(self, T: ArrayLike) -> bool:

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.geometry.transforms import make_transform, matrix_to_wxyz, wxyz_to_matrix
+from workbench.geometry.transforms import make_transform, wxyz_to_matrix
 
 
 def check_pose(T: ArrayLike, name: str) -> NDArray[np.float64]:
@@ -56,12 +58,36 @@ def pose_distance(T0: ArrayLike, T1: ArrayLike, radius: float) -> NDArray[np.flo
     return dp + radius * rotation_angle(T0, T1)
 
 
+def unit_quaternion(R: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Return the unit quaternion (w, x, y, z), w >= 0, of one rotation (3, 3).
+
+    `matrix_to_wxyz`'s branch choice (Shepperd) in plain floats: the planners convert two
+    matrices per checked motion, where numpy's per-call cost dominated.
+    """
+    (a, b, c), (d, e, f), (g, h, i) = R.tolist()
+    tr = a + e + i
+    if tr >= a and tr >= e and tr >= i:
+        s = 2.0 * math.sqrt(1.0 + tr)
+        q = (0.25 * s, (h - f) / s, (c - g) / s, (d - b) / s)
+    elif a >= e and a >= i:
+        s = 2.0 * math.sqrt(1.0 + a - e - i)
+        q = ((h - f) / s, 0.25 * s, (b + d) / s, (c + g) / s)
+    elif e >= i:
+        s = 2.0 * math.sqrt(1.0 + e - a - i)
+        q = ((c - g) / s, (b + d) / s, 0.25 * s, (f + h) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 + i - a - e)
+        q = ((d - b) / s, (c + g) / s, (f + h) / s, 0.25 * s)
+    n = math.sqrt(sum(x * x for x in q))
+    return np.array(q) / (-n if q[0] < 0.0 else n)
+
+
 def interpolate(T0: ArrayLike, T1: ArrayLike, u: ArrayLike) -> NDArray[np.float64]:
     """Return poses (n, 4, 4) at fractions u (n,) of the straight motion T0 -> T1 (lerp + slerp)."""
     T0 = np.asarray(T0, float)
     T1 = np.asarray(T1, float)
     u = np.atleast_1d(np.asarray(u, float))
-    q = slerp(matrix_to_wxyz(T0[:3, :3]), matrix_to_wxyz(T1[:3, :3]), u)
+    q = slerp(unit_quaternion(T0[:3, :3]), unit_quaternion(T1[:3, :3]), u)
     p = T0[:3, 3] + u[:, None] * (T1[:3, 3] - T0[:3, 3])
     return make_transform(wxyz_to_matrix(q), p)
 

@@ -14,6 +14,11 @@ of the previous point onto the plane are candidates too (so a part can line up w
 hole), and a part seated in a hole at the start or goal is first withdrawn along a
 free axis (see `common.retreat`), as the seed's straight splitting cannot leave a hole
 sideways.
+
+Speed without changing the result: a plane's candidates are decided in vectorised
+batches (their motions share one rotation, so they are sampled together and the AABB
+stage clears them in one call), taking the first free one in cost order as the seed's
+one-by-one loop would; motions are checked AABB -> exact (`cells=False`).
 """
 
 from __future__ import annotations
@@ -22,9 +27,16 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.assembly.interference import InterferenceChecker
-from workbench.assembly.motion import interpolate, motion_samples
+from workbench.assembly.motion import (
+    interpolate,
+    pose_distance,
+    rotation_angle,
+    slerp,
+    unit_quaternion,
+)
 from workbench.assembly.planners.common import retreat, scene_bounds
 from workbench.errors import InputError, PlanningError
+from workbench.geometry.transforms import make_transform, wxyz_to_matrix
 
 _AXES = "xyz"
 
@@ -45,6 +57,7 @@ def plan_ant(
     step: number of segments (>= 1); dis: grid spacing on each plane [m] (default: the
     larger of 2 cell sizes and half_width / 25); half_width: grid half size [m] (default
     D/2 + the part's radius); resolution: motion check spacing [m] (default cell size).
+    start and goal must be free of interference (`plan_part_path` checks them first).
     """
     if not isinstance(step, int | np.integer) or step < 1:
         raise InputError(f"step must be an integer >= 1, got {step!r}")
@@ -75,17 +88,18 @@ def plan_ant(
     tried = 0
     # Fast path: when the straight line through the nodes is free, every plane's first
     # candidate (the node itself: it lies on the segment previous -> goal) is taken.
-    straight = np.concatenate([nodes, e[None]])
-    S = np.concatenate(
-        [
-            motion_samples(a_, b_, checker.radius, res)
-            for a_, b_ in zip(np.concatenate([s[None], nodes]), straight, strict=True)
-        ]
-    )
-    if checker.first_interference(S) < 0:
+    # The segments' samples are the whole line's at the same fractions (lerp and slerp
+    # restricted to a sub-interval are the same motion), so one call makes them all.
+    n_seg = max(1, int(np.ceil(float(pose_distance(s, e, checker.radius)) / (step * res))))
+    u = (np.arange(step)[:, None] + np.arange(1, n_seg + 1)[None] / n_seg).ravel() / step
+    if checker.first_interference(interpolate(s, e, u), cells=False) < 0:
+        path.extend(nodes)
         nodes = nodes[:0]
-        path.extend(straight[:-1])
-        tried += len(straight)
+        tried += step
+    elif step == 1:
+        raise PlanningError(
+            "single-ant planner: the straight move with step=1 interferes; use step > 1"
+        )
     for i, node in enumerate(nodes):
         prev = path[-1]
         c = np.repeat(node[:3, 3][None], len(gu) + 2, axis=0)
@@ -95,43 +109,74 @@ def plan_ant(
             c[len(gu) + j, [u_ax, v_ax]] = q[[u_ax, v_ax]]
         c = c[np.all((c >= B[0]) & (c <= B[1]), axis=1)]
         cost = np.linalg.norm(c - prev[:3, 3], axis=1) + np.linalg.norm(c - e[:3, 3], axis=1)
-        order = np.argsort(cost, kind="stable")
-        last_plane = i == len(nodes) - 1
-        chosen = None
-        for k in order:
-            tried += 1
-            T = node.copy()
-            T[:3, 3] = c[k]
-            if checker.first_interference(motion_samples(prev, T, checker.radius, res)) >= 0:
-                continue
-            if (
-                last_plane
-                and checker.first_interference(motion_samples(T, e, checker.radius, res)) >= 0
-            ):
-                continue
-            chosen = T
-            break
-        if chosen is None:
+        c = c[np.argsort(cost, kind="stable")]
+        k, n_tried = _first_free(
+            checker, prev, node[:3, :3], c, e if i == len(nodes) - 1 else None, res
+        )
+        tried += n_tried
+        if k < 0:
             raise PlanningError(
                 f"single-ant planner: no interference-free grid point on cutting plane "
                 f"{i + 1} of {step - 1} ({_AXES[ax]} = {node[ax, 3]:.4f} m, {len(c)} points, "
                 f"dis = {spacing:g} m); try a larger step, a smaller dis or planner='rrt_connect'"
             )
-        path.append(chosen)
-    if step == 1:
-        tried += 1
-        if checker.first_interference(motion_samples(s, e, checker.radius, res)) >= 0:
-            raise PlanningError(
-                "single-ant planner: the straight move with step=1 interferes; use step > 1"
-            )
-    for T in tail:
-        if (
-            T is tail[0]
-            or checker.first_interference(motion_samples(path[-1], T, checker.radius, res)) < 0
-        ):
-            path.append(T)
-        else:
-            raise PlanningError(
-                "single-ant planner: the final insertion move into the goal interferes"
-            )
+        T = node.copy()
+        T[:3, 3] = c[k]
+        path.append(T)
+    # The moves start -> a and b -> goal are the retreats, which `retreat` checked sample
+    # by sample (b -> goal as goal -> b: the same samples, with the goal itself checked
+    # by plan_part_path instead of b).
+    path.extend(tail)
     return np.asarray(path), tried
+
+
+def _fan(
+    R0: NDArray, P0: NDArray, R1: NDArray, P1: NDArray, radius: float, res: float
+) -> tuple[NDArray, NDArray]:
+    """Return (samples (M, 4, 4), per-motion counts (K,)) of straight motions (R0, P0[k]) -> (R1, P1[k]).
+
+    The motions share their rotations, so one slerp serves all; each is sampled like
+    `motion_samples` (start excluded, end included, points at most `res` [m] apart).
+    """
+    P0, P1 = np.broadcast_arrays(np.atleast_2d(P0), np.atleast_2d(P1))
+    d = np.linalg.norm(P1 - P0, axis=1) + radius * float(rotation_angle(R0, R1))
+    n = np.maximum(1, np.ceil(d / res).astype(np.int64))
+    k = np.repeat(np.arange(len(n)), n)
+    u = (np.arange(len(k)) - np.repeat(np.cumsum(n) - n, n) + 1) / n[k]
+    R = wxyz_to_matrix(slerp(unit_quaternion(R0), unit_quaternion(R1), u))
+    return make_transform(R, P0[k] + u[:, None] * (P1 - P0)[k]), n
+
+
+def _first_free(
+    checker: InterferenceChecker,
+    prev: NDArray,
+    R: NDArray,
+    c: NDArray,
+    goal: NDArray | None,
+    res: float,
+) -> tuple[int, int]:
+    """Return (index of the first position c[k] whose pose (R, c[k]) prev reaches freely, or -1; candidates tried).
+
+    With `goal`, the move on to it must be free too. Candidates go in batches of growing
+    size (the first is often free), each batch's motions sampled and cleared by the AABB
+    stage in one vectorised call.
+    """
+    r = checker.radius
+    b0, size = 0, 4
+    while b0 < len(c):
+        cb = c[b0 : b0 + size]
+        S, n = _fan(prev[:3, :3], prev[:3, 3], R, cb, r, res)
+        if goal is not None:
+            S2, n2 = _fan(R, cb, goal[:3, :3], goal[:3, 3], r, res)
+            # Each candidate's group: its move in, then its move on to the goal.
+            gid = np.concatenate(
+                [np.repeat(np.arange(len(cb)), n), np.repeat(np.arange(len(cb)), n2)]
+            )
+            S = np.concatenate([S, S2])[np.argsort(gid, kind="stable")]
+            n = n + n2
+        g = checker.first_free_group(S, n, cells=False)
+        if g >= 0:
+            return b0 + g, b0 + g + 1
+        b0 += len(cb)
+        size *= 4
+    return -1, len(c)

@@ -1,4 +1,8 @@
-"""What both part planners share: motion validation, scene bounds and the retreat from a tight pose."""
+"""What both part planners share: motion validation, scene bounds and the retreat from a tight pose.
+
+Motions are checked with the AABB stage and then the exact check (`cells=False`): the
+verdict is the same as with the cell stage in between, and faster (see interference.py).
+"""
 
 from __future__ import annotations
 
@@ -11,7 +15,8 @@ from workbench.assembly.motion import motion_samples
 
 def motion_free(checker: InterferenceChecker, T0: NDArray, T1: NDArray, resolution: float) -> bool:
     """Return True if the part moved straight from T0 to T1 (T0 excluded) never interferes."""
-    return checker.first_interference(motion_samples(T0, T1, checker.radius, resolution)) < 0
+    S = motion_samples(T0, T1, checker.radius, resolution)
+    return checker.first_interference(S, cells=False) < 0
 
 
 def last_free(
@@ -19,7 +24,7 @@ def last_free(
 ) -> NDArray | None:
     """Return the last free pose (4, 4) along T0 -> T1 before the first interference, or None if none."""
     S = motion_samples(T0, T1, checker.radius, resolution)
-    hit = checker.first_interference(S)
+    hit = checker.first_interference(S, cells=False)
     if hit < 0:
         return S[-1]
     return S[hit - 1] if hit > 0 else None
