@@ -221,6 +221,49 @@ def sat_overlap_t(
     return ~sep
 
 
+def sat_overlap_rt(
+    Rt: NDArray[np.float64],
+    a: NDArray[np.float64],
+    b: NDArray[np.float64],
+    eps: float = SAT_EPS,
+) -> NDArray[np.bool_]:
+    """Return overlap verdicts (P,) of box pairs given in box A's frame; no validation (hot path).
+
+    Axis indices are extended cyclically (x, y, z, x, y), so that the rolled indices i + 1,
+    i + 2 (mod 3) of the edge axes are slices rather than gathers: `Rt` (5, 6, P) holds
+    Rt[r, c] = a_(r%3) . b_(c%3) for c < 5 and Rt[r, 5] = a_(r%3) . (cb - ca) [m]; `a` and
+    `b` (5, P) (or (5, 1)) are the half extents [m] in the same order. The same 15 axes, eps
+    and arithmetic as `sat_overlap_t`, in about 30 numpy calls whatever P is.
+    """
+    n = Rt.shape[-1]
+    t = Rt[:, 5]
+    aR = np.abs(Rt[:, :5])
+    aR += eps  # |R| + eps as in Gottschalk's test: parallel edges never separate falsely
+    R3, aR3, t3, a3, b3 = Rt[:3, :3], aR[:3, :3], t[:3], a[:3], b[:3]
+    sep = np.empty((15, n), dtype=bool)
+    # Axes of A: |t_i| > a_i + sum_j |R_ij| b_j.
+    r = (aR3 * b3[None]).sum(axis=1)
+    r += a3
+    np.greater(np.abs(t3), r, out=sep[0:3])
+    # Axes of B: |sum_i t_i R_ij| > sum_i a_i |R_ij| + b_j.
+    lhs = (t3[:, None] * R3).sum(axis=0)
+    r = (a3[:, None] * aR3).sum(axis=0)
+    r += b3
+    np.greater(np.abs(lhs), r, out=sep[3:6])
+    # Edge axes a_i x b_j: |t_(i+2) R_(i+1)j - t_(i+1) R_(i+2)j| against
+    # a_(i+1) |R_(i+2)j| + a_(i+2) |R_(i+1)j| + b_(j+1) |R_i(j+2)| + b_(j+2) |R_i(j+1)|.
+    lhs = t[2:5, None] * Rt[1:4, :3]
+    lhs -= t[1:4, None] * Rt[2:5, :3]
+    np.abs(lhs, out=lhs)
+    ra = a[1:4, None] * aR[2:5, :3]
+    ra += a[2:5, None] * aR[1:4, :3]
+    rb = b[None, 1:4] * aR[:3, 2:5]
+    rb += b[None, 2:5] * aR[:3, 1:4]
+    ra += rb
+    np.greater(lhs, ra, out=sep[6:15].reshape(3, 3, n))
+    return np.logical_not(np.logical_or.reduce(sep, axis=0))
+
+
 # Below this many pairs a plain Python loop beats numpy's per-call cost (a tree's deeper
 # levels test a handful of pairs); `_sat_few` and the vectorised test agree exactly.
 FEW_PAIRS = 8

@@ -11,13 +11,14 @@ so the traversal's verdict equals testing every flange box against every obstacl
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.geometry.obb import OBB, sat_overlap_t
+from workbench.geometry.obb import OBB, sat_overlap_rt
 from workbench.geometry.transforms import invert_transform
 
 if TYPE_CHECKING:
@@ -37,18 +38,65 @@ class CollisionReport:
     nodes_hit: tuple[int, ...]
 
 
-@dataclass(frozen=True, eq=False)
 class FramesReport:
-    """Checks of F frames: `collides` (F,), `n_obb_tests` (F,), `hits` (K, 3) [frame, flange, obstacle]."""
+    """Checks of F frames: `collides` (F,), `n_obb_tests` (F,), `hits` (K, 3) [frame, flange, obstacle].
 
-    collides: NDArray[np.bool_]
-    n_obb_tests: NDArray[np.int64]
-    hits: NDArray[np.int64]
-    tested: NDArray[np.int64]  # (J, 2) [frame, node], one row per OBB test
-    hit_nodes: NDArray[np.int64]  # (J', 2) [frame, node]
+    `tested` (J, 2) [frame, node] has one row per OBB test and `hit_nodes` (J', 2) [frame, node]
+    one row per node-obstacle pair that hit. A report from the traversal keeps `hit_mask`
+    (F, N, M): which node-obstacle pairs hit; `hits`, `tested` and `hit_nodes` are derived
+    from it on first use (the batched check does not pay for rows nobody reads). Read-only.
+    """
+
+    __slots__ = ("collides", "n_obb_tests", "hit_mask", "_hits", "_tested", "_hit_nodes", "_dfs")
+
+    def __init__(
+        self,
+        collides: NDArray[np.bool_],
+        n_obb_tests: NDArray[np.int64],
+        hits: NDArray[np.int64] | None = None,
+        tested: NDArray[np.int64] | None = None,
+        hit_nodes: NDArray[np.int64] | None = None,
+        *,
+        hit_mask: NDArray[np.bool_] | None = None,
+        dfs: _Traversal | None = None,
+    ) -> None:
+        if hit_mask is None and (hits is None or tested is None or hit_nodes is None):
+            raise InputError("FramesReport: give hits, tested and hit_nodes, or hit_mask and dfs")
+        self.collides = collides
+        self.n_obb_tests = n_obb_tests
+        self.hit_mask = hit_mask
+        self._hits, self._tested, self._hit_nodes, self._dfs = hits, tested, hit_nodes, dfs
+
+    @property
+    def hits(self) -> NDArray[np.int64]:
+        """Return the leaf hits (K, 3) [frame, flange, obstacle], sorted."""
+        if self._hits is None:
+            assert self.hit_mask is not None and self._dfs is not None
+            self._hits = np.argwhere(self.hit_mask[:, self._dfs.nodes.leaves]).astype(np.int64)
+        return self._hits
+
+    @property
+    def tested(self) -> NDArray[np.int64]:
+        """Return one row [frame, node] per OBB test (J, 2), sorted."""
+        if self._tested is None:
+            assert self.hit_mask is not None and self._dfs is not None
+            cnt = self._dfs.tested_counts(self.hit_mask)
+            flat = np.repeat(np.arange(cnt.size), cnt.ravel())
+            self._tested = np.stack(np.divmod(flat, cnt.shape[1]), axis=1).astype(np.int64)
+        return self._tested
+
+    @property
+    def hit_nodes(self) -> NDArray[np.int64]:
+        """Return one row [frame, node] per node-obstacle pair that hit (J', 2), sorted."""
+        if self._hit_nodes is None:
+            assert self.hit_mask is not None
+            self._hit_nodes = np.argwhere(self.hit_mask)[:, :2].astype(np.int64)
+        return self._hit_nodes
 
     def frame(self, i: int) -> CollisionReport:
         """Return frame `i`'s result as a `CollisionReport`."""
+        if self.hit_mask is not None and self._dfs is not None:
+            return self._dfs.frame_report(self.hit_mask[i], int(self.n_obb_tests[i]))
         h = self.hits[self.hits[:, 0] == i]
         return CollisionReport(
             collides=bool(self.collides[i]),
@@ -79,10 +127,15 @@ class OBBTree:
     @property
     def leaves(self) -> NDArray[np.int64]:
         """Return the node index of each flange's leaf (F,)."""
-        out = np.empty(int(self.leaf_flange.max()) + 1, dtype=np.int64)
-        m = self.leaf_flange >= 0
-        out[self.leaf_flange[m]] = np.nonzero(m)[0]
-        return out
+        return self._checks[0].nodes.leaves.copy()
+
+    @cached_property
+    def _checks(self) -> tuple[_Traversal, _Traversal]:
+        # Node arrays laid out once per tree, i.e. once per bend state and grasp flange (the
+        # folded state caches its trees): the DFS from the root, and the flat leaf check.
+        nodes = _Nodes.of(self)
+        dfs = _Traversal(nodes, np.array([0]), nodes.levels)
+        return dfs, _Traversal(nodes, nodes.leaves, [])
 
     def collide(self, obstacles: OBB, T_world_grasp: ArrayLike) -> CollisionReport:
         """Return the DFS (coarse root first, descend into hit nodes) check of one pose (4, 4)."""
@@ -95,7 +148,7 @@ class OBBTree:
 
     def collide_frames(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
         """Return the tree check of F poses (F, 4, 4), batched over frames and obstacles."""
-        return _traverse(self, obstacles, T_world_grasp, np.array([0]), descend=True)
+        return self._checks[0].run(obstacles, T_world_grasp)
 
     def flat_collide(self, obstacles: OBB, T_world_grasp: ArrayLike) -> CollisionReport:
         """Return the flat check (every flange box against every obstacle) of one pose (4, 4)."""
@@ -106,92 +159,185 @@ class OBBTree:
 
     def flat_collide_frames(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
         """Return the flat per-flange check of F poses (F, 4, 4), batched."""
-        return _traverse(self, obstacles, T_world_grasp, self.leaves, descend=False)
+        return self._checks[1].run(obstacles, T_world_grasp)
 
 
-def _traverse(
-    tree: OBBTree, obstacles: OBB, T_world_grasp: ArrayLike, start: NDArray[np.int64], descend: bool
-) -> FramesReport:
-    if not isinstance(obstacles, OBB):
-        raise InputError(f"obstacles: expected an OBB (batch (M,)), got {type(obstacles).__name__}")
-    T = np.asarray(T_world_grasp, dtype=float)
-    if T.ndim != 3 or T.shape[1:] != (4, 4) or not np.all(np.isfinite(T)):
-        raise InputError(f"T_world_grasp: expected finite shape (F, 4, 4), got {T.shape}")
-    F = len(T)
-    o_c, o_r, o_e = (
-        obstacles.center.reshape(-1, 3),
-        obstacles.rotation.reshape(-1, 3, 3),
-        obstacles.half_extents.reshape(-1, 3),
-    )
-    M = len(o_c)
-    # Obstacles into each frame's grasp frame once (the node boxes never move), all arrays
-    # components-first and contiguous so that gathers and SAT steps run over contiguous rows.
-    first = np.ascontiguousarray
-    W = first(np.moveaxis(T[:, :3, :3], (1, 2), (0, 1)))  # W[k, i, f] = R_world_grasp[f][k, i]
-    diff = o_c.T[:, None, :] - T[:, :3, 3].T[:, :, None]  # (3, F, M)
-    Oc = first(np.moveaxis(o_r, (1, 2), (0, 1)))  # (3, 3, M)
-    oc = sum(W[k][:, :, None] * diff[k][None] for k in range(3)).reshape(3, F * M)
-    orot = sum(W[k][:, None, :, None] * Oc[k][None, :, None, :] for k in range(3)).reshape(
-        3, 3, F * M
-    )
-    oe = first(o_e.T)
-    nc = first(tree.boxes.center.T)
-    nr = first(np.moveaxis(tree.boxes.rotation, (1, 2), (0, 1)))
-    ne = first(tree.boxes.half_extents.T)
-    f_idx, n_idx, o_idx = (
-        a.ravel() for a in np.meshgrid(np.arange(F), start, np.arange(M), indexing="ij")
-    )
-    tested_f, tested_n, hit_f, hit_n, hits = [], [], [], [], []
-    # Bounding-sphere radii: boxes whose spheres are apart cannot overlap, so only the
-    # pairs whose spheres meet pay for the 15-axis separating-axis test.
-    n_rad = np.sqrt((ne * ne).sum(axis=0))
-    o_rad = np.sqrt((oe * oe).sum(axis=0))
-    while len(f_idx):
-        fo = f_idx * M + o_idx
-        d = oc[:, fo] - nc[:, n_idx]
-        reach = n_rad[n_idx] + o_rad[o_idx]
-        near = np.flatnonzero((d * d).sum(axis=0) <= reach * reach)
-        ok = np.zeros(len(f_idx), dtype=bool)
-        if len(near):
-            fn, nn = fo[near], n_idx[near]
-            ok[near] = sat_overlap_t(
-                d[:, near], nr[:, :, nn], ne[:, nn], orot[:, :, fn], oe[:, o_idx[near]]
-            )
-        tested_f.append(f_idx)
-        tested_n.append(n_idx)
-        f_idx, n_idx, o_idx = f_idx[ok], n_idx[ok], o_idx[ok]
-        hit_f.append(f_idx)
-        hit_n.append(n_idx)
-        flange = tree.leaf_flange[n_idx]
-        leaf = flange >= 0
-        hits.append(np.stack([f_idx[leaf], flange[leaf], o_idx[leaf]], axis=1))
-        if not descend:
-            break
-        inner = ~leaf
-        f_idx, n_idx, o_idx = f_idx[inner], n_idx[inner], o_idx[inner]
-        cnt = tree.child_count[n_idx]
-        offs = np.repeat(tree.child_start[n_idx] - (np.cumsum(cnt) - cnt), cnt)
-        n_idx = tree.child_index[offs + np.arange(int(cnt.sum()))]
-        f_idx, o_idx = np.repeat(f_idx, cnt), np.repeat(o_idx, cnt)
-    h = np.concatenate(hits) if hits else np.zeros((0, 3), np.int64)
-    collides = np.zeros(F, dtype=bool)
-    collides[h[:, 0]] = True
-    tf = np.concatenate(tested_f) if tested_f else np.zeros(0, np.int64)
+# Pairs whose bounding spheres are apart skip the 15-axis test. The filter is worth its own
+# numpy calls only on larger batches; a few pairs go straight to the exact test. Radii are
+# inflated by a relative 1e-9 so rounding never drops a pair the exact test would call touching.
+SPHERE_FILTER_MIN = 24
+_SPHERE_SLACK = 1.0 + 1e-9
+# Axis order x, y, z, x, y: with axes (and half extents) extended so, the rolled indices
+# i + 1, i + 2 (mod 3) of the edge axes are slices (see `sat_overlap_rt`).
+_CYC = np.array([0, 1, 2, 0, 1])
 
-    def pairs(a: list, b: list) -> NDArray[np.int64]:
-        return (
-            np.stack([np.concatenate(a), np.concatenate(b)], axis=1)
-            if a
-            else np.zeros((0, 2), np.int64)
+
+@dataclass(frozen=True, eq=False)
+class _Nodes:
+    """A tree's node arrays in the shapes the batched traversal reads."""
+
+    count: int
+    leaves: NDArray[np.int64]  # (flanges,) node of each flange's leaf
+    parent: NDArray[np.int64]  # (N,) -1 for the root
+    child_count: NDArray[np.int64]  # (N,)
+    levels: list[tuple[NDArray[np.int64], NDArray[np.int64]]]  # depth >= 1: (nodes, parents)
+    axes_center: NDArray[np.float64]  # (3, 6N): per node axes x y z x y, then the centre [m]
+    half: NDArray[np.float64]  # (5, N) half extents [m], cyclic like the axes
+    radius: NDArray[np.float64]  # (N,) bounding-sphere radii [m], inflated as above
+
+    @classmethod
+    def of(cls, tree: OBBTree) -> _Nodes:
+        n = len(tree.level)
+        parent = np.full(n, -1, dtype=np.int64)
+        for p in range(n):
+            lo = tree.child_start[p]
+            parent[tree.child_index[lo : lo + tree.child_count[p]]] = p
+        leaf = tree.leaf_flange >= 0
+        leaves = np.empty(int(tree.leaf_flange.max()) + 1, dtype=np.int64)
+        leaves[tree.leaf_flange[leaf]] = np.nonzero(leaf)[0]
+        rot, center = tree.boxes.rotation, tree.boxes.center
+        ac = np.concatenate([rot[:, :, _CYC], center[:, :, None]], axis=2)  # (N, 3, 6)
+        half = tree.boxes.half_extents
+        return cls(
+            count=n,
+            leaves=leaves,
+            parent=parent,
+            child_count=tree.child_count,
+            levels=[
+                (np.flatnonzero(tree.level == k), parent[tree.level == k])
+                for k in range(1, int(tree.level.max()) + 1)
+            ],
+            axes_center=np.ascontiguousarray(ac.transpose(1, 0, 2).reshape(3, 6 * n)),
+            half=np.ascontiguousarray(half[:, _CYC].T),
+            radius=np.sqrt((half * half).sum(axis=1)) * _SPHERE_SLACK,
         )
 
-    return FramesReport(
-        collides,
-        np.bincount(tf, minlength=F),
-        h.astype(np.int64),
-        pairs(tested_f, tested_n),
-        pairs(hit_f, hit_n),
-    )
+
+@dataclass(frozen=True, eq=False)
+class _Traversal:
+    """One way of checking a tree: start nodes against every obstacle, then levels to descend."""
+
+    nodes: _Nodes
+    start: NDArray[np.int64]
+    levels: list[tuple[NDArray[np.int64], NDArray[np.int64]]]  # empty: no descent
+
+    def run(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
+        """Return the check of F poses: start nodes x obstacles, then descend level by level."""
+        if not isinstance(obstacles, OBB):
+            raise InputError(
+                f"obstacles: expected an OBB (batch (M,)), got {type(obstacles).__name__}"
+            )
+        T = np.asarray(T_world_grasp, dtype=float)
+        if T.ndim != 3 or T.shape[1:] != (4, 4) or not np.isfinite(T).all():
+            raise InputError(f"T_world_grasp: expected finite shape (F, 4, 4), got {T.shape}")
+        nodes = self.nodes
+        F, N = len(T), nodes.count
+        o_c = obstacles.center.reshape(-1, 3)
+        M = len(o_c)
+        # Obstacles components-first: obs[k, j, m] is the k-th coordinate of axis j (x y z x y,
+        # cyclic) for j < 5, of the centre for j = 5; oe (5, M) half extents, cyclic too.
+        obs = np.empty((3, 6, M))
+        obs[:, :5] = obstacles.rotation.reshape(-1, 3, 3)[:, :, _CYC].transpose(1, 2, 0)
+        obs[:, 5] = o_c.T
+        oe = np.ascontiguousarray(obstacles.half_extents.reshape(-1, 3)[:, _CYC].T)
+        o_rad = np.sqrt((oe[:3] * oe[:3]).sum(axis=0)) * _SPHERE_SLACK
+        # Every node box in the world for every frame in one product: W[k, j, f * N + n] as
+        # obs, for node n in frame f.
+        prod = (T[:, :3, :3].reshape(3 * F, 3) @ nodes.axes_center).reshape(F, 3, N, 6)
+        W4 = np.ascontiguousarray(prod.transpose(1, 3, 0, 2))  # (3, 6, F, N)
+        W4[:, 5] += T[:, :3, 3].T[:, :, None]
+        W = W4.reshape(3, 6, F * N)
+        hit = np.zeros((F, N, M), dtype=bool)
+        flat_hit = hit.reshape(-1)
+        # Start nodes against every obstacle: sphere distances by broadcasting, then the exact
+        # test on the pairs whose spheres meet.
+        S = len(self.start)
+        fn0 = np.arange(F)[:, None] * N + self.start  # (F, S)
+        d = obs[:, 5, None, None, :] - W[:, 5].take(fn0, axis=-1)[..., None]  # (3, F, S, M)
+        reach = nodes.radius[self.start][:, None] + o_rad
+        near = np.flatnonzero((d * d).sum(axis=0) <= reach * reach)
+        fs, m = np.divmod(near, M)
+        fn = fn0.reshape(-1)[fs]
+        n: NDArray[np.int64] | slice = slice(self.start[0], self.start[0] + 1) if S == 1 else fn % N
+        found = _test(
+            W, obs, oe, nodes.half, d.reshape(3, -1).take(near, axis=-1), fn, n, m, flat_hit, M
+        )
+        for lvl_nodes, parents in self.levels:
+            if not found:
+                break
+            # Children of every node-obstacle pair that hit (DFS: only those are tested).
+            idx = np.flatnonzero(hit[:, parents, :])
+            if not len(idx):
+                break
+            f, km = np.divmod(idx, len(lvl_nodes) * M)
+            k, m = np.divmod(km, M)
+            n = lvl_nodes[k]
+            fn = f * N + n
+            d = obs[:, 5].take(m, axis=-1) - W[:, 5].take(fn, axis=-1)
+            if len(idx) >= SPHERE_FILTER_MIN:
+                reach = nodes.radius[n] + o_rad[m]
+                near = np.flatnonzero((d * d).sum(axis=0) <= reach * reach)
+                d, fn, n, m = d.take(near, axis=-1), fn[near], n[near], m[near]
+            found = _test(W, obs, oe, nodes.half, d, fn, n, m, flat_hit, M)
+        collides = np.logical_or.reduce(hit[:, nodes.leaves].reshape(F, -1), axis=1)
+        tests = np.full(F, S * M, dtype=np.int64)
+        if self.levels:
+            tests += hit.sum(axis=2) @ nodes.child_count
+        return FramesReport(collides, tests, hit_mask=hit, dfs=self)
+
+    def tested_counts(self, hit: NDArray[np.bool_]) -> NDArray[np.int64]:
+        """Return the OBB tests per frame and node (F, N) behind `hit` (F, N, M)."""
+        F, N, M = hit.shape
+        cnt = np.zeros((F, N), dtype=np.int64)
+        cnt[:, self.start] = M
+        if self.levels:
+            inner = self.nodes.parent >= 0
+            cnt[:, inner] = hit.sum(axis=2)[:, self.nodes.parent[inner]]
+        return cnt
+
+    def frame_report(self, hit: NDArray[np.bool_], n_tests: int) -> CollisionReport:
+        """Return one frame's `CollisionReport` from its hit mask (N, M)."""
+        pairs = np.argwhere(hit[self.nodes.leaves]).tolist()  # sorted (flange, obstacle)
+        node_hit = np.logical_or.reduce(hit, axis=1)
+        tested = set(self.start.tolist())
+        if self.levels:
+            parent = self.nodes.parent
+            tested.update(np.flatnonzero((parent >= 0) & node_hit[parent]).tolist())
+        return CollisionReport(
+            collides=bool(pairs),
+            hit_flanges=tuple(sorted({p[0] for p in pairs})),
+            hit_obstacles=tuple(sorted({p[1] for p in pairs})),
+            hit_pairs=tuple((p[0], p[1]) for p in pairs),
+            n_obb_tests=n_tests,
+            nodes_tested=tuple(sorted(tested)),
+            nodes_hit=tuple(np.flatnonzero(node_hit).tolist()),
+        )
+
+
+def _test(
+    W: NDArray[np.float64],
+    obs: NDArray[np.float64],
+    oe: NDArray[np.float64],
+    half: NDArray[np.float64],
+    d: NDArray[np.float64],
+    fn: NDArray[np.int64],
+    n: NDArray[np.int64] | slice,
+    m: NDArray[np.int64],
+    flat_hit: NDArray[np.bool_],
+    M: int,
+) -> bool:
+    """Mark the pairs (frame * N + node fn, obstacle m; offsets d (3, P)) that overlap; any?"""
+    if not len(m):
+        return False
+    # Gathers with `take`: it returns components-first contiguous arrays (fancy indexing of
+    # the last axis lays the result out pair-major, which makes every later step strided).
+    Bd = obs.take(m, axis=-1)
+    Bd[:, 5] = d  # [B | cb - ca]
+    Rt = np.einsum("ki...,kj...->ij...", W[:, :5].take(fn, axis=-1), Bd)  # A^T [B | d]
+    a = half[:, n] if isinstance(n, slice) else half.take(n, axis=-1)
+    ok = sat_overlap_rt(Rt, a, oe.take(m, axis=-1))
+    flat_hit[(fn * M + m)[ok]] = True
+    return bool(ok.any())
 
 
 def build_obb_tree(state: FoldedState, grasp_flange: int) -> OBBTree:
