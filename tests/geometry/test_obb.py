@@ -251,3 +251,43 @@ def test_rt_path_equals_plain_test_fcl_and_touching_cases() -> None:
         assert fast.all() if expect else not fast.any()
         if scale != 1.0:
             np.testing.assert_array_equal(fast, fcl_collide(a, moved))
+
+
+def test_rt_few_pair_loop_equals_the_vectorised_rt_test() -> None:
+    # sat_overlap_rt answers batches of at most FEW_PAIRS_RT pairs with a Python loop; it must
+    # agree with the vectorised path exactly: random, parallel-edge and touching pairs.
+    from workbench.geometry import obb as obb_module
+
+    rng = np.random.default_rng(12)
+    n = 6000
+    a, b = random_boxes(rng, n, 0.7), random_boxes(rng, n, 0.7)
+    Rb = b.rotation.copy()
+    Rb[:1500] = a.rotation[:1500]
+    spin = Rotation.from_euler("x", rng.uniform(-np.pi, np.pi, (1500, 1))).as_matrix()
+    Rb[1500:3000] = a.rotation[1500:3000] @ spin
+    b = OBB(b.center, Rb, b.half_extents)
+    # The last 600 pairs touching along a random direction (closed-form distance).
+    u = rng.normal(size=(600, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    s = np.array([_touching_distance(a[n - 600 + i], b[n - 600 + i], u[i]) for i in range(600)])
+    center = b.center.copy()
+    center[n - 600 :] = a.center[n - 600 :] + s[:, None] * u
+    b = OBB(center, b.rotation, b.half_extents)
+    Rt, ea, eb = _rt_inputs(a, b)
+    assert n > obb_module.FEW_PAIRS_RT
+    vectorised = obb_module.sat_overlap_rt(Rt, ea, eb)
+    assert 0.2 < vectorised.mean() < 0.8 and vectorised[n - 600 :].all()
+    np.testing.assert_array_equal(
+        obb_module._sat_rt_few(Rt, ea, eb, obb_module.SAT_EPS), vectorised
+    )
+    # Through the public entry point in small batches, and with A's half extents broadcast.
+    k = obb_module.FEW_PAIRS_RT
+    for lo in range(0, n, 397):
+        sl = slice(lo, lo + k)
+        got = obb_module.sat_overlap_rt(Rt[..., sl], ea[:, sl], eb[:, sl])
+        np.testing.assert_array_equal(got, vectorised[sl])
+    one = np.repeat(ea[:, :1], n, axis=1)
+    full = obb_module.sat_overlap_rt(Rt, one, eb)
+    np.testing.assert_array_equal(
+        obb_module.sat_overlap_rt(Rt[..., :k], ea[:, :1], eb[:, :k]), full[:k]
+    )
