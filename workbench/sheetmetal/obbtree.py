@@ -300,6 +300,9 @@ class _Traversal:
 
     def frame_report(self, hit: NDArray[np.bool_], n_tests: int) -> CollisionReport:
         """Return one frame's `CollisionReport` from its hit mask (N, M)."""
+        if not hit.any():  # the common case on a path: nothing but the start nodes tested
+            start = tuple(sorted(self.start.tolist()))
+            return CollisionReport(False, (), (), (), n_tests, start, ())
         pairs = np.argwhere(hit[self.nodes.leaves]).tolist()  # sorted (flange, obstacle)
         node_hit = np.logical_or.reduce(hit, axis=1)
         tested = set(self.start.tolist())
