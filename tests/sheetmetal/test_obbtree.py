@@ -234,3 +234,14 @@ def test_touching_placements_are_hits_at_every_level(seed_state) -> None:
         assert touched.all() if expect else not touched.any()
         if expect:
             assert rep.collides.all()
+
+
+def test_no_obstacles_and_no_frames(seed_state) -> None:
+    tree = seed_state.obb_tree("1")
+    none = OBB(np.zeros((0, 3)), np.zeros((0, 3, 3)), np.zeros((0, 3)))
+    rep = tree.collide(none, np.eye(4))
+    assert not rep.collides and rep.n_obb_tests == 0 and rep.nodes_tested == ()
+    cup = OBB([0.0, 0, 0], np.eye(3), [0.01, 0.01, 0.01]).reshape(1)
+    empty = tree.collide_frames(cup, np.zeros((0, 4, 4)))
+    assert empty.collides.shape == empty.n_obb_tests.shape == (0,)
+    assert empty.hits.shape == (0, 3) and empty.tested.shape == (0, 2)
