@@ -180,3 +180,114 @@ def test_few_pair_path_equals_the_vectorised_test() -> None:
         sl = slice(k, k + 4)
         small = tuple(x[..., sl] for x in args)
         np.testing.assert_array_equal(obb_module.sat_overlap_t(*small), vectorised[sl])
+
+
+def _rt_inputs(a: OBB, b: OBB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Return sat_overlap_rt's inputs for pairs (a[i], b[i]), by plain per-pair matrix algebra."""
+    cyc = [0, 1, 2, 0, 1]
+    At = np.swapaxes(a.rotation, -1, -2)
+    R = At @ b.rotation  # R[i, j] = a_i . b_j
+    t = (At @ (b.center - a.center)[..., None])[..., 0]
+    Rt = np.concatenate([R[:, cyc][:, :, cyc], t[:, cyc, None]], axis=2)  # (P, 5, 6)
+    return np.moveaxis(Rt, 0, -1), a.half_extents[:, cyc].T, b.half_extents[:, cyc].T
+
+
+def _touching_distance(a: OBB, b: OBB, u: np.ndarray) -> float:
+    """Return s with b's centre at a's centre + s u touching a (closed form over the 15 axes).
+
+    With equal centres the gap along a unit axis L grows as s |L.u| - r_L (r_L: the two
+    projected radii), so the boxes first separate at s = min over axes of r_L / |L.u|.
+    """
+    A, B = a.rotation, b.rotation
+    axes = [A[:, i] for i in range(3)] + [B[:, j] for j in range(3)]
+    axes += [np.cross(A[:, i], B[:, j]) for i in range(3) for j in range(3)]
+    best = np.inf
+    for ax in axes:
+        n = np.linalg.norm(ax)
+        if n < 1e-6:
+            continue
+        ax = ax / n
+        r = np.sum(a.half_extents * np.abs(A.T @ ax)) + np.sum(b.half_extents * np.abs(B.T @ ax))
+        if abs(ax @ u) > 1e-12:
+            best = min(best, r / abs(ax @ u))
+    return float(best)
+
+
+def test_rt_path_equals_plain_test_fcl_and_touching_cases() -> None:
+    # The tree's exact test (sat_overlap_rt, on A^T [B | d] with cyclic axis order) against
+    # the plain 15-axis test, python-fcl and a closed-form touching distance; parallel edges
+    # included (a fifth of the pairs share the orientation, a fifth share one axis).
+    from workbench.geometry import obb as obb_module
+
+    rng = np.random.default_rng(11)
+    n = 20_000
+    a, b = random_boxes(rng, n, 0.7), random_boxes(rng, n, 0.7)
+    Rb = b.rotation.copy()
+    Rb[: n // 5] = a.rotation[: n // 5]
+    spin = Rotation.from_euler("z", rng.uniform(-np.pi, np.pi, (n // 5, 1))).as_matrix()
+    Rb[n // 5 : 2 * n // 5] = a.rotation[n // 5 : 2 * n // 5] @ spin  # a_z parallel to b_z
+    b = OBB(b.center, Rb, b.half_extents)
+    fast = obb_module.sat_overlap_rt(*_rt_inputs(a, b))
+    plain = obb_overlap(a, b)
+    assert 0.2 < fast.mean() < 0.8
+    np.testing.assert_array_equal(fast, plain)
+    theirs = fcl_collide(a[:3000], b[:3000])
+    for i in np.nonzero(fast[:3000] != theirs)[0]:
+        assert abs(slow_separation(a[i], b[i])) < 1e-9
+    # Near-touching: b slid out along a random direction to the touching distance s, then
+    # s (1 - 1e-6) must overlap, s (1 + 1e-6) must not, and s itself counts as touching.
+    m = 600
+    a, b = random_boxes(rng, m, 0.0), random_boxes(rng, m, 0.0)
+    Rb = b.rotation.copy()
+    Rb[: m // 3] = a.rotation[: m // 3]
+    b = OBB(b.center, Rb, b.half_extents)
+    u = rng.normal(size=(m, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    s = np.array([_touching_distance(a[i], b[i], u[i]) for i in range(m)])
+    for scale, expect in ((1 - 1e-6, True), (1.0, True), (1 + 1e-6, False)):
+        moved = OBB(a.center + (s * scale)[:, None] * u, b.rotation, b.half_extents)
+        fast = obb_module.sat_overlap_rt(*_rt_inputs(a, moved))
+        np.testing.assert_array_equal(fast, obb_overlap(a, moved))
+        assert fast.all() if expect else not fast.any()
+        if scale != 1.0:
+            np.testing.assert_array_equal(fast, fcl_collide(a, moved))
+
+
+def test_rt_few_pair_loop_equals_the_vectorised_rt_test() -> None:
+    # sat_overlap_rt answers batches of at most FEW_PAIRS_RT pairs with a Python loop; it must
+    # agree with the vectorised path exactly: random, parallel-edge and touching pairs.
+    from workbench.geometry import obb as obb_module
+
+    rng = np.random.default_rng(12)
+    n = 6000
+    a, b = random_boxes(rng, n, 0.7), random_boxes(rng, n, 0.7)
+    Rb = b.rotation.copy()
+    Rb[:1500] = a.rotation[:1500]
+    spin = Rotation.from_euler("x", rng.uniform(-np.pi, np.pi, (1500, 1))).as_matrix()
+    Rb[1500:3000] = a.rotation[1500:3000] @ spin
+    b = OBB(b.center, Rb, b.half_extents)
+    # The last 600 pairs touching along a random direction (closed-form distance).
+    u = rng.normal(size=(600, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    s = np.array([_touching_distance(a[n - 600 + i], b[n - 600 + i], u[i]) for i in range(600)])
+    center = b.center.copy()
+    center[n - 600 :] = a.center[n - 600 :] + s[:, None] * u
+    b = OBB(center, b.rotation, b.half_extents)
+    Rt, ea, eb = _rt_inputs(a, b)
+    assert n > obb_module.FEW_PAIRS_RT
+    vectorised = obb_module.sat_overlap_rt(Rt, ea, eb)
+    assert 0.2 < vectorised.mean() < 0.8 and vectorised[n - 600 :].all()
+    np.testing.assert_array_equal(
+        obb_module._sat_rt_few(Rt, ea, eb, obb_module.SAT_EPS), vectorised
+    )
+    # Through the public entry point in small batches, and with A's half extents broadcast.
+    k = obb_module.FEW_PAIRS_RT
+    for lo in range(0, n, 397):
+        sl = slice(lo, lo + k)
+        got = obb_module.sat_overlap_rt(Rt[..., sl], ea[:, sl], eb[:, sl])
+        np.testing.assert_array_equal(got, vectorised[sl])
+    one = np.repeat(ea[:, :1], n, axis=1)
+    full = obb_module.sat_overlap_rt(Rt, one, eb)
+    np.testing.assert_array_equal(
+        obb_module.sat_overlap_rt(Rt[..., :k], ea[:, :1], eb[:, :k]), full[:k]
+    )

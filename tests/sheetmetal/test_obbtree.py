@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import itertools
 from pathlib import Path
 
 import fcl
@@ -146,3 +147,101 @@ def test_bad_input(seed_state) -> None:
         tree.collide(OBB(np.zeros(3), np.eye(3), np.ones(3)), np.eye(3))
     with pytest.raises(InputError, match="obstacles"):
         tree.collide([1, 2, 3], np.eye(4))  # type: ignore[arg-type]
+
+
+def slow_dfs(tree, obstacles: OBB, T: np.ndarray):
+    """Fig. 9 one pair at a time: test the root against each obstacle, recurse into hits."""
+    world = tree.boxes.transformed(T)
+    tested, hit_nodes, hits = [], [], set()
+
+    def visit(node: int, o: int) -> None:
+        tested.append(node)
+        if not bool(obb_overlap(world[node], obstacles[o])):
+            return
+        hit_nodes.append(node)
+        if tree.leaf_flange[node] >= 0:
+            hits.add((int(tree.leaf_flange[node]), o))
+        lo = tree.child_start[node]
+        for child in tree.child_index[lo : lo + tree.child_count[node]]:
+            visit(int(child), o)
+
+    for o in range(len(obstacles)):
+        visit(0, o)
+    return sorted(tested), sorted(hit_nodes), sorted(hits)
+
+
+def test_batched_report_equals_a_pair_by_pair_dfs(seed_state) -> None:
+    # The batched traversal (AABB pre-filter, level-wide exact tests, lazily derived rows)
+    # against the recursive DFS above, test for test: counts, tested and hit nodes, hits.
+    rng = np.random.default_rng(5)
+    tree = seed_state.obb_tree("1")
+    obstacles = random_obstacles(rng, 5, 0.12)
+    T = random_poses(rng, 400, 0.2)
+    rep = tree.collide_frames(obstacles, T)
+    descended = 0
+    for i in range(len(T)):
+        tested, hit_nodes, hits = slow_dfs(tree, obstacles, T[i])
+        assert rep.n_obb_tests[i] == len(tested)
+        assert sorted(rep.tested[rep.tested[:, 0] == i, 1].tolist()) == tested
+        assert sorted(rep.hit_nodes[rep.hit_nodes[:, 0] == i, 1].tolist()) == hit_nodes
+        assert sorted(map(tuple, rep.hits[rep.hits[:, 0] == i, 1:].tolist())) == hits
+        one = rep.frame(i)
+        assert one.collides == bool(hits) == rep.collides[i]
+        assert one.hit_pairs == tuple(hits) and one.n_obb_tests == len(tested)
+        assert one.nodes_tested == tuple(sorted(set(tested)))
+        assert one.nodes_hit == tuple(sorted(set(hit_nodes)))
+        descended += len(tested) > len(obstacles)
+    assert 50 < descended < 390 and 0.1 < rep.collides.mean() < 0.9
+
+
+def test_touching_placements_are_hits_at_every_level(seed_state) -> None:
+    # Poses that put a flange box exactly against an obstacle face (gap 0), just inside and
+    # just outside: the AABB pre-filter and the internal boxes must not lose a touching pair.
+    rng = np.random.default_rng(6)
+    tree = seed_state.obb_tree("1")
+    leaves = tree.boxes[tree.leaves]
+    # Axis-aligned, the obstacle's and the flange's world AABBs are the boxes themselves, so
+    # the pre-filter is as tight as it gets; rotated, the exact test decides.
+    rotations = (np.eye(3), Rotation.random(random_state=rng).as_matrix())
+    n = 300
+    flange = rng.integers(0, 7, n)
+    axis = rng.integers(0, 3, n)
+    side = rng.choice([-1.0, 1.0], n)
+    for rotation, (gap, expect) in itertools.product(
+        rotations, ((0.0, True), (-1e-7, True), (1e-7, False))
+    ):
+        obstacle = OBB([0.4, -0.2, 0.9], rotation, [0.05, 0.2, 0.1])
+        T = np.empty((n, 4, 4))
+        for k in range(n):
+            leaf = leaves[int(flange[k])]
+            # World pose of the flange box: the obstacle's axes, slid along one of them until
+            # the faces meet (plus gap), and shifted sideways within the face.
+            ax = int(axis[k])
+            offset = (
+                rng.uniform(-1, 1, 3) * 0.3 * np.minimum(leaf.half_extents, obstacle.half_extents)
+            )
+            offset[ax] = side[k] * (leaf.half_extents[ax] + obstacle.half_extents[ax] + gap)
+            T_world_leaf = make_transform(
+                obstacle.rotation, obstacle.center + obstacle.rotation @ offset
+            )
+            T_leaf_grasp = np.linalg.inv(make_transform(leaf.rotation, leaf.center))
+            T[k] = T_world_leaf @ T_leaf_grasp
+        rep = tree.collide_frames(obstacle.reshape(1), T)
+        world = leaves.reshape(1, -1).transformed(T[:, None])
+        brute = obb_overlap(world, obstacle.reshape(1, 1))  # (n, 7)
+        np.testing.assert_array_equal(rep.collides, brute.any(axis=1))
+        touched = brute[np.arange(n), flange]
+        assert touched.all() if expect else not touched.any()
+        if expect:
+            assert rep.collides.all()
+
+
+def test_no_obstacles_and_no_frames(seed_state) -> None:
+    tree = seed_state.obb_tree("1")
+    none = OBB(np.zeros((0, 3)), np.zeros((0, 3, 3)), np.zeros((0, 3)))
+    rep = tree.collide(none, np.eye(4))
+    assert not rep.collides and rep.n_obb_tests == 0 and rep.nodes_tested == ()
+    cup = OBB([0.0, 0, 0], np.eye(3), [0.01, 0.01, 0.01]).reshape(1)
+    empty = tree.collide_frames(cup, np.zeros((0, 4, 4)))
+    assert empty.collides.shape == empty.n_obb_tests.shape == (0,)
+    assert empty.hits.shape == (0, 3) and empty.tested.shape == (0, 2)

@@ -221,6 +221,101 @@ def sat_overlap_t(
     return ~sep
 
 
+def sat_overlap_rt(
+    Rt: NDArray[np.float64],
+    a: NDArray[np.float64],
+    b: NDArray[np.float64],
+    eps: float = SAT_EPS,
+) -> NDArray[np.bool_]:
+    """Return overlap verdicts (P,) of box pairs given in box A's frame; no validation (hot path).
+
+    Axis indices are extended cyclically (x, y, z, x, y), so that the rolled indices i + 1,
+    i + 2 (mod 3) of the edge axes are slices rather than gathers: `Rt` (5, 6, P) holds
+    Rt[r, c] = a_(r%3) . b_(c%3) for c < 5 and Rt[r, 5] = a_(r%3) . (cb - ca) [m]; `a` and
+    `b` (5, P) (or (5, 1)) are the half extents [m] in the same order. The same 15 axes, eps
+    and arithmetic as `sat_overlap_t`, in about 30 numpy calls whatever P is; up to
+    `FEW_PAIRS_RT` pairs take a plain Python loop with the same operations in the same order.
+    """
+    n = Rt.shape[-1]
+    if n <= FEW_PAIRS_RT:
+        return _sat_rt_few(Rt, a, b, eps)
+    t = Rt[:, 5]
+    aR = np.abs(Rt[:, :5])
+    aR += eps  # |R| + eps as in Gottschalk's test: parallel edges never separate falsely
+    R3, aR3, t3, a3, b3 = Rt[:3, :3], aR[:3, :3], t[:3], a[:3], b[:3]
+    sep = np.empty((15, n), dtype=bool)
+    # Axes of A: |t_i| > a_i + sum_j |R_ij| b_j.
+    r = (aR3 * b3[None]).sum(axis=1)
+    r += a3
+    np.greater(np.abs(t3), r, out=sep[0:3])
+    # Axes of B: |sum_i t_i R_ij| > sum_i a_i |R_ij| + b_j.
+    lhs = (t3[:, None] * R3).sum(axis=0)
+    r = (a3[:, None] * aR3).sum(axis=0)
+    r += b3
+    np.greater(np.abs(lhs), r, out=sep[3:6])
+    # Edge axes a_i x b_j: |t_(i+2) R_(i+1)j - t_(i+1) R_(i+2)j| against
+    # a_(i+1) |R_(i+2)j| + a_(i+2) |R_(i+1)j| + b_(j+1) |R_i(j+2)| + b_(j+2) |R_i(j+1)|.
+    lhs = t[2:5, None] * Rt[1:4, :3]
+    lhs -= t[1:4, None] * Rt[2:5, :3]
+    np.abs(lhs, out=lhs)
+    ra = a[1:4, None] * aR[2:5, :3]
+    ra += a[2:5, None] * aR[1:4, :3]
+    rb = b[None, 1:4] * aR[:3, 2:5]
+    rb += b[None, 2:5] * aR[:3, 1:4]
+    ra += rb
+    np.greater(lhs, ra, out=sep[6:15].reshape(3, 3, n))
+    return np.logical_not(np.logical_or.reduce(sep, axis=0))
+
+
+# At most this many pairs, `sat_overlap_rt` loops in Python floats: the ~30 numpy calls of
+# the vectorised test cost more than a few pairs' arithmetic (a tree's deeper levels and a
+# single frame's root test test a handful of pairs).
+FEW_PAIRS_RT = 6
+
+
+def _sat_rt_few(
+    Rt: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64], eps: float
+) -> NDArray[np.bool_]:
+    """Return `sat_overlap_rt` for a few pairs, one at a time: the same operations in the same
+    order (so the same verdicts), written out axis by axis (edge (i, j) uses i + 1, i + 2)."""
+    n = Rt.shape[-1]
+    rows = Rt[:3].transpose(2, 0, 1).tolist()  # (P, 3, 6): R_ij for j < 3, t_i at j = 5
+    al, bl = a[:3].T.tolist(), b[:3].T.tolist()
+    al, bl = (al * n if len(al) == 1 else al), (bl * n if len(bl) == 1 else bl)
+    out = np.zeros(n, dtype=bool)
+    for p in range(n):
+        (R00, R01, R02, _, _, t0), (R10, R11, R12, _, _, t1), (R20, R21, R22, _, _, t2) = rows[p]
+        a0, a1, a2 = al[p]
+        b0, b1, b2 = bl[p]
+        Q00, Q01, Q02 = abs(R00) + eps, abs(R01) + eps, abs(R02) + eps
+        Q10, Q11, Q12 = abs(R10) + eps, abs(R11) + eps, abs(R12) + eps
+        Q20, Q21, Q22 = abs(R20) + eps, abs(R21) + eps, abs(R22) + eps
+        if (  # axes of A
+            abs(t0) > Q00 * b0 + Q01 * b1 + Q02 * b2 + a0
+            or abs(t1) > Q10 * b0 + Q11 * b1 + Q12 * b2 + a1
+            or abs(t2) > Q20 * b0 + Q21 * b1 + Q22 * b2 + a2
+        ):
+            continue
+        if (  # axes of B
+            abs(t0 * R00 + t1 * R10 + t2 * R20) > a0 * Q00 + a1 * Q10 + a2 * Q20 + b0
+            or abs(t0 * R01 + t1 * R11 + t2 * R21) > a0 * Q01 + a1 * Q11 + a2 * Q21 + b1
+            or abs(t0 * R02 + t1 * R12 + t2 * R22) > a0 * Q02 + a1 * Q12 + a2 * Q22 + b2
+        ):
+            continue
+        out[p] = not (  # edge axes a_i x b_j
+            abs(t2 * R10 - t1 * R20) > a1 * Q20 + a2 * Q10 + (b1 * Q02 + b2 * Q01)
+            or abs(t2 * R11 - t1 * R21) > a1 * Q21 + a2 * Q11 + (b2 * Q00 + b0 * Q02)
+            or abs(t2 * R12 - t1 * R22) > a1 * Q22 + a2 * Q12 + (b0 * Q01 + b1 * Q00)
+            or abs(t0 * R20 - t2 * R00) > a2 * Q00 + a0 * Q20 + (b1 * Q12 + b2 * Q11)
+            or abs(t0 * R21 - t2 * R01) > a2 * Q01 + a0 * Q21 + (b2 * Q10 + b0 * Q12)
+            or abs(t0 * R22 - t2 * R02) > a2 * Q02 + a0 * Q22 + (b0 * Q11 + b1 * Q10)
+            or abs(t1 * R00 - t0 * R10) > a0 * Q10 + a1 * Q00 + (b1 * Q22 + b2 * Q21)
+            or abs(t1 * R01 - t0 * R11) > a0 * Q11 + a1 * Q01 + (b2 * Q20 + b0 * Q22)
+            or abs(t1 * R02 - t0 * R12) > a0 * Q12 + a1 * Q02 + (b0 * Q21 + b1 * Q20)
+        )
+    return out
+
+
 # Below this many pairs a plain Python loop beats numpy's per-call cost (a tree's deeper
 # levels test a handful of pairs); `_sat_few` and the vectorised test agree exactly.
 FEW_PAIRS = 8

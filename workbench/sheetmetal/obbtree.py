@@ -11,56 +11,21 @@ so the traversal's verdict equals testing every flange box against every obstacl
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.geometry.obb import OBB, sat_overlap_t
+from workbench.geometry.obb import OBB
 from workbench.geometry.transforms import invert_transform
+from workbench.sheetmetal.obbcheck import CollisionReport, FramesReport, NodeArrays, TreeCheck
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.folding import FoldedState
 
-
-@dataclass(frozen=True)
-class CollisionReport:
-    """Result of one carried-part check: verdict, hits, and the work done (for the GUI)."""
-
-    collides: bool
-    hit_flanges: tuple[int, ...]
-    hit_obstacles: tuple[int, ...]
-    hit_pairs: tuple[tuple[int, int], ...]  # (flange, obstacle)
-    n_obb_tests: int
-    nodes_tested: tuple[int, ...]
-    nodes_hit: tuple[int, ...]
-
-
-@dataclass(frozen=True, eq=False)
-class FramesReport:
-    """Checks of F frames: `collides` (F,), `n_obb_tests` (F,), `hits` (K, 3) [frame, flange, obstacle]."""
-
-    collides: NDArray[np.bool_]
-    n_obb_tests: NDArray[np.int64]
-    hits: NDArray[np.int64]
-    tested: NDArray[np.int64]  # (J, 2) [frame, node], one row per OBB test
-    hit_nodes: NDArray[np.int64]  # (J', 2) [frame, node]
-
-    def frame(self, i: int) -> CollisionReport:
-        """Return frame `i`'s result as a `CollisionReport`."""
-        h = self.hits[self.hits[:, 0] == i]
-        return CollisionReport(
-            collides=bool(self.collides[i]),
-            hit_flanges=tuple(int(x) for x in np.unique(h[:, 1])),
-            hit_obstacles=tuple(int(x) for x in np.unique(h[:, 2])),
-            hit_pairs=tuple(sorted({(int(a), int(b)) for a, b in h[:, 1:]})),
-            n_obb_tests=int(self.n_obb_tests[i]),
-            nodes_tested=tuple(int(x) for x in np.unique(self.tested[self.tested[:, 0] == i, 1])),
-            nodes_hit=tuple(
-                int(x) for x in np.unique(self.hit_nodes[self.hit_nodes[:, 0] == i, 1])
-            ),
-        )
+__all__ = ["CollisionReport", "FramesReport", "OBBTree", "build_obb_tree"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,10 +44,15 @@ class OBBTree:
     @property
     def leaves(self) -> NDArray[np.int64]:
         """Return the node index of each flange's leaf (F,)."""
-        out = np.empty(int(self.leaf_flange.max()) + 1, dtype=np.int64)
-        m = self.leaf_flange >= 0
-        out[self.leaf_flange[m]] = np.nonzero(m)[0]
-        return out
+        return self._checks[0].nodes.leaves.copy()
+
+    @cached_property
+    def _checks(self) -> tuple[TreeCheck, TreeCheck]:
+        # Node arrays laid out once per tree, i.e. once per bend state and grasp flange (the
+        # folded state caches its trees): the DFS from the root, and the flat leaf check.
+        nodes = NodeArrays.of(self)
+        dfs = TreeCheck(nodes, np.array([0]), nodes.levels)
+        return dfs, TreeCheck(nodes, nodes.leaves, [])
 
     def collide(self, obstacles: OBB, T_world_grasp: ArrayLike) -> CollisionReport:
         """Return the DFS (coarse root first, descend into hit nodes) check of one pose (4, 4)."""
@@ -95,7 +65,7 @@ class OBBTree:
 
     def collide_frames(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
         """Return the tree check of F poses (F, 4, 4), batched over frames and obstacles."""
-        return _traverse(self, obstacles, T_world_grasp, np.array([0]), descend=True)
+        return self._checks[0].run(obstacles, T_world_grasp)
 
     def flat_collide(self, obstacles: OBB, T_world_grasp: ArrayLike) -> CollisionReport:
         """Return the flat check (every flange box against every obstacle) of one pose (4, 4)."""
@@ -106,92 +76,7 @@ class OBBTree:
 
     def flat_collide_frames(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
         """Return the flat per-flange check of F poses (F, 4, 4), batched."""
-        return _traverse(self, obstacles, T_world_grasp, self.leaves, descend=False)
-
-
-def _traverse(
-    tree: OBBTree, obstacles: OBB, T_world_grasp: ArrayLike, start: NDArray[np.int64], descend: bool
-) -> FramesReport:
-    if not isinstance(obstacles, OBB):
-        raise InputError(f"obstacles: expected an OBB (batch (M,)), got {type(obstacles).__name__}")
-    T = np.asarray(T_world_grasp, dtype=float)
-    if T.ndim != 3 or T.shape[1:] != (4, 4) or not np.all(np.isfinite(T)):
-        raise InputError(f"T_world_grasp: expected finite shape (F, 4, 4), got {T.shape}")
-    F = len(T)
-    o_c, o_r, o_e = (
-        obstacles.center.reshape(-1, 3),
-        obstacles.rotation.reshape(-1, 3, 3),
-        obstacles.half_extents.reshape(-1, 3),
-    )
-    M = len(o_c)
-    # Obstacles into each frame's grasp frame once (the node boxes never move), all arrays
-    # components-first and contiguous so that gathers and SAT steps run over contiguous rows.
-    first = np.ascontiguousarray
-    W = first(np.moveaxis(T[:, :3, :3], (1, 2), (0, 1)))  # W[k, i, f] = R_world_grasp[f][k, i]
-    diff = o_c.T[:, None, :] - T[:, :3, 3].T[:, :, None]  # (3, F, M)
-    Oc = first(np.moveaxis(o_r, (1, 2), (0, 1)))  # (3, 3, M)
-    oc = sum(W[k][:, :, None] * diff[k][None] for k in range(3)).reshape(3, F * M)
-    orot = sum(W[k][:, None, :, None] * Oc[k][None, :, None, :] for k in range(3)).reshape(
-        3, 3, F * M
-    )
-    oe = first(o_e.T)
-    nc = first(tree.boxes.center.T)
-    nr = first(np.moveaxis(tree.boxes.rotation, (1, 2), (0, 1)))
-    ne = first(tree.boxes.half_extents.T)
-    f_idx, n_idx, o_idx = (
-        a.ravel() for a in np.meshgrid(np.arange(F), start, np.arange(M), indexing="ij")
-    )
-    tested_f, tested_n, hit_f, hit_n, hits = [], [], [], [], []
-    # Bounding-sphere radii: boxes whose spheres are apart cannot overlap, so only the
-    # pairs whose spheres meet pay for the 15-axis separating-axis test.
-    n_rad = np.sqrt((ne * ne).sum(axis=0))
-    o_rad = np.sqrt((oe * oe).sum(axis=0))
-    while len(f_idx):
-        fo = f_idx * M + o_idx
-        d = oc[:, fo] - nc[:, n_idx]
-        reach = n_rad[n_idx] + o_rad[o_idx]
-        near = np.flatnonzero((d * d).sum(axis=0) <= reach * reach)
-        ok = np.zeros(len(f_idx), dtype=bool)
-        if len(near):
-            fn, nn = fo[near], n_idx[near]
-            ok[near] = sat_overlap_t(
-                d[:, near], nr[:, :, nn], ne[:, nn], orot[:, :, fn], oe[:, o_idx[near]]
-            )
-        tested_f.append(f_idx)
-        tested_n.append(n_idx)
-        f_idx, n_idx, o_idx = f_idx[ok], n_idx[ok], o_idx[ok]
-        hit_f.append(f_idx)
-        hit_n.append(n_idx)
-        flange = tree.leaf_flange[n_idx]
-        leaf = flange >= 0
-        hits.append(np.stack([f_idx[leaf], flange[leaf], o_idx[leaf]], axis=1))
-        if not descend:
-            break
-        inner = ~leaf
-        f_idx, n_idx, o_idx = f_idx[inner], n_idx[inner], o_idx[inner]
-        cnt = tree.child_count[n_idx]
-        offs = np.repeat(tree.child_start[n_idx] - (np.cumsum(cnt) - cnt), cnt)
-        n_idx = tree.child_index[offs + np.arange(int(cnt.sum()))]
-        f_idx, o_idx = np.repeat(f_idx, cnt), np.repeat(o_idx, cnt)
-    h = np.concatenate(hits) if hits else np.zeros((0, 3), np.int64)
-    collides = np.zeros(F, dtype=bool)
-    collides[h[:, 0]] = True
-    tf = np.concatenate(tested_f) if tested_f else np.zeros(0, np.int64)
-
-    def pairs(a: list, b: list) -> NDArray[np.int64]:
-        return (
-            np.stack([np.concatenate(a), np.concatenate(b)], axis=1)
-            if a
-            else np.zeros((0, 2), np.int64)
-        )
-
-    return FramesReport(
-        collides,
-        np.bincount(tf, minlength=F),
-        h.astype(np.int64),
-        pairs(tested_f, tested_n),
-        pairs(hit_f, hit_n),
-    )
+        return self._checks[1].run(obstacles, T_world_grasp)
 
 
 def build_obb_tree(state: FoldedState, grasp_flange: int) -> OBBTree:
