@@ -92,7 +92,7 @@ class HybridForceParams:
     kop: float = 40.0  # [1/s] orientation loop P gain
     kod: float = 0.05  # [-] orientation loop D gain (on the error rate)
     koi: float = 0.0  # [1/s²] orientation loop I gain
-    max_angular_speed: float = 1.5  # [rad/s] limit on the commanded angular velocity
+    max_angular_speed: float = math.pi / 2  # [rad/s] limit on the commanded angular velocity
 
 
 @dataclass(frozen=True)
