@@ -54,17 +54,32 @@ class BezierSurface:
         """Return the control points (F, 6, 3) [m] of every patch."""
         return self.control_points_of(np.arange(self.n_faces))
 
+    @cached_property
+    def _cache(self) -> tuple[F64, NDArray[np.bool_]]:
+        # Filled as patches are asked for: planning evaluates the same faces several times
+        # (Newton iterations), and np.empty costs nothing until a page is written.
+        return np.empty((self.n_faces, 6, 3)), np.zeros(self.n_faces, dtype=bool)
+
     def control_points_of(self, face: ArrayLike) -> F64:
         """Return the control points (..., 6, 3) [m] of patches `face` (...)."""
         f = np.asarray(face, dtype=np.int64)
-        tri = self.faces[f.ravel()]
+        flat = f.ravel()
+        cache, done = self._cache
+        need = flat[~done[flat]]
+        if len(need):
+            need = np.unique(need)
+            cache[need] = self._compute_control_points(need)
+            done[need] = True
+        return cache[flat].reshape(f.shape + (6, 3))
+
+    def _compute_control_points(self, face: NDArray[np.int64]) -> F64:
+        tri = self.faces[face]
         # Each face edge is computed from its endpoints in sorted order, so the two faces of
         # an edge get bit-identical control points (C0) without a sort over all edges.
         edges = np.sort(tri[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
         edge_cp = _edge_control_points(self.vertices, self.vertex_normals, edges).reshape(-1, 3, 3)
         # face edges are (A,B) -> P110, (B,C) -> P011, (C,A) -> P101.
-        cp = np.concatenate([self.vertices[tri], edge_cp], axis=1)
-        return cp.reshape(f.shape + (6, 3))
+        return np.concatenate([self.vertices[tri], edge_cp], axis=1)
 
     def _check(self, face: ArrayLike, bary: ArrayLike) -> tuple[NDArray[np.int64], F64]:
         f = np.asarray(face, dtype=np.int64)
@@ -92,6 +107,16 @@ class BezierSurface:
     def normal(self, face: ArrayLike, bary: ArrayLike) -> F64:
         """Return unit surface normals (..., 3), oriented like the face winding (A, B, C)."""
         return _unit_normal(*self.derivatives(face, bary))
+
+    def evaluate_with_derivatives(
+        self, face: ArrayLike, bary: ArrayLike
+    ) -> tuple[F64, F64, F64, F64]:
+        """Return (points, dP/du, dP/dv, unit normals) (..., 3) at `bary` of patches `face`,
+        sharing one lookup (derivatives with w = 1 - u - v eliminated, as `derivatives`)."""
+        f, b = self._check(face, bary)
+        cp = self.control_points_of(f)
+        d_du, d_dv = _derivatives(cp, b)
+        return _point(cp, b), d_du, d_dv, _unit_normal(d_du, d_dv)
 
     def evaluate_with_normal(self, face: ArrayLike, bary: ArrayLike) -> tuple[F64, F64]:
         """Return (points, unit normals) (..., 3) at `bary` of patches `face`, sharing one lookup."""

@@ -90,6 +90,35 @@ class SurfaceChart:
             k *= 4
         return face, bary
 
+    def locate_near(self, uv: F64, hint: I64, *, tol: float = 1e-9) -> tuple[I64, F64]:
+        """Return (face (N,), bary (N, 3)) of chart points uv (N, 2) as `locate`, trying the
+        faces `hint` (N,) first: points still inside their hint face skip the KD-tree search
+        (the path's points move a fraction of a face between Newton iterations)."""
+        p = np.asarray(uv, dtype=float).reshape(-1, 2)
+        h = np.asarray(hint, dtype=np.int64).reshape(-1)
+        hh = np.where(h >= 0, h, 0)
+        u, v, w = self._bary(p, hh)
+        hit = (h >= 0) & (np.minimum(np.minimum(u, v), w) >= -tol)
+        face = np.where(hit, hh, -1)
+        bb = np.clip(np.stack([u, v, w], axis=1), 0.0, None)
+        bary = bb / bb.sum(axis=1, keepdims=True)
+        miss = np.nonzero(~hit)[0]
+        if len(miss):
+            face[miss], bary[miss] = self.locate(p[miss], tol=tol)
+        return face, bary
+
+    def bary_rate(self, face: I64, direction: F64) -> F64:
+        """Return d(u, v)/ds (N, 2) of the barycentrics (w = 1 - u - v eliminated) of faces
+        `face` (N,) along chart vectors `direction` (N, 2)."""
+        m = self.face_inv[face]
+        return np.stack(
+            [
+                m[:, 0] * direction[:, 0] + m[:, 1] * direction[:, 1],
+                m[:, 2] * direction[:, 0] + m[:, 3] * direction[:, 1],
+            ],
+            axis=1,
+        )
+
     def jacobian(self, face: I64) -> F64:
         """Return d(xyz)/d(uv) (N, 3, 2) of flat faces `face` (N,): chart vectors to 3D vectors."""
         f = self.faces[face]
