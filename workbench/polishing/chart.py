@@ -199,13 +199,16 @@ def build_chart(mesh: trimesh.Trimesh) -> SurfaceChart:
     if len(faces) == 0:
         raise MeshError("mesh has no faces")
     origin = vertices.mean(axis=0)
-    centred = vertices - origin
-    _, vecs = np.linalg.eigh(centred.T @ centred)
+    # Products of (V, 3) arrays with 3-vectors are written out on contiguous rows: a BLAS
+    # call on a tall thin matrix is no faster, and its threads cost ms on a busy machine.
+    col = np.ascontiguousarray((vertices - origin).T)  # (3, V)
+    cov = np.array([[float(np.dot(col[i], col[j])) for j in range(3)] for i in range(3)])
+    _, vecs = np.linalg.eigh(cov)
     vt = vecs[:, ::-1].T  # principal axes, largest spread first
     e_u, e_v = vt[0], vt[1]
     e_n = np.cross(e_u, e_v)
-    uvn = centred @ np.stack([e_u, e_v, e_n]).T
-    fu, fv, fn = (uvn[:, i][faces] for i in range(3))  # (F, 3) each
+    pu, pv, pn = (col[0] * e[0] + col[1] * e[1] + col[2] * e[2] for e in (e_u, e_v, e_n))
+    fu, fv, fn = (x[faces] for x in (pu, pv, pn))  # (F, 3) each
     d1u, d1v, d2u, d2v = (
         fu[:, 0] - fu[:, 2],
         fv[:, 0] - fv[:, 2],
@@ -234,10 +237,10 @@ def build_chart(mesh: trimesh.Trimesh) -> SurfaceChart:
     for i in range(3):
         for c, comp in enumerate((cx, cy, det)):
             acc[:, c] += np.bincount(faces[:, i], comp, minlength=len(vertices))
-    normals = acc @ axes
+    normals = acc[:, :1] * axes[0] + acc[:, 1:2] * axes[1] + acc[:, 2:] * axes[2]
     nlen = np.linalg.norm(normals, axis=1, keepdims=True)
     normals /= np.where(nlen > 0, nlen, 1.0)
-    uv = np.stack([uvn[:, 0], uvn[:, 1] if axes[1] @ vt[1] > 0 else -uvn[:, 1]], axis=1)
+    uv = np.stack([pu, pv if axes[1] @ vt[1] > 0 else -pv], axis=1)
     cu, cv = (fu[:, 0] + fu[:, 1] + fu[:, 2]) / 3.0, (fv[:, 0] + fv[:, 1] + fv[:, 2]) / 3.0
     reach = float(
         np.sqrt(max(np.max((fu[:, i] - cu) ** 2 + (fv[:, i] - cv) ** 2) for i in range(3)))
