@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 import trimesh
@@ -55,22 +56,35 @@ class BezierSurface:
         return self.control_points_of(np.arange(self.n_faces))
 
     @cached_property
-    def _cache(self) -> tuple[F64, NDArray[np.bool_]]:
+    def _cache(self) -> dict[str, Any]:
         # Filled as patches are asked for: planning evaluates the same faces several times
-        # (Newton iterations), and np.empty costs nothing until a page is written.
-        return np.empty((self.n_faces, 6, 3)), np.zeros(self.n_faces, dtype=bool)
+        # (Newton iterations). Rows are stored compactly in the order computed (row[f], -1
+        # for none), so a path over a large mesh touches memory for its own faces only.
+        return {
+            "row": np.full(self.n_faces, -1, dtype=np.int64),
+            "cp": np.empty((0, 6, 3)),
+            "used": 0,
+        }
 
     def control_points_of(self, face: ArrayLike) -> F64:
         """Return the control points (..., 6, 3) [m] of patches `face` (...)."""
         f = np.asarray(face, dtype=np.int64)
         flat = f.ravel()
-        cache, done = self._cache
-        need = flat[~done[flat]]
+        cache = self._cache
+        row = cache["row"]
+        need = flat[row[flat] < 0]
         if len(need):
             need = np.unique(need)
-            cache[need] = self._compute_control_points(need)
-            done[need] = True
-        return cache[flat].reshape(f.shape + (6, 3))
+            start = int(cache["used"])
+            store = cache["cp"]
+            if start + len(need) > len(store):  # grow by doubling: amortised O(1) per row
+                grown = np.empty((max(2 * len(store), start + len(need), 64), 6, 3))
+                grown[:start] = store[:start]
+                cache["cp"] = store = grown
+            store[start : start + len(need)] = self._compute_control_points(need)
+            row[need] = np.arange(start, start + len(need))
+            cache["used"] = start + len(need)
+        return cache["cp"][row[flat]].reshape(f.shape + (6, 3))
 
     def _compute_control_points(self, face: NDArray[np.int64]) -> F64:
         tri = self.faces[face]
