@@ -182,6 +182,13 @@ def _edge_control_points(vertices: F64, normals: F64, edges: NDArray[np.int64]) 
     return 0.5 * (p0 + p1) + 0.25 * length * (t0 - t1)
 
 
+def _row_norms(v: F64) -> F64:
+    """Return |v_i| (N,) of rows v (N, 3), from the columns: numpy reduces a short last axis
+    row by row, several times slower on large arrays."""
+    x, y, z = v[:, 0], v[:, 1], v[:, 2]
+    return np.sqrt(x * x + y * y + z * z)
+
+
 def area_weighted_normals(vertices: F64, faces: NDArray[np.int64]) -> F64:
     """Return unit vertex normals (V, 3): the sum of the adjacent faces' area vectors, normalised.
 
@@ -229,9 +236,9 @@ def fit_bezier_triangles(
             raise InputError(
                 f"vertex_normals must have shape {vertices.shape}, got {normals.shape}"
             )
-        norm = np.linalg.norm(normals, axis=1, keepdims=True)
-        normals = normals / np.where(norm > 0, norm, 1.0)
-    zero = ~np.any(normals != 0, axis=1)
+        length = _row_norms(normals)
+        normals = normals / np.where(length > 0, length, 1.0)[:, None]
+    zero = _row_norms(normals) == 0
     if zero.any() and zero[faces].any():
         raise InputError("vertex_normals contains zero-length normals at vertices used by faces")
     return BezierSurface(vertices=vertices, faces=faces, vertex_normals=normals)

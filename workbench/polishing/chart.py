@@ -201,11 +201,14 @@ def build_chart(mesh: trimesh.Trimesh) -> SurfaceChart:
     faces = np.asarray(mesh.faces, dtype=np.int64)
     if len(faces) == 0:
         raise MeshError("mesh has no faces")
-    origin = vertices.mean(axis=0)
-    # Products of (V, 3) arrays with 3-vectors are written out on contiguous rows: a BLAS
-    # call on a tall thin matrix is no faster, and its threads cost ms on a busy machine.
-    col = np.ascontiguousarray((vertices - origin).T)  # (3, V)
-    cov = np.array([[float(np.dot(col[i], col[j])) for j in range(3)] for i in range(3)])
+    # No BLAS on (V, 3) arrays: products with 3-vectors are written out on contiguous rows,
+    # the covariance is an einsum (numpy's own loop). BLAS is no faster on such thin
+    # matrices, and its threads (matmul, even np.dot of two rows) cost ms on a busy machine.
+    # (Reductions over the first axis of a (V, 3) array are also ~20x slower than over rows.)
+    col = np.ascontiguousarray(vertices.T)  # (3, V)
+    origin = col.mean(axis=1)
+    col -= origin[:, None]
+    cov = np.einsum("iv,jv->ij", col, col)
     _, vecs = np.linalg.eigh(cov)
     vt = vecs[:, ::-1].T  # principal axes, largest spread first
     e_u, e_v = vt[0], vt[1]
@@ -239,11 +242,10 @@ def build_chart(mesh: trimesh.Trimesh) -> SurfaceChart:
     for c in fc:
         for a, comp in zip(acc, (cx, cy, det), strict=True):
             a += np.bincount(c, comp, minlength=len(vertices))
-    normals = np.stack(
-        [acc[0] * axes[0, i] + acc[1] * axes[1, i] + acc[2] * axes[2, i] for i in range(3)], axis=1
-    )
-    nlen = np.linalg.norm(normals, axis=1, keepdims=True)
-    normals /= np.where(nlen > 0, nlen, 1.0)
+    ncol = [acc[0] * axes[0, i] + acc[1] * axes[1, i] + acc[2] * axes[2, i] for i in range(3)]
+    nlen = np.sqrt(ncol[0] * ncol[0] + ncol[1] * ncol[1] + ncol[2] * ncol[2])
+    nlen[nlen == 0] = 1.0
+    normals = np.stack([c / nlen for c in ncol], axis=1)
     uv = np.stack([pu, pv if axes[1] @ vt[1] > 0 else -pv], axis=1)
     cu, cv = (fu[0] + fu[1] + fu[2]) / 3.0, (fv[0] + fv[1] + fv[2]) / 3.0
     r2 = 0.0
