@@ -51,6 +51,12 @@ def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-
     assert sim.max_force_error < 4.0
     page.get_by_text(f"±{sim.max_force_error:.2f} N").first.wait_for(timeout=15_000)
     page.get_by_text("Contact force vs target [N]").first.wait_for(timeout=15_000)
+    # The orientation loop's error is plotted and summed up from the server's figure.
+    assert 0 < sim.max_orientation_error < np.arctan(2 * np.pi * 0.3 / 60)
+    page.get_by_text(f"within {np.degrees(sim.max_orientation_error):.2f}°").first.wait_for(
+        timeout=15_000
+    )
+    page.get_by_text("Orientation error [deg]").first.wait_for(timeout=15_000)
     # The robot runs the path on the shared timeline.
     motion = app.timeline.motion
     assert motion is not None and svc.last_motion is not None

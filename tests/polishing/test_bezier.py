@@ -8,6 +8,7 @@ import trimesh
 
 from workbench.errors import InputError, MeshError
 from workbench.polishing.bezier import fit_bezier_triangles
+from workbench.polishing.example_workpiece import make_panel
 
 RNG_BARY = np.random.default_rng(0).dirichlet([1.0, 1.0, 1.0], size=40)
 
@@ -139,3 +140,21 @@ def test_bad_input() -> None:
         surf.evaluate([0], [[0.5, 0.5]])
     with pytest.raises(InputError, match="face indices"):
         surf.evaluate([999], [[0.2, 0.3, 0.5]])
+
+
+def test_control_points_asked_for_in_pieces_equal_a_fresh_computation() -> None:
+    # The per-face cache (filled as patches are asked for, grown in pieces) returns exactly
+    # what computing the patches from scratch gives, in any order and with repeats.
+    mesh = make_panel(40, 30)
+    surface = fit_bezier_triangles(mesh)
+    fresh = fit_bezier_triangles(mesh)
+    rng = np.random.default_rng(0)
+    for n in (1, 7, 500, 3000):
+        f = rng.integers(0, len(mesh.faces), (n // 2 + 1, 2))
+        np.testing.assert_array_equal(
+            surface.control_points_of(f),
+            fresh._compute_control_points(f.ravel()).reshape(f.shape + (6, 3)),
+        )
+    np.testing.assert_array_equal(
+        surface.control_points, fresh._compute_control_points(np.arange(len(mesh.faces)))
+    )

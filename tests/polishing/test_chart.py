@@ -83,3 +83,35 @@ def test_folded_and_closed_meshes_are_refused() -> None:
     )
     chart = build_chart(half)  # a cap well above the equator is a height field
     assert len(chart.boundary) > 10
+
+
+def _uneven_mesh() -> trimesh.Trimesh:
+    """A Delaunay mesh of a dense cluster in a sparse field: faces of very different sizes."""
+    from scipy.spatial import Delaunay
+
+    rng = np.random.default_rng(3)
+    sparse = rng.uniform(-0.1, 0.1, (150, 2))
+    dense = 0.03 + rng.normal(0.0, 0.004, (3000, 2))
+    corners = np.array([[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1], [-0.1, 0.1]])
+    xy = np.vstack([corners, sparse, dense])
+    tri = Delaunay(xy).simplices
+    z = 0.2 * (xy[:, 0] ** 2 + xy[:, 1] ** 2)
+    return trimesh.Trimesh(np.column_stack([xy, z]), tri, process=False)
+
+
+def test_locate_on_an_uneven_mesh_matches_brute_force() -> None:
+    mesh = _uneven_mesh()
+    chart = build_chart(mesh)
+    rng = np.random.default_rng(1)
+    lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+    tri = chart.uv[chart.faces[:500]]  # points just inside the faces' corners
+    near_corner = (1 - 1e-9) * tri[:, 0] + 1e-9 * tri.mean(axis=1)
+    p = np.vstack([rng.uniform(lo - 0.01, hi + 0.01, (2000, 2)), near_corner])
+    cluster = chart.uv[np.argsort(np.linalg.norm(chart.uv - chart.uv[-1], axis=1))[:40]]
+    p = np.vstack([p, cluster.mean(axis=0) + rng.normal(0, 0.003, (1000, 2))])
+    face, bary = chart.locate(p)
+    ref = _brute_locate(chart.uv, chart.faces, p)
+    assert np.array_equal(face < 0, ref < 0)
+    ok = face >= 0
+    back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
+    np.testing.assert_allclose(back, p[ok], atol=1e-14)

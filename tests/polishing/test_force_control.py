@@ -2,6 +2,9 @@
 
 Twins: scipy.signal.dlsim of the exact discrete model of the z loop, and the continuous
 transfer function k (k_fp s + k_fi) / (s^2 + k k_fp s + k k_fi) (scipy.signal.step).
+Orientation loop (eq. 7): a constant tilt decays as exp(-t/tau), tau = (1 + kod)/kop; with
+latency and an I term it follows the loop's angle recurrence exactly; held along the planned
+normal the error is the form error's slope angle atan|h'(s)|.
 """
 
 from __future__ import annotations
@@ -21,6 +24,8 @@ from workbench.polishing.workpiece import load_workpiece
 PANEL = Path(__file__).resolve().parents[2] / "web_assets" / "workpieces" / "panel.stl"
 LINE = np.array([[0.0, 0.0, 0.0], [0.02, 0.0, 0.0]])
 UP = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
+DEFAULT = HybridForceParams()
+FORM_SLOPE = 2 * np.pi * DEFAULT.form_error / DEFAULT.form_wavelength  # amplitude of h'(s)
 IDEAL = HybridForceParams(
     latency=0.0,
     filter_cutoff=np.inf,
@@ -44,6 +49,9 @@ def test_r100_arc_tracking_error_below_0_3_mm() -> None:
     normals = (pts - centre) / 0.1
     res = simulate_hybrid_force_control(pts, normals, 20.0, 0.01, dwell=0.5)
     assert res.tracking_error.max() < 3e-4
+    # The orientation loop keeps the tool z along the actual (form-error tilted) normal.
+    slope = np.arctan(FORM_SLOPE)
+    assert res.orientation_error[res.t >= 0.5].max() < 0.1 * slope
     # The feed is held: the tool's angle about the centre advances at 10 mm/s on R100.
     moving = (res.t > 1.0) & (res.t < res.t[-1] - 0.5)
     rel = res.position[moving] - centre
@@ -68,6 +76,11 @@ def test_spiral_on_example_workpiece_stays_within_4_n() -> None:
     after = res.t >= 0.5
     assert np.all(np.abs(res.force[after] - 20.0) <= 4.0)
     assert res.tracking_error.max() < 3e-4
+    # The tool axis follows the actual surface normal far closer than the planned normal does.
+    held = simulate_hybrid_force_control(
+        pts, nrm, 20.0, 0.01, dwell=0.5, params=HybridForceParams(orientation_loop=False)
+    )
+    assert res.orientation_error[after].max() < 0.25 * held.orientation_error[after].max()
 
 
 def test_steady_state_and_discrete_model_twin() -> None:
@@ -93,6 +106,74 @@ def test_step_matches_continuous_transfer_function() -> None:
     np.testing.assert_allclose(res.force[: len(t)], 20.0 * y, atol=0.02 * 20.0)
 
 
+def _tilted(angle: float) -> np.ndarray:
+    """Return the tool z (into the surface, -z) tilted by `angle` [rad] about the y axis."""
+    return np.array([np.sin(angle), 0.0, -np.cos(angle)])
+
+
+def test_constant_tilt_decays_with_the_pd_time_constant() -> None:
+    # Flat surface, no form error: a 5 degree start tilt about y is the only orientation error.
+    th0 = np.radians(5.0)
+    params = dataclasses.replace(IDEAL, control_rate=5000.0, max_angular_speed=np.inf)
+    res = simulate_hybrid_force_control(
+        LINE, UP, 20.0, 0.01, params=params, dwell=0.5, tool_z0=_tilted(th0)
+    )
+    assert res.orientation_error[0] == pytest.approx(th0)
+    # Continuous time: theta' = -kop theta - kod theta'  =>  tau = (1 + kod) / kop.
+    tau = (1 + params.kod) / params.kop
+    early = res.t <= 5 * tau
+    np.testing.assert_allclose(
+        res.orientation_error[early], th0 * np.exp(-res.t[early] / tau), atol=0.005 * th0
+    )
+    # The tilt stays about y: the tool z stays in the xz plane and turns back to -z.
+    np.testing.assert_allclose(res.tool_z[:, 1], 0.0, atol=1e-15)
+    np.testing.assert_allclose(res.tool_z[-1], [0.0, 0.0, -1.0], atol=1e-9)
+
+
+def test_tilt_matches_the_discrete_recurrence_with_latency_and_integral() -> None:
+    # At 250 Hz with 2 cycles of latency and an I term the angle follows the loop's
+    # recurrence exactly (Rodrigues rotations about one axis add up angles exactly).
+    params = dataclasses.replace(IDEAL, latency=0.008, koi=150.0, kod=0.1, max_angular_speed=np.inf)
+    th0 = np.radians(3.0)
+    res = simulate_hybrid_force_control(
+        LINE, UP, 20.0, 0.01, params=params, dwell=1.0, tool_z0=_tilted(th0)
+    )
+    dt, lag = 1 / params.control_rate, 2
+    th = np.zeros(len(res.t))
+    th[0] = th0
+    u = np.zeros(len(res.t))
+    integ, prev = 0.0, th0
+    for k in range(len(th) - 1):
+        integ += th[k] * dt
+        u[k] = params.kop * th[k] + params.kod * (th[k] - prev) / dt + params.koi * integ
+        prev = th[k]
+        th[k + 1] = th[k] - dt * (u[k - lag] if k >= lag else 0.0)
+    # The reported error is the unsigned angle; the signed one may overshoot through zero.
+    np.testing.assert_allclose(res.orientation_error, np.abs(th), atol=1e-12)
+
+
+def test_angular_speed_limit_and_form_error_tilt() -> None:
+    # A 30 degree tilt with a 0.5 rad/s limit turns back at the limit: a straight ramp.
+    params = dataclasses.replace(IDEAL, max_angular_speed=0.5)
+    res = simulate_hybrid_force_control(
+        LINE, UP, 20.0, 0.01, params=params, dwell=1.0, tool_z0=_tilted(np.radians(30.0))
+    )
+    ramp = res.orientation_error > np.radians(10.0)
+    rate = -np.polyfit(res.t[ramp], res.orientation_error[ramp], 1)[0]
+    assert rate == pytest.approx(0.5, rel=1e-6)
+    assert np.abs(res.commanded_rate).max() <= 0.5 + 1e-12
+    # Held along the planned normal, the tool's error is the form error's slope angle exactly:
+    # the actual normal is n - h'(s) t normalised, |h'| <= 2 pi A / lambda.
+    held = dataclasses.replace(DEFAULT, orientation_loop=False)
+    line = np.array([[0.0, 0.0, 0.0], [0.2, 0.0, 0.0]])
+    res = simulate_hybrid_force_control(line, UP, 20.0, 0.05, params=held)
+    s = np.clip(0.05 * res.t, 0.0, 0.2)
+    phase = np.random.default_rng(DEFAULT.seed).uniform(0.0, 2 * np.pi)
+    slope = FORM_SLOPE * np.cos(2 * np.pi * s / DEFAULT.form_wavelength + phase)
+    np.testing.assert_allclose(res.orientation_error, np.arctan(np.abs(slope)), atol=1e-12)
+    np.testing.assert_allclose(res.tool_z, np.tile([0.0, 0.0, -1.0], (len(res.t), 1)), atol=0)
+
+
 def test_bad_input() -> None:
     with pytest.raises(InputError, match="target_force"):
         simulate_hybrid_force_control(LINE, UP, 0.0, 0.01)
@@ -104,3 +185,17 @@ def test_bad_input() -> None:
         simulate_hybrid_force_control(LINE, UP[:1], 20.0, 0.01)
     with pytest.raises(InputError, match="points"):
         simulate_hybrid_force_control(LINE[:1], UP[:1], 20.0, 0.01)
+    with pytest.raises(InputError, match="tool_z0"):
+        simulate_hybrid_force_control(LINE, UP, 20.0, 0.01, tool_z0=[0.0, 0.0])
+    with pytest.raises(InputError, match="unstable"):
+        simulate_hybrid_force_control(LINE, UP, 20.0, 0.01, params=HybridForceParams(kop=600.0))
+    with pytest.raises(InputError, match="kop and params.koi"):
+        simulate_hybrid_force_control(LINE, UP, 20.0, 0.01, params=HybridForceParams(kop=0.0))
+    with pytest.raises(InputError, match="max_angular_speed"):
+        simulate_hybrid_force_control(
+            LINE, UP, 20.0, 0.01, params=HybridForceParams(max_angular_speed=-1.0)
+        )
+    # Off, the orientation gains are not used (nor checked).
+    simulate_hybrid_force_control(
+        LINE, UP, 20.0, 0.01, params=HybridForceParams(kop=600.0, orientation_loop=False)
+    )

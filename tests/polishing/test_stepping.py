@@ -1,11 +1,18 @@
-"""Chord stepping against a closed form: points on a circle a fixed chord apart."""
+"""Chord stepping against a closed form (points on a circle a fixed chord apart), the Newton
+chain against a point-by-point root search (brentq), and the dense walk where it must run."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+import trimesh
+from scipy.optimize import brentq
 
-from workbench.polishing.stepping import chord_parameters, densify
+from workbench.polishing.bezier import fit_bezier_triangles
+from workbench.polishing.chart import build_chart
+from workbench.polishing.example_workpiece import make_panel
+from workbench.polishing.stepping import chord_parameters, chord_step, chord_step_dense, densify
+from workbench.polishing.toolpath import _spiral_uv, spiral_rings
 
 
 def test_chord_parameters_on_a_circle() -> None:
@@ -32,3 +39,63 @@ def test_densify_keeps_vertices_and_bounds_segments() -> None:
     assert np.linalg.norm(np.diff(d, axis=0), axis=1).max() <= 0.001 + 1e-15
     for v in uv:
         assert np.min(np.linalg.norm(d - v, axis=1)) == pytest.approx(0.0, abs=1e-15)
+
+
+def _lift_one(chart, surface, uv: np.ndarray, t: float) -> np.ndarray:
+    """Twin helper: the polyline point at fractional vertex index t, lifted (one at a time)."""
+    j = min(int(t), len(uv) - 2)
+    p = uv[j] + (t - j) * (uv[j + 1] - uv[j])
+    f, b = chart.locate(p[None])
+    return surface.evaluate(f, b)[0]
+
+
+def test_newton_chain_matches_a_point_by_point_root_search() -> None:
+    # Twin: each next point found alone, by bracketing along the lifted polyline and brentq.
+    mesh = make_panel(60, 45)
+    chart = build_chart(mesh)
+    surface = fit_bezier_triangles(mesh, vertex_normals=chart.vertex_normals)
+    rings = spiral_rings(chart, 0.02, 0.02 / 8)
+    uv = _spiral_uv(rings, 0.02 / 8)[:120]  # a part of the path, through a lap join
+    step = 0.003
+    pts, nrm, face, bary = chord_step(chart, surface, uv, step)
+    ref = [_lift_one(chart, surface, uv, 0.0)]
+    t0 = 0.0
+    end = len(uv) - 1.0
+    while True:
+
+        def g(t: float) -> float:
+            return float(np.linalg.norm(_lift_one(chart, surface, uv, t) - ref[-1])) - step
+
+        hi = t0
+        while hi < end and g(hi) < 0:
+            hi = min(np.floor(hi) + 1.0, end)
+        if g(hi) < 0:
+            break
+        t0 = brentq(g, max(np.floor(hi) - 1.0, t0), hi, xtol=1e-14)
+        ref.append(_lift_one(chart, surface, uv, t0))
+    last = _lift_one(chart, surface, uv, end)
+    if np.linalg.norm(last - ref[-1]) > 1e-3 * step:
+        ref.append(last)
+    ref = np.asarray(ref)
+    assert pts.shape == ref.shape
+    np.testing.assert_allclose(pts, ref, atol=1e-9)
+    chords = np.linalg.norm(np.diff(pts, axis=0), axis=1)
+    np.testing.assert_allclose(chords[:-1], step, atol=1e-9 * step)
+    np.testing.assert_allclose(surface.evaluate(face, bary), pts, atol=0)
+    np.testing.assert_allclose(nrm, surface.normal(face, bary), atol=1e-12)
+
+
+def test_a_polyline_over_a_hole_takes_the_dense_walk() -> None:
+    mesh = make_panel(40, 30)
+    c = mesh.vertices[mesh.faces].mean(axis=1)
+    keep = np.hypot(c[:, 0], c[:, 1]) > 0.03  # a round hole in the middle
+    holed = trimesh.Trimesh(mesh.vertices, mesh.faces[keep], process=False)
+    holed.remove_unreferenced_vertices()
+    chart = build_chart(holed)
+    surface = fit_bezier_triangles(holed, vertex_normals=chart.vertex_normals)
+    uv = densify(np.array([[-0.1, 0.0], [0.1, 0.0]]), 0.001)  # straight across the hole
+    got = chord_step(chart, surface, uv, 0.002)
+    want = chord_step_dense(chart, surface, uv, 0.002)
+    for a, b in zip(got, want, strict=True):
+        np.testing.assert_array_equal(a, b)
+    assert (chart.locate(uv)[0] < 0).any()  # the line does cross the hole

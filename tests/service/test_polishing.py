@@ -79,6 +79,12 @@ def test_other_section_errors_name_their_fields() -> None:
         ({"feed": 300}, "polishing"),
         ({"tool_radius": -1}, "polishing.tool_radius"),
         ({"contact": {"stiffness": 0}}, "polishing.contact.stiffness"),
+        ({"controller": {"orientation": {"kp": 0}}}, "polishing.controller.orientation"),
+        (
+            {"controller": {"orientation": {"max_speed": 0}}},
+            "polishing.controller.orientation.max_speed",
+        ),
+        ({"controller": {"orientation": {"gain": 1}}}, "polishing.controller.orientation.gain"),
         ({"colour": 1}, "polishing.colour"),
     ):
         with pytest.raises(ProjectError) as err:
@@ -249,10 +255,31 @@ def test_simulation_is_the_controller_with_the_files_parameters(planned: Workben
     )
     np.testing.assert_array_equal(sim.result.force, twin.force)
     np.testing.assert_array_equal(sim.result.tracking_error, twin.tracking_error)
+    np.testing.assert_array_equal(sim.result.orientation_error, twin.orientation_error)
     window = (twin.t >= 0.5) & (twin.t <= 0.5 + pp.length / 0.040)
     assert sim.max_force_error == pytest.approx(np.abs(twin.force[window] - 20).max())
     assert sim.max_force_error < 4.0  # the seed's ±4 N over the spiral
     assert sim.max_tracking_error < 1.5e-3
+    assert sim.max_orientation_error == pytest.approx(twin.orientation_error[window].max())
+    # The loop keeps the tool closer to the actual normal than the form error's tilt.
+    assert sim.max_orientation_error < np.arctan(2 * np.pi * 0.3 / 60)
+
+
+def test_orientation_loop_gains_come_from_the_file_in_si() -> None:
+    ctrl = _data()["polishing"]["controller"]
+    ctrl["orientation"] = {"kp": 25, "kd": 0.1, "ki": 30, "max_speed": 45}
+    params = _wb(controller=ctrl).polishing.params()
+    assert (params.orientation_loop, params.kop, params.kod, params.koi) == (True, 25, 0.1, 30)
+    assert params.max_angular_speed == pytest.approx(np.pi / 4)  # 45 deg/s
+    ctrl["orientation"] = {"enabled": False, "kp": 0}  # off: no gain needed
+    assert _wb(controller=ctrl).polishing.params().orientation_loop is False
+    # Gains that destabilise the loop at 250 Hz with 8 ms latency are refused by name.
+    ctrl["orientation"] = {"kp": 200}
+    wb = _wb(controller=ctrl)
+    with pytest.raises(
+        InputError, match=r"polishing\.controller\.orientation: .*unstable.*lower kp"
+    ):
+        wb.polishing.simulate()
 
 
 def test_parameters_survive_save_and_reopen(tmp_path: Path) -> None:

@@ -326,6 +326,16 @@ class PolishingPanel:
                 scales={"x": uplot.Scale(time=False)},
                 aspect=1.6,
             ),
+            g.add_uplot(
+                data=(t, np.degrees(r.orientation_error[::k])),
+                series=(
+                    x,
+                    uplot.Series(label="tool axis vs normal [deg]", stroke="#9467bd", width=1.5),
+                ),
+                title="Orientation error [deg]",
+                scales={"x": uplot.Scale(time=False)},
+                aspect=1.6,
+            ),
         ]
 
     def _on_download(self, event: viser.GuiEvent) -> None:

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 import trimesh
@@ -54,17 +55,45 @@ class BezierSurface:
         """Return the control points (F, 6, 3) [m] of every patch."""
         return self.control_points_of(np.arange(self.n_faces))
 
+    @cached_property
+    def _cache(self) -> dict[str, Any]:
+        # Filled as patches are asked for: planning evaluates the same faces several times
+        # (Newton iterations). Rows are stored compactly in the order computed (row[f], -1
+        # for none), so a path over a large mesh touches memory for its own faces only.
+        return {
+            "row": np.full(self.n_faces, -1, dtype=np.int64),
+            "cp": np.empty((0, 6, 3)),
+            "used": 0,
+        }
+
     def control_points_of(self, face: ArrayLike) -> F64:
         """Return the control points (..., 6, 3) [m] of patches `face` (...)."""
         f = np.asarray(face, dtype=np.int64)
-        tri = self.faces[f.ravel()]
+        flat = f.ravel()
+        cache = self._cache
+        row = cache["row"]
+        need = flat[row[flat] < 0]
+        if len(need):
+            need = np.unique(need)
+            start = int(cache["used"])
+            store = cache["cp"]
+            if start + len(need) > len(store):  # grow by doubling: amortised O(1) per row
+                grown = np.empty((max(2 * len(store), start + len(need), 64), 6, 3))
+                grown[:start] = store[:start]
+                cache["cp"] = store = grown
+            store[start : start + len(need)] = self._compute_control_points(need)
+            row[need] = np.arange(start, start + len(need))
+            cache["used"] = start + len(need)
+        return cache["cp"][row[flat]].reshape(f.shape + (6, 3))
+
+    def _compute_control_points(self, face: NDArray[np.int64]) -> F64:
+        tri = self.faces[face]
         # Each face edge is computed from its endpoints in sorted order, so the two faces of
         # an edge get bit-identical control points (C0) without a sort over all edges.
         edges = np.sort(tri[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
         edge_cp = _edge_control_points(self.vertices, self.vertex_normals, edges).reshape(-1, 3, 3)
         # face edges are (A,B) -> P110, (B,C) -> P011, (C,A) -> P101.
-        cp = np.concatenate([self.vertices[tri], edge_cp], axis=1)
-        return cp.reshape(f.shape + (6, 3))
+        return np.concatenate([self.vertices[tri], edge_cp], axis=1)
 
     def _check(self, face: ArrayLike, bary: ArrayLike) -> tuple[NDArray[np.int64], F64]:
         f = np.asarray(face, dtype=np.int64)
@@ -92,6 +121,16 @@ class BezierSurface:
     def normal(self, face: ArrayLike, bary: ArrayLike) -> F64:
         """Return unit surface normals (..., 3), oriented like the face winding (A, B, C)."""
         return _unit_normal(*self.derivatives(face, bary))
+
+    def evaluate_with_derivatives(
+        self, face: ArrayLike, bary: ArrayLike
+    ) -> tuple[F64, F64, F64, F64]:
+        """Return (points, dP/du, dP/dv, unit normals) (..., 3) at `bary` of patches `face`,
+        sharing one lookup (derivatives with w = 1 - u - v eliminated, as `derivatives`)."""
+        f, b = self._check(face, bary)
+        cp = self.control_points_of(f)
+        d_du, d_dv = _derivatives(cp, b)
+        return _point(cp, b), d_du, d_dv, _unit_normal(d_du, d_dv)
 
     def evaluate_with_normal(self, face: ArrayLike, bary: ArrayLike) -> tuple[F64, F64]:
         """Return (points, unit normals) (..., 3) at `bary` of patches `face`, sharing one lookup."""
@@ -143,6 +182,13 @@ def _edge_control_points(vertices: F64, normals: F64, edges: NDArray[np.int64]) 
     return 0.5 * (p0 + p1) + 0.25 * length * (t0 - t1)
 
 
+def _row_norms(v: F64) -> F64:
+    """Return |v_i| (N,) of rows v (N, 3), from the columns: numpy reduces a short last axis
+    row by row, several times slower on large arrays."""
+    x, y, z = v[:, 0], v[:, 1], v[:, 2]
+    return np.sqrt(x * x + y * y + z * z)
+
+
 def area_weighted_normals(vertices: F64, faces: NDArray[np.int64]) -> F64:
     """Return unit vertex normals (V, 3): the sum of the adjacent faces' area vectors, normalised.
 
@@ -190,9 +236,9 @@ def fit_bezier_triangles(
             raise InputError(
                 f"vertex_normals must have shape {vertices.shape}, got {normals.shape}"
             )
-        norm = np.linalg.norm(normals, axis=1, keepdims=True)
-        normals = normals / np.where(norm > 0, norm, 1.0)
-    zero = ~np.any(normals != 0, axis=1)
+        length = _row_norms(normals)
+        normals = normals / np.where(length > 0, length, 1.0)[:, None]
+    zero = _row_norms(normals) == 0
     if zero.any() and zero[faces].any():
         raise InputError("vertex_normals contains zero-length normals at vertices used by faces")
     return BezierSurface(vertices=vertices, faces=faces, vertex_normals=normals)

@@ -1,25 +1,49 @@
-"""Force/position hybrid control of a polishing tool along a path, simulated (seed 004, eqs. 5-6).
+"""Force/position hybrid control of a polishing tool along a path, simulated (seed 004, eqs. 5-7).
 
-At a fixed control rate the controller sends a Cartesian velocity (as a `speedl`-style
-interface takes it), built from two loops split along the tool z axis z = -n (n the
-surface normal at the reference point, pointing to the tool side):
+At a fixed control rate the controller sends a Cartesian twist (as a `speedl`-style
+interface takes it: a TCP velocity and an angular velocity), built from three loops. The
+velocity is split along the tool's actual z axis z (unit, into the surface):
 
     tangent plane (position, PD):  v_p = P_t (dX_d + k_pp e + k_pd de/dt),   e = X_d - X,
     tool z (force, PI):            v_f = k_fp e_F + k_fi ∫ e_F dt,          e_F = F_d - F_meas,
     command:                       v = v_p + (v_f + dX_d.z) z,
 
 with P_t = I - z zᵀ and dX_d the reference velocity (feed along the path); dX_d.z feeds the
-path's own motion along the tool axis forward. The robot executes the command after a
-latency, within speed and acceleration limits. The contact is a spring-damper of stiffness
-k and damping c along n against the actual surface (the nominal path plus a sinusoidal
-form error); friction mu F deflects the tool tip against the feed through a lateral
-compliance; the force sensor adds Gaussian noise and is low-pass filtered (first order).
-The tool axis is taken to follow the path normal (eq. 7's orientation loop is not simulated).
+path's own motion along the tool axis forward (v_f > 0 pushes into the surface).
+
+Orientation (eq. 7, derived again): the tool z should lie along -n_s, n_s the normal of the
+actual surface at the contact. The rotation taking the current axis z to the target z_d is
+about the unit axis (z × z_d)/|z × z_d| by the angle θ = atan2(|z × z_d|, z·z_d); its
+rotation vector e_R = θ (z × z_d)/|z × z_d| is the orientation error. (The seed's
+f_01 = ||n_0 × n_1||₂ ω_01 multiplies a scalar norm by a rate; an axis needs the *unit*
+cross product, and the error to drive to zero is the angle, not sin θ = |z × z_d|.) The
+angular velocity command is eq. 5's position law carried over to rotations (the seed's
+PID on the rotation error):
+
+    ω = ω_d + k_op e_R + k_od de_R/dt + k_oi ∫ e_R dt,
+
+ω_d the rotation rate of the planned normal along the path (fed forward). For a tilt about
+a fixed axis with no latency or limits the angle obeys, per cycle Δt,
+θ_{k+1} = θ_k - Δt (k_op θ_k + k_od (θ_k - θ_{k-1})/Δt + k_oi Δt Σ θ_j): with k_oi = 0 a
+constant tilt decays as exp(-t/τ), τ = (1 + k_od)/k_op in continuous time. The target
+normal comes from the contact (the force/torque sensor, friction compensated): the actual
+normal through the sensor's first-order low-pass. The command is applied after the
+latency, its magnitude limited to `max_angular_speed`; the tool rotates about the TCP.
+
+The robot executes the commands after a latency, within speed and acceleration limits.
+The contact is a spring-damper of stiffness k and damping c along the actual normal n_s
+against the actual surface (the nominal path plus a sinusoidal form error h(s) along the
+normal, which tilts the normal by -h'(s) along the path's tangent); friction mu F deflects
+the tool tip against the feed through a lateral compliance; the force sensor adds Gaussian
+noise and is low-pass filtered (first order). With `orientation_loop` off the tool axis is
+held along the planned normal (the form error's tilt is then all orientation error).
 
 Along z the loop is linear: with no noise, latency, filter, damping or limits, F/F_d =
 k (k_fp s + k_fi) / (s² + k k_fp s + k k_fi) in continuous time. The defaults (k = 5000 N/m,
 k_fp = 0.006 (m/s)/N, k_fi = 0.05 (m/s)/(N s)) give s² + 30 s + 250: poles -15 ± 5i rad/s,
 damping ratio 0.95, with margin for the 8 ms latency, the 40 Hz filter and the 4 m/s² limit.
+The orientation defaults (k_op = 40 /s, k_od = 0.05, k_oi = 0) give τ = 26 ms; with the
+2-cycle latency at 250 Hz the largest discrete pole is |z| = 0.74 (`orientation_loop_poles`).
 """
 
 from __future__ import annotations
@@ -31,6 +55,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
+from workbench.polishing.orientation import (
+    orientation_loop_poles,
+    rotate3,
+    rotation_vector3,
+    rotation_vectors,
+)
 
 F64 = NDArray[np.float64]
 
@@ -58,22 +88,34 @@ class HybridForceParams:
     max_force: float = 100.0  # [N] the tool's force limit; targets above it are refused
     normal_feedforward: bool = True  # feed the path's own motion along z forward
     seed: int = 0  # noise generator seed
+    orientation_loop: bool = True  # close eq. 7's loop; off: tool z held along the planned normal
+    kop: float = 40.0  # [1/s] orientation loop P gain
+    kod: float = 0.05  # [-] orientation loop D gain (on the error rate)
+    koi: float = 0.0  # [1/s²] orientation loop I gain
+    max_angular_speed: float = math.pi / 2  # [rad/s] limit on the commanded angular velocity
 
 
 @dataclass(frozen=True)
 class ForceControlResult:
     """Simulation record, one row per control cycle. t (K,) [s]; force (K,) true contact force
     [N]; force_measured (K,) filtered sensor force [N]; tracking_error (K,) tangential
-    distance of the tool tip from the reference [m]; position (K, 3) tool tip [m];
-    commanded_velocity (K, 3) [m/s]; reference (K, 3) reference point on the path [m]."""
+    distance of the tool tip from the reference [m]; orientation_error (K,) angle between the
+    tool z and the actual surface normal (into the surface) [rad]; position (K, 3) tool tip
+    [m]; tool_z (K, 3) unit tool axis; commanded_velocity (K, 3) [m/s]; commanded_rate
+    (K, 3) angular velocity command [rad/s]; reference (K, 3) reference point on the path
+    [m]; surface_normal (K, 3) unit normal of the actual surface at the reference."""
 
     t: F64
     force: F64
     force_measured: F64
     tracking_error: F64
+    orientation_error: F64
     position: F64
+    tool_z: F64
     commanded_velocity: F64
+    commanded_rate: F64
     reference: F64
+    surface_normal: F64
     target_force: float
     params: HybridForceParams
 
@@ -110,7 +152,48 @@ def _check(
         )
     if params.control_rate <= 0 or params.stiffness <= 0:
         raise InputError("params.control_rate and params.stiffness must be > 0")
+    if params.orientation_loop:
+        _check_orientation_gains(params)
     return p, n / nn[:, None]
+
+
+def _check_orientation_gains(prm: HybridForceParams) -> None:
+    for name, val in (("kop", prm.kop), ("kod", prm.kod), ("koi", prm.koi)):
+        if not math.isfinite(val) or val < 0:
+            raise InputError(f"params.{name} must be finite and >= 0, got {val!r}")
+    if prm.kop == 0 and prm.koi == 0:
+        raise InputError(
+            "params.kop and params.koi are both 0: the orientation loop would not correct a "
+            "tilt; give kop > 0 or koi > 0, or set orientation_loop=False"
+        )
+    if not prm.max_angular_speed > 0:  # inf: no limit
+        raise InputError(
+            f"params.max_angular_speed must be > 0 rad/s, got {prm.max_angular_speed!r}"
+        )
+    dt = 1.0 / prm.control_rate
+    lag = int(round(prm.latency / dt))
+    rho = float(np.abs(orientation_loop_poles(prm.kop, prm.kod, prm.koi, dt, lag)).max())
+    if rho >= 1.0:
+        raise InputError(
+            f"orientation gains kop = {prm.kop:g} /s, kod = {prm.kod:g}, koi = {prm.koi:g} /s² "
+            f"make the loop unstable at {prm.control_rate:g} Hz with {lag} cycles of latency "
+            f"(largest pole |z| = {rho:.3f}); lower kop or kod"
+        )
+
+
+def _actual_normals(p: F64, s_path: F64, s_ref: F64, nrm: F64, slope: F64) -> F64:
+    """Return the unit normals (K, 3) of the actual surface, the nominal one plus a form error
+    h(s) along the normal: tilted by -h'(s) along the path's unit tangent."""
+    d = np.diff(p, axis=0)
+    dl = np.linalg.norm(d, axis=1, keepdims=True)
+    d = d / np.where(dl > 0, dl, 1.0)
+    tang = np.vstack([d[:1], d[:-1] + d[1:], d[-1:]])  # mean direction of the adjacent segments
+    tan_k = np.stack([np.interp(s_ref, s_path, tang[:, i]) for i in range(3)], axis=1)
+    tan_k -= np.sum(tan_k * nrm, axis=1, keepdims=True) * nrm
+    tl = np.linalg.norm(tan_k, axis=1, keepdims=True)
+    tan_k /= np.where(tl > 0, tl, 1.0)
+    out = nrm - slope[:, None] * tan_k
+    return out / np.linalg.norm(out, axis=1, keepdims=True)
 
 
 def simulate_hybrid_force_control(
@@ -121,16 +204,27 @@ def simulate_hybrid_force_control(
     *,
     params: HybridForceParams | None = None,
     dwell: float = 0.0,
+    tool_z0: ArrayLike | None = None,
 ) -> ForceControlResult:
     """Return the `ForceControlResult` of running the path under hybrid force/position control.
 
     points (N, 3) [m] on the nominal surface, normals (N, 3) pointing to the tool side;
     target_force [N] (> 0, <= params.max_force); feed_speed [m/s] along the path; dwell [s]
-    at the first point before the feed starts. The tool starts touching the surface
-    (zero force) at points[0]. Raises `InputError` for bad shapes or values.
+    at the first point before the feed starts; tool_z0 (3,) the tool axis at the start
+    (unit after normalising; default -normals[0], along the planned normal). The tool starts
+    touching the surface (zero force) at points[0]. Raises `InputError` for bad shapes or
+    values, and for orientation gains that make the loop unstable at the rate and latency.
     """
     prm = params or HybridForceParams()
     p, n = _check(points, normals, target_force, feed_speed, prm)
+    if tool_z0 is None:
+        z_start = -n[0]
+    else:
+        z_start = np.asarray(tool_z0, dtype=float).reshape(-1)
+        zn = float(np.linalg.norm(z_start)) if z_start.shape == (3,) else 0.0
+        if not (math.isfinite(zn) and zn > 1e-9):
+            raise InputError(f"tool_z0 must be a finite non-zero 3-vector, got {tool_z0!r}")
+        z_start = z_start / zn
     dt = 1.0 / prm.control_rate
     seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
     s_path = np.concatenate([[0.0], np.cumsum(seg)])
@@ -142,14 +236,21 @@ def simulate_hybrid_force_control(
     nrm = np.stack([np.interp(s_ref, s_path, n[:, i]) for i in range(3)], axis=1)
     nrm /= np.linalg.norm(nrm, axis=1, keepdims=True)
     vel_ref = np.diff(ref, axis=0, append=ref[-1:]) / dt
-    # The actual surface: nominal plus a form error along the normal.
+    # Feed-forward rotation rate of the planned normal (eq. 7's omega_01 along the path).
+    w_ref = rotation_vectors(nrm, np.vstack([nrm[1:], nrm[-1:]])) / dt
+    # The actual surface: nominal plus a form error h(s) along the normal, tilting it by -h'(s).
     phase = np.random.default_rng(prm.seed).uniform(0.0, 2 * np.pi)
-    form = (
-        prm.form_error * np.sin(2 * np.pi * s_ref / prm.form_wavelength + phase)
-        if prm.form_error
-        else 0 * s_ref
-    )
+    if prm.form_error:
+        arg = 2 * np.pi * s_ref / prm.form_wavelength + phase
+        form = prm.form_error * np.sin(arg)
+        slope = prm.form_error * 2 * np.pi / prm.form_wavelength * np.cos(arg)
+    else:
+        form = slope = 0 * s_ref
     surf = ref + form[:, None] * nrm
+    # The position loop's reference is the path pressed D = F_d/k into the surface (the seed's
+    # offset trajectory): the tool's depth is then no position error seen through a tilt.
+    ref_cmd = ref - (float(target_force) / prm.stiffness) * nrm
+    n_act = _actual_normals(p, s_path, s_ref, nrm, slope) if prm.form_error else nrm
     noise = (
         np.random.default_rng(prm.seed + 1).normal(0.0, prm.noise_std, k_steps)
         if prm.noise_std
@@ -166,25 +267,40 @@ def simulate_hybrid_force_control(
     lag = int(round(prm.latency / dt))
     k, c, fdes = prm.stiffness, prm.damping, float(target_force)
     a_max = prm.max_accel * dt
+    loop = prm.orientation_loop
+    kop, kod, koi, w_max = prm.kop, prm.kod, prm.koi, prm.max_angular_speed
 
-    R, N, V, S, FD, NZ = (a.tolist() for a in (ref, nrm, vel_ref, surf, feed_dir, noise))
+    R, N, V, S, FD, NZ = (a.tolist() for a in (ref_cmd, nrm, vel_ref, surf, feed_dir, noise))
+    NA, WR = n_act.tolist(), w_ref.tolist()
     force = [0.0] * k_steps
     fmeas = [0.0] * k_steps
     err = [0.0] * k_steps
+    oerr = [0.0] * k_steps
     pos = [(0.0, 0.0, 0.0)] * k_steps
+    zs = [(0.0, 0.0, 0.0)] * k_steps
     vcmd = [(0.0, 0.0, 0.0)] * k_steps
+    wcmd = [(0.0, 0.0, 0.0)] * k_steps
     x0, x1, x2 = p[0].tolist()
+    z0, z1, z2 = z_start.tolist()  # tool axis, into the surface
+    m0, m1, m2 = NA[0]  # the controller's (filtered) estimate of the surface normal
     queue = [(0.0, 0.0, 0.0)] * lag  # commands wait `lag` cycles before they move the robot
+    wqueue = [(0.0, 0.0, 0.0)] * lag
     integ = 0.0
     ff = 0.0
     d_prev = 0.0
     ep = (0.0, 0.0, 0.0)
     c_prev = (0.0, 0.0, 0.0)
+    er_prev: tuple[float, float, float] | None = None
+    ri0 = ri1 = ri2 = 0.0
     for i in range(k_steps):
         nx, ny, nz = N[i]
+        ax_, ay_, az_ = NA[i]
         sx, sy, sz = S[i]
-        # Contact along n: penetration of the tool below the actual surface.
-        d = nx * (sx - x0) + ny * (sy - x1) + nz * (sz - x2)
+        if not loop:
+            z0, z1, z2 = -nx, -ny, -nz  # the tool axis held along the planned normal
+        zs[i] = (z0, z1, z2)
+        # Contact along the actual normal: penetration of the tool below the actual surface.
+        d = ax_ * (sx - x0) + ay_ * (sy - x1) + az_ * (sz - x2)
         ddot = (d - d_prev) / dt if i else 0.0
         d_prev = d
         f = max(k * d + c * ddot, 0.0) if d > 0 else 0.0
@@ -199,23 +315,31 @@ def simulate_hybrid_force_control(
         rx, ry, rz = R[i]
         ex, ey, ez = rx - tx, ry - ty, rz - tz
         en = ex * nx + ey * ny + ez * nz
-        ex, ey, ez = ex - en * nx, ey - en * ny, ez - en * nz  # tangential error
-        err[i] = math.sqrt(ex * ex + ey * ey + ez * ez)
-        # Position PD in the tangent plane (eq. 5, first row).
+        gx, gy, gz = ex - en * nx, ey - en * ny, ez - en * nz  # tangential to the path
+        err[i] = math.sqrt(gx * gx + gy * gy + gz * gz)
+        oerr[i] = math.atan2(
+            math.sqrt(
+                (z1 * az_ - z2 * ay_) ** 2 + (z2 * ax_ - z0 * az_) ** 2 + (z0 * ay_ - z1 * ax_) ** 2
+            ),
+            -(z0 * ax_ + z1 * ay_ + z2 * az_),
+        )
+        # Position PD in the tool's xy plane (eq. 5, first row), with the tool z = (z0, z1, z2).
+        ez_ = ex * z0 + ey * z1 + ez * z2
+        ex, ey, ez = ex - ez_ * z0, ey - ez_ * z1, ez - ez_ * z2
         vx, vy, vz = V[i]
         px = vx + prm.kpp * ex + prm.kpd * (ex - ep[0]) / dt
         py = vy + prm.kpp * ey + prm.kpd * (ey - ep[1]) / dt
         pz = vz + prm.kpp * ez + prm.kpd * (ez - ep[2]) / dt
         ep = (ex, ey, ez)
-        pn = px * nx + py * ny + pz * nz
-        px, py, pz = px - pn * nx, py - pn * ny, pz - pn * nz
-        # Force PI along the tool z = -n (eq. 5, second row).
+        pn = px * z0 + py * z1 + pz * z2
+        px, py, pz = px - pn * z0, py - pn * z1, pz - pn * z2
+        # Force PI along the tool z (eq. 5, second row).
         ef = fdes - ff
         integ += ef * dt
         vf = prm.kfp * ef + prm.kfi * integ
         if prm.normal_feedforward:
-            vf += -(vx * nx + vy * ny + vz * nz)
-        cx, cy, cz = px - vf * nx, py - vf * ny, pz - vf * nz
+            vf += vx * z0 + vy * z1 + vz * z2
+        cx, cy, cz = px + vf * z0, py + vf * z1, pz + vf * z2
         sp = math.sqrt(cx * cx + cy * cy + cz * cz)
         if sp > prm.max_speed:
             cx, cy, cz = cx * prm.max_speed / sp, cy * prm.max_speed / sp, cz * prm.max_speed / sp
@@ -230,16 +354,42 @@ def simulate_hybrid_force_control(
         c_prev = (cx, cy, cz)
         vcmd[i] = (cx, cy, cz)
         queue.append((cx, cy, cz))
-        ax, ay, az = queue.pop(0)
-        x0, x1, x2 = x0 + ax * dt, x1 + ay * dt, x2 + az * dt
+        qx, qy, qz = queue.pop(0)
+        x0, x1, x2 = x0 + qx * dt, x1 + qy * dt, x2 + qz * dt
+        if loop:
+            # Orientation PID on the rotation vector from the tool z to the measured normal (eq. 7).
+            m0 += alpha * (ax_ - m0)
+            m1 += alpha * (ay_ - m1)
+            m2 += alpha * (az_ - m2)
+            mn = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
+            r0, r1, r2, _ = rotation_vector3(z0, z1, z2, -m0 / mn, -m1 / mn, -m2 / mn)
+            if er_prev is None:
+                er_prev = (r0, r1, r2)  # no derivative kick on the first cycle
+            ri0, ri1, ri2 = ri0 + r0 * dt, ri1 + r1 * dt, ri2 + r2 * dt
+            wx0, wy0, wz0 = WR[i]
+            w0 = wx0 + kop * r0 + kod * (r0 - er_prev[0]) / dt + koi * ri0
+            w1 = wy0 + kop * r1 + kod * (r1 - er_prev[1]) / dt + koi * ri1
+            w2 = wz0 + kop * r2 + kod * (r2 - er_prev[2]) / dt + koi * ri2
+            er_prev = (r0, r1, r2)
+            wn = math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
+            if wn > w_max:
+                w0, w1, w2 = w0 * w_max / wn, w1 * w_max / wn, w2 * w_max / wn
+            wcmd[i] = (w0, w1, w2)
+            wqueue.append((w0, w1, w2))
+            a0, a1, a2 = wqueue.pop(0)
+            z0, z1, z2 = rotate3(z0, z1, z2, a0 * dt, a1 * dt, a2 * dt)
     return ForceControlResult(
         t=t,
         force=np.asarray(force),
         force_measured=np.asarray(fmeas),
         tracking_error=np.asarray(err),
+        orientation_error=np.asarray(oerr),
         position=np.asarray(pos),
+        tool_z=np.asarray(zs),
         commanded_velocity=np.asarray(vcmd),
+        commanded_rate=np.asarray(wcmd),
         reference=ref,
+        surface_normal=n_act,
         target_force=fdes,
         params=prm,
     )

@@ -2,6 +2,14 @@
 
 Each next point is the one on the surface curve whose straight-line (chord) distance from
 the last is `step` (seed 004, Fig. 4).
+
+The chain of chord equations |X(t_k) - X(t_{k-1})| = S (X the lifted polyline, t a
+fractional vertex index) is solved for all points at once by Newton's method: linearised,
+α_k δ_k - β_k δ_{k-1} = S - c_k with α_k = e_k·X'(t_k), β_k = e_k·X'(t_{k-1}) (e_k the unit
+chord) is a first-order linear recurrence, δ_k = H_k Σ_{j<=k} (r_j/α_j)/H_j with
+H_k = Π_{i<=k} β_i/α_i, solved with cumulative products and sums. Only the stepped points
+are lifted (a few iterations), not a dense copy of the path; where that cannot be done
+(a polyline vertex off the mesh, no convergence) the dense walk (`chord_parameters`) runs.
 """
 
 from __future__ import annotations
@@ -57,8 +65,9 @@ def chord_parameters(p: F64, step: float) -> F64:
         qa = ex * ex + ey * ey + ez * ez
         qb = 2.0 * (fx * ex + fy * ey + fz * ez)
         qc = fx * fx + fy * fy + fz * fz - s2
-        tau = (-qb + max(qb * qb - 4.0 * qa * qc, 0.0) ** 0.5) / (2.0 * qa) if qa > 0 else 1.0
-        tau = min(max(tau, 0.0), 1.0)
+        disc = qb * qb - 4.0 * qa * qc
+        tau = (-qb + (disc if disc > 0.0 else 0.0) ** 0.5) / (2.0 * qa) if qa > 0 else 1.0
+        tau = 0.0 if tau < 0.0 else (1.0 if tau > 1.0 else tau)
         pos = base + tau * span
         cx, cy, cz = ax + tau * ex, ay + tau * ey, az + tau * ez
         out.append(pos)
@@ -79,6 +88,106 @@ def densify(uv: F64, ds: float) -> F64:
 
 
 def chord_step(
+    chart: SurfaceChart, surface: BezierSurface, uv: F64, step: float
+) -> tuple[F64, F64, I64, F64]:
+    """Return (points (N,3), normals (N,3), face (N,), bary (N,3)) along the chart polyline
+    `uv` (M, 2), lifted onto the surface, consecutive points `step` [m] apart (chord).
+
+    Newton on the whole chain (module docstring); consecutive chords equal `step` to 1e-9
+    of it, the last one may be shorter. Falls back to `chord_step_dense` for a polyline
+    that leaves the mesh (inner holes: those points are dropped there) or does not converge.
+    """
+    out = _chord_step_newton(chart, surface, np.asarray(uv, dtype=float), float(step))
+    return out if out is not None else chord_step_dense(chart, surface, uv, step)
+
+
+def _lift_at(
+    chart: SurfaceChart, surface: BezierSurface, uv: F64, t: F64, hint: I64
+) -> tuple[F64, F64, I64, F64, F64]:
+    """Return (X (K,3), dX/dt (K,3), face, bary, normals) at fractional vertex indices t (K,)."""
+    j = np.minimum(t.astype(np.int64), len(uv) - 2)
+    f = (t - j)[:, None]
+    duv = uv[j + 1] - uv[j]
+    face, bary = chart.locate_near(uv[j] + f * duv, hint)
+    ok = face >= 0
+    fc = np.where(ok, face, 0)
+    x, d_du, d_dv, nrm = surface.evaluate_with_derivatives(
+        fc, bary if ok.all() else np.where(ok[:, None], bary, 1 / 3)
+    )
+    rate = chart.bary_rate(fc, duv)
+    dx = d_du * rate[:, :1] + d_dv * rate[:, 1:]
+    return x, dx, face, bary, nrm
+
+
+def _chord_step_newton(
+    chart: SurfaceChart, surface: BezierSurface, uv: F64, step: float, *, max_iter: int = 12
+) -> tuple[F64, F64, I64, F64] | None:
+    """Return `chord_step`'s result by Newton on the chord chain, or None where it cannot."""
+    if uv.ndim != 2 or len(uv) < 2:
+        return None
+    seg = np.linalg.norm(np.diff(uv, axis=0), axis=1)
+    uv = uv[np.concatenate([[True], seg > 0])]  # repeated vertices give no direction
+    m = len(uv)
+    if m < 2:
+        return None
+    face_v, bary_v = chart.locate(uv)
+    if (face_v < 0).any():
+        return None
+    pv = surface.evaluate(face_v, bary_v)
+    end = float(m - 1)
+    # First guess: chord steps on the polyline of the lifted vertices (exact at its corners,
+    # off by its sagitta between them), with spare points at the end for the chain to grow into.
+    t = chord_parameters(pv, step)
+    t = np.concatenate([t[t < end], np.full(3, end)])
+    hint = face_v[np.minimum(t.astype(np.int64), m - 2)]
+    tol = 1e-9 * step
+    for _ in range(max_iter):
+        x, dx, face, bary, nrm = _lift_at(chart, surface, uv, t, hint)
+        if (face < 0).any():
+            return None
+        hint = face
+        # Points from the first one at the end on only carry the end: not part of the chain.
+        inside = t[1:] < end
+        n_in = int(np.argmin(inside)) if not inside.all() else len(inside)
+        if n_in == len(inside):
+            return None  # the guess fell short of the end (not expected: chords <= arcs)
+        d = x[1:] - x[:-1]
+        c = np.linalg.norm(d, axis=1)
+        if not (c[: n_in + 1] > 0).all():
+            return None
+        e = d / np.where(c > 0, c, 1.0)[:, None]
+        r = step - c
+        done = np.abs(r[:n_in]).max(initial=0.0) <= tol and r[n_in] >= -tol
+        if done:
+            break
+        # The chain: chords 1 .. n_in + 1 (the last one reaching the first point at the end).
+        q = n_in + 1
+        alpha = np.sum(e[:q] * dx[1 : q + 1], axis=1)
+        beta = np.sum(e[:q] * dx[:q], axis=1)
+        if not (alpha > 0).all():
+            return None
+        cum = np.cumprod(beta / alpha)
+        delta = cum * np.cumsum((r[:q] / alpha) / cum)
+        if not np.isfinite(delta).all():
+            return None
+        t[1 : q + 1] = np.minimum(t[1 : q + 1] + delta, end)
+        if not (np.diff(t[: n_in + 2]) > 0).all():
+            return None
+    else:
+        return None
+    keep = n_in + 1  # t[0 .. n_in] lie before the end, chords exactly `step`
+    pts, nrm_k, face_k, bary_k = x[:keep], nrm[:keep], face[:keep], bary[:keep]
+    if c[n_in] > 1e-3 * step:
+        # The end itself, closer than `step` to the last point (r[n_in] >= 0).
+        x_e, _, f_e, b_e, n_e = _lift_at(
+            chart, surface, uv, np.array([end]), face[n_in + 1 : n_in + 2]
+        )
+        pts, nrm_k = np.vstack([pts, x_e]), np.vstack([nrm_k, n_e])
+        face_k, bary_k = np.concatenate([face_k, f_e]), np.vstack([bary_k, b_e])
+    return pts, nrm_k, face_k, bary_k
+
+
+def chord_step_dense(
     chart: SurfaceChart, surface: BezierSurface, uv: F64, step: float
 ) -> tuple[F64, F64, I64, F64]:
     """Return surface points along the chart polyline `uv` (M, 2) spaced by chord `step` [m].

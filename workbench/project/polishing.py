@@ -16,8 +16,31 @@ from workbench.project.common import Pose, Positive, StrictModel
 NonNegative = Annotated[float, Field(ge=0)]
 
 
+class OrientationLoopSpec(StrictModel):
+    """The tool-axis orientation loop (seed 004, eq. 7): PID on the tilt of the tool z from
+    the surface normal, ω = ω_d + kp e + kd de/dt + ki ∫ e dt (e the tilt's rotation vector).
+
+    A constant tilt decays with the time constant (1 + kd)/kp when ki = 0. The gains are
+    rates per angle (unit-free in deg or rad); the speed limit is in deg/s."""
+
+    enabled: bool = True  # off: the tool z is held along the planned normal
+    kp: NonNegative = 40.0  # [1/s]
+    kd: NonNegative = 0.05  # [-] on the error rate
+    ki: NonNegative = 0.0  # [1/s²]
+    max_speed: Positive = 90.0  # [deg/s] limit on the commanded angular velocity
+
+    @model_validator(mode="after")
+    def _some_gain(self) -> OrientationLoopSpec:
+        if self.enabled and self.kp == 0 and self.ki == 0:
+            raise ValueError(
+                "kp and ki are both 0: the orientation loop would not correct a tilt; give "
+                "kp > 0 [1/s] or ki > 0 [1/s²], or set enabled to false"
+            )
+        return self
+
+
 class ForceControllerSpec(StrictModel):
-    """Gains of the force/position hybrid controller (seed 004, eqs. 5-6) and robot limits."""
+    """Gains of the force/position hybrid controller (seed 004, eqs. 5-7) and robot limits."""
 
     control_rate: Positive = 250.0  # [Hz] controller and speedl command rate
     latency: NonNegative = 8.0  # [ms] from command to motion
@@ -27,6 +50,7 @@ class ForceControllerSpec(StrictModel):
     kfi: NonNegative = 50.0  # [(mm/s)/(N s)] force loop I gain
     max_speed: Positive = 250.0  # [mm/s] speed limit of the commanded TCP velocity
     max_accel: Positive = 4000.0  # [mm/s²] limit on the change of the command
+    orientation: OrientationLoopSpec = Field(default_factory=OrientationLoopSpec)
 
     @model_validator(mode="after")
     def _some_force_gain(self) -> ForceControllerSpec:

@@ -7,6 +7,7 @@ paths, TCP poses and the robot motion are all world coordinates.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,6 +38,7 @@ from workbench.polishing import (
 )
 from workbench.polishing.bezier import BezierSurface
 from workbench.polishing.chart import SurfaceChart
+from workbench.polishing.orientation import orientation_loop_poles
 from workbench.polishing.robot_path import solve_path_ik, tool_frames
 from workbench.project.polishing import PolishingSpec
 from workbench.service.convert import MM, pose_to_matrix
@@ -86,9 +88,11 @@ class PolishingPath:
 class PolishingSimulation:
     """Force/position hybrid control along the path: the record and its figures.
 
-    `result.t` [s], `result.force` [N], `result.tracking_error` [m]; `max_force_error` [N]
-    is the largest |F - F_target| after `settle_time` [s] (the dwell, when the force has
-    built up) until the feed ends; `max_tracking_error` [m] over the whole run.
+    `result.t` [s], `result.force` [N], `result.tracking_error` [m],
+    `result.orientation_error` [rad]; `max_force_error` [N] is the largest |F - F_target|
+    and `max_orientation_error` [rad] the largest tilt of the tool z from the actual surface
+    normal, both after `settle_time` [s] (the dwell, when the force has built up) until the
+    feed ends; `max_tracking_error` [m] over the whole run.
     """
 
     result: ForceControlResult
@@ -97,13 +101,15 @@ class PolishingSimulation:
     settle_time: float
     max_force_error: float
     max_tracking_error: float
+    max_orientation_error: float
 
     def summary(self) -> str:
         """Return a one-line human summary."""
         return (
             f"target {self.target_force:g} N at {self.feed / MM:g} mm/s over "
             f"{self.result.t[-1]:.1f} s: force within ±{self.max_force_error:.2f} N after "
-            f"{self.settle_time:g} s, tracking error ≤ {self.max_tracking_error / MM:.3f} mm"
+            f"{self.settle_time:g} s, tracking error ≤ {self.max_tracking_error / MM:.3f} mm, "
+            f"tool axis within {np.degrees(self.max_orientation_error):.2f}° of the normal"
         )
 
 
@@ -267,9 +273,23 @@ class PolishingService:
                 )
 
     def params(self) -> HybridForceParams:
-        """Return the controller gains and contact model of the section in SI."""
+        """Return the controller gains and contact model of the section in SI.
+
+        Raises `InputError` naming `polishing.controller.orientation` for orientation gains
+        that make that loop unstable at the control rate and latency."""
         s = self.spec
         c, k = s.controller, s.contact
+        o = c.orientation
+        if o.enabled:
+            dt = 1.0 / c.control_rate
+            lag = int(round(c.latency * 1e-3 / dt))
+            rho = float(np.abs(orientation_loop_poles(o.kp, o.kd, o.ki, dt, lag)).max())
+            if rho >= 1.0:
+                raise InputError(
+                    f"polishing.controller.orientation: kp = {o.kp:g} /s, kd = {o.kd:g}, "
+                    f"ki = {o.ki:g} /s² make the loop unstable at {c.control_rate:g} Hz with "
+                    f"{c.latency:g} ms latency (largest pole |z| = {rho:.3f}); lower kp or kd"
+                )
         return HybridForceParams(
             control_rate=c.control_rate,
             latency=c.latency * 1e-3,
@@ -289,6 +309,11 @@ class PolishingService:
             max_accel=c.max_accel * MM,
             max_force=s.max_force,
             seed=k.seed,
+            orientation_loop=c.orientation.enabled,
+            kop=c.orientation.kp,
+            kod=c.orientation.kd,
+            koi=c.orientation.ki,
+            max_angular_speed=math.radians(c.orientation.max_speed),
         )
 
     # -- path ------------------------------------------------------------------------------
@@ -437,11 +462,13 @@ class PolishingService:
                 dwell=spec.dwell,
             )
         except InputError as exc:
-            raise InputError(f"polishing: {exc}") from None
+            where = "polishing.controller.orientation" if "orientation" in str(exc) else "polishing"
+            raise InputError(f"{where}: {exc}") from None
         settle = spec.dwell if spec.dwell > 0 else min(0.5, 0.1 * float(res.t[-1]))
         feed_end = spec.dwell + pp.length / feed
         window = (res.t >= settle) & (res.t <= feed_end)
         ferr = float(np.max(np.abs(res.force[window] - spec.force))) if window.any() else np.nan
+        oerr = float(np.max(res.orientation_error[window])) if window.any() else np.nan
         sim = PolishingSimulation(
             result=res,
             target_force=float(spec.force),
@@ -449,6 +476,7 @@ class PolishingService:
             settle_time=float(settle),
             max_force_error=ferr,
             max_tracking_error=float(res.tracking_error.max()),
+            max_orientation_error=oerr,
         )
         self.last_simulation = sim
         report(1.0, "done")
