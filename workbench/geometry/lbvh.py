@@ -275,10 +275,11 @@ class LBVH:
         # Coordinate-major (3, W, 8): per-axis work on flat (pairs, 8) arrays is 2-3x faster
         # in numpy than broadcasting over a trailing axis of length 3. Slot -1 reads the
         # appended inverted box.
-        wide = np.take(self._box, binary, axis=0)  # (W, 8, 6) rows [lo, -hi]
-        lo = np.ascontiguousarray(wide[:, :, :3].transpose(2, 0, 1))
-        hi = np.negative(wide[:, :, 3:].transpose(2, 0, 1), order="C")
-        return child, lo, hi
+        out = np.empty((6,) + binary.shape)
+        for k in range(6):  # one 1-D gather per coordinate, straight into place
+            np.take(np.ascontiguousarray(self._box[:, k]), binary, out=out[k])
+        np.negative(out[3:], out=out[3:])
+        return child, out[:3], out[3:]
 
     # ------------------------------------------------------------------ queries
     def closest_points(self, points: ArrayLike) -> tuple[FloatArray, FloatArray, IntArray]:
