@@ -356,7 +356,18 @@ class LBVH:
         Rays are ``origins[k] + t * directions[k]`` with t > 0 (any t if `full_line`);
         `directions` is (3,) or (M,3), not necessarily unit. A hit is flagged degenerate when
         it lies within 1e-9 (barycentric) of a triangle edge or the ray lies in a triangle's
-        plane: parity counts through such hits are not trustworthy.
+        plane: parity counts through such hits are not trustworthy (and t of a ray lying in
+        the plane is meaningless).
+        """
+        q, t, degen, _ = self.ray_hit_leaves(origins, directions, full_line=full_line)
+        return q, t, degen
+
+    def ray_hit_leaves(
+        self, origins: ArrayLike, directions: ArrayLike, *, full_line: bool = False
+    ) -> tuple[IntArray, FloatArray, NDArray[np.bool_], IntArray]:
+        """Return `ray_hits`' (query ids, t, degenerate flags) and the leaves hit (H,).
+
+        A leaf k is the triangle (a[k], b[k], c[k]) in Morton order.
         """
         o = np.asarray(origins, dtype=float)
         if o.ndim != 2 or o.shape[1] != 3 or not np.all(np.isfinite(o)):
@@ -369,7 +380,7 @@ class LBVH:
         t_lo = -np.inf if full_line else 0.0
         child, wlo, whi = self.wide_child, self.wide_lo, self.wide_hi
         q, w = np.arange(len(o)), np.zeros(len(o), dtype=np.int64)
-        out_q, out_t, out_g = [], [], []
+        out_q, out_t, out_g, out_l = [], [], [], []
         while q.size:
             tmin = np.full((len(q), 8), t_lo)
             tmax = np.full((len(q), 8), np.inf)
@@ -391,11 +402,18 @@ class LBVH:
                 out_q.append(ql[keep])
                 out_t.append(t[keep])
                 out_g.append(degen[keep])
+                out_l.append(tl[keep])
             rows, cols = np.nonzero(hit & (refs >= 0))
             q, w = q[rows], refs[rows, cols]
         if not out_q:
-            return np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0, dtype=bool)
-        return np.concatenate(out_q), np.concatenate(out_t), np.concatenate(out_g)
+            e = np.zeros(0, dtype=np.int64)
+            return e, np.zeros(0), np.zeros(0, dtype=bool), e
+        return (
+            np.concatenate(out_q),
+            np.concatenate(out_t),
+            np.concatenate(out_g),
+            np.concatenate(out_l),
+        )
 
     def _moller_trumbore(
         self, o: FloatArray, d: FloatArray, tri: IntArray, full_line: bool

@@ -244,7 +244,16 @@ def _skewed_inside(lbvh: LBVH, points: FloatArray) -> NDArray[np.bool_]:
 def _row_parity(
     lbvh: LBVH, ij: IntArray, axis: int, origin: FloatArray, hf: float
 ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
-    """Return (odd crossings beyond each corner along +axis, untrusted) for corners ij (P,3)."""
+    """Return (inside by ray parity along `axis`, trusted) for fine corners ij (P,3).
+
+    One full-line ray per grid row. Hits are compared with the corners of their own row
+    exactly (sorted by (row, t), not by one float key mixing row and position, which
+    loses ~row * 1e-16 of resolution and misplaced corners within ~1e-12 of a face).
+    A degenerate hit (near an edge, or the row lying in a triangle's plane) makes parity
+    untrustworthy only on its own side: a corner past every degenerate triangle's extent
+    along the row counts the regular hits after it, a corner before all of them counts
+    those before it; only corners between are untrusted.
+    """
     other = [k for k in range(3) if k != axis]
     rows, row_of = np.unique(ij[:, other[0]] * (1 << 31) + ij[:, other[1]], return_inverse=True)
     row_of = row_of.reshape(-1)
@@ -254,17 +263,49 @@ def _row_parity(
     starts[:, other[1]] = origin[other[1]] + (rows & ((1 << 31) - 1)) * hf
     direction = np.zeros(3)
     direction[axis] = 1.0
-    hq, ht, hdeg = lbvh.ray_hits(starts, direction, full_line=True)
-    shift = abs(float(ht.min(initial=0.0))) + hf
-    span = (ij[:, axis].max() + 2) * hf + float(ht.max(initial=0.0)) + shift
-    hit_key = np.sort(hq + (ht + shift) / (2 * span))
-    corner_key = row_of + (ij[:, axis] * hf + shift) / (2 * span)
-    beyond = np.searchsorted(hit_key, row_of + 1.0) - np.searchsorted(
-        hit_key, corner_key, side="right"
+    hq, ht, hdeg, hleaf = lbvh.ray_hit_leaves(starts, direction, full_line=True)
+    # Untrusted stretch of each row: the extents along `axis` of its degenerate triangles.
+    margin = 1e-9 * lbvh.scale
+    dl = hleaf[hdeg]
+    ta, tb, tc = lbvh.a[dl, axis], lbvh.b[dl, axis], lbvh.c[dl, axis]
+    bad_lo = np.full(len(rows), np.inf)
+    bad_hi = np.full(len(rows), -np.inf)
+    np.minimum.at(bad_lo, hq[hdeg], np.minimum(np.minimum(ta, tb), tc) - origin[axis] - margin)
+    np.maximum.at(bad_hi, hq[hdeg], np.maximum(np.maximum(ta, tb), tc) - origin[axis] + margin)
+    rq, rt = hq[~hdeg], ht[~hdeg]
+    xc = ij[:, axis] * hf  # corner position along the row, in the rays' t
+    # Merge hits and corners by (row, t); at equal t a hit sorts before the corner.
+    n_hit = len(rq)
+    order = np.lexsort(
+        (
+            np.concatenate([np.zeros(n_hit, np.int8), np.ones(len(xc), np.int8)]),
+            np.concatenate([rt, xc]),
+            np.concatenate([rq, row_of]),
+        )
     )
-    bad_rows = np.zeros(len(rows), dtype=bool)
-    bad_rows[hq[hdeg]] = True
-    return beyond % 2 == 1, bad_rows[row_of]
+    hits_upto = np.cumsum(order < n_hit)
+    pos = np.empty(len(order), dtype=np.int64)
+    pos[order] = np.arange(len(order))
+    total = np.bincount(rq, minlength=len(rows))
+    before = hits_upto[pos[n_hit:]] - (np.cumsum(total) - total)[row_of]
+    after = total[row_of] - before
+    trust_after = xc > bad_hi[row_of]
+    trust_before = xc < bad_lo[row_of]
+    odd = np.where(trust_after, after, before) % 2 == 1
+    return odd, trust_after | trust_before
+
+
+def _pieces(lbvh: LBVH, max_edge: float) -> FloatArray:
+    """Return the mesh's triangles (T', 3, 3), the long ones split to edges <= max_edge [m]."""
+    tri = np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1)
+    edge2 = np.maximum(
+        np.maximum(((lbvh.b - lbvh.a) ** 2).sum(axis=1), ((lbvh.c - lbvh.b) ** 2).sum(axis=1)),
+        ((lbvh.a - lbvh.c) ** 2).sum(axis=1),
+    )
+    long = edge2 > max_edge * max_edge
+    if not long.any():
+        return tri
+    return np.concatenate([tri[~long], split_long_triangles(tri[long], max_edge)])
 
 
 def _scatter_d2(
@@ -282,23 +323,21 @@ def _scatter_d2(
     triangle of a corner at distance d <= w is among them, so the minimum is exact there.
     Long triangles are first split (same surface) so that no AABB enumerates too many cells.
     """
-    tri = (
-        split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
-        if pieces is None
-        else pieces
-    )
+    tri = _pieces(lbvh, 4.0 * hf) if pieces is None else pieces
     best = np.full(len(ukey), np.inf)
     nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     length = np.linalg.norm(nrm, axis=1, keepdims=True)
     normal = np.where(length > 0, nrm / np.where(length > 0, length, 1.0), 0.0)  # zero: no cut
     top = n_fine - 1
-    imin = np.clip(np.ceil((tri.min(axis=1) - w - origin) / hf).astype(np.int64), 0, top)
-    imax = np.clip(np.floor((tri.max(axis=1) + w - origin) / hf).astype(np.int64), 0, top)
+    tlo, thi = tri.min(axis=1), tri.max(axis=1)
+    imin = np.clip(np.ceil((tlo - w - origin) / hf).astype(np.int64), 0, top)
+    imax = np.clip(np.floor((thi + w - origin) / hf).astype(np.int64), 0, top)
     span = np.maximum(imax - imin + 1, 0)
     count = span.prod(axis=1)
     imin0, imin1, imin2 = (np.ascontiguousarray(imin[:, k]) for k in range(3))
     span1, span2 = np.ascontiguousarray(span[:, 1]), np.ascontiguousarray(span[:, 2])
     ta, tb, tc = (np.ascontiguousarray(tri[:, k].T) for k in range(3))
+    blo, bhi = np.ascontiguousarray(tlo.T), np.ascontiguousarray(thi.T)
     nrows = np.ascontiguousarray(normal.T)
     csum = np.cumsum(count)
     bounds = np.searchsorted(csum, np.arange(1, csum[-1] // 1_000_000 + 2) * 1_000_000)
@@ -308,20 +347,28 @@ def _scatter_d2(
         tid = np.repeat(np.arange(start, end), cnt)
         k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
         s1, s2 = span1[tid], span2[tid]
-        gi = imin0[tid] + k // (s1 * s2)
-        gj = imin1[tid] + (k // s2) % s1
-        gk = imin2[tid] + k % s2
-        key = (gi * n_fine[1] + gj) * n_fine[2] + gk
-        pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
-        hit = np.nonzero(ukey[pos] == key)[0]
-        tid, pos = tid[hit], pos[hit]
-        p = np.stack([origin[0] + gi[hit] * hf, origin[1] + gj[hit] * hf, origin[2] + gk[hit] * hf])
+        g = np.stack(
+            [imin0[tid] + k // (s1 * s2), imin1[tid] + (k // s2) % s1, imin2[tid] + k % s2]
+        )
+        p = origin[:, None] + g * hf
+        # Cheap cuts first, each a lower bound of the distance: the triangle's box (the
+        # enumeration used it grown by w as a cube, whose corners are farther than w) ...
+        dd = np.zeros(len(tid))
+        for ax in range(3):
+            e = np.maximum(np.maximum(blo[ax, tid] - p[ax], p[ax] - bhi[ax, tid]), 0.0)
+            dd += e * e
+        near = np.nonzero(dd <= w * w)[0]
+        tid, p, g = tid[near], p[:, near], g[:, near]
+        # ... and the triangle's plane.
         a = ta[:, tid]
-        # Cheap cut first: farther than w from the triangle's plane means farther than w.
         nr = nrows[:, tid]
         h = (p[0] - a[0]) * nr[0] + (p[1] - a[1]) * nr[1] + (p[2] - a[2]) * nr[2]
         near = np.nonzero(np.abs(h) <= w)[0]
-        tid, pos, p, a = tid[near], pos[near], p[:, near], a[:, near]
+        tid, p, g, a = tid[near], p[:, near], g[:, near], a[:, near]
+        key = (g[0] * n_fine[1] + g[1]) * n_fine[2] + g[2]
+        pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
+        hit = np.nonzero(ukey[pos] == key)[0]  # only corners of marked blocks
+        tid, pos, p, a = tid[hit], pos[hit], p[:, hit], a[:, hit]
         d2 = point_triangle_distance2_rows(p, a, tb[:, tid], tc[:, tid])
         np.minimum.at(best, pos, d2)
         start = int(end)
@@ -402,7 +449,7 @@ def _build(
     # pairs per corner (about the cost of one LBVH query); else to 2 fine cells + LBVH.
     # Counted on the split pieces the pass enumerates: a large triangle's pieces, each grown
     # by W, visit far more corners than the triangle's own grown box.
-    pieces = split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+    pieces = _pieces(lbvh, 4.0 * hf)
     ext = np.ptp(pieces, axis=1)
     pairs_full = float(np.prod((ext + 2 * trunc) / hf + 1.0, axis=1).sum())
     w_s = trunc if pairs_full <= 12.0 * len(pts) else min(trunc, 2.0 * hf)
@@ -422,10 +469,11 @@ def _build(
     sign_far = np.ones(dims, dtype=np.float64)
     if watertight:
         progress(0.8, "signs by ray parity along x and y")
-        in_x, bad_x = _row_parity(lbvh, uij, 0, origin, hf)
-        in_y, bad_y = _row_parity(lbvh, uij, 1, origin, hf)
+        in_x, ok_x = _row_parity(lbvh, uij, 0, origin, hf)
+        in_y, ok_y = _row_parity(lbvh, uij, 1, origin, hf)
         inside = in_x
-        redo = np.nonzero(bad_x | bad_y | (in_x != in_y))[0]
+        # Corners exactly on the surface need no sign (often rows lying in a face plane).
+        redo = np.nonzero((~ok_x | ~ok_y | (in_x != in_y)) & (dist > 0))[0]
         if redo.size:
             inside[redo] = _skewed_inside(lbvh, pts[redo])
         dist = np.where(inside, -dist, dist)
