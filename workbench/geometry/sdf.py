@@ -53,8 +53,13 @@ _SKEWED = np.array([[1.0, 0.0123, 0.0071], [0.0093, 1.0, 0.0137], [0.0111, 0.005
 
 def is_watertight(vertices: FloatArray, faces: IntArray) -> bool:
     """Return True when every edge (vertices merged by position) is shared by exactly two faces."""
-    _, inv = np.unique(vertices, axis=0, return_inverse=True)
-    f = inv.reshape(-1)[faces]
+    order = np.lexsort((vertices[:, 2], vertices[:, 1], vertices[:, 0]))
+    sv = vertices[order]
+    new = np.ones(len(sv), dtype=bool)
+    new[1:] = np.any(sv[1:] != sv[:-1], axis=1)
+    inv = np.empty(len(sv), dtype=np.int64)
+    inv[order] = np.cumsum(new) - 1  # the same id for vertices at the same position
+    f = inv[faces]
     e = np.sort(np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]]), axis=1)
     e = e[e[:, 0] != e[:, 1]]
     _, counts = np.unique(e[:, 0] * (len(vertices) + 1) + e[:, 1], return_counts=True)
@@ -233,6 +238,22 @@ class SparseSDF:
         return out
 
 
+def _unique_keys(key: IntArray, size: int | None) -> tuple[IntArray, IntArray]:
+    """Return (sorted unique keys, index of each key among them) for keys in [0, size).
+
+    A mark-and-count pass over [0, size) when that range is small (size None: the
+    largest key + 1), else np.unique; the same result either way.
+    """
+    top = int(key.max()) + 1 if size is None else size
+    if top > max(1 << 22, 8 * len(key)):
+        u, inv = np.unique(key, return_inverse=True)
+        return u, inv.reshape(-1)
+    mark = np.zeros(top, dtype=bool)
+    mark[key] = True
+    rank = np.cumsum(mark) - 1
+    return np.flatnonzero(mark), rank[key]
+
+
 def _skewed_inside(lbvh: LBVH, points: FloatArray) -> NDArray[np.bool_]:
     """Return inside flags by a majority of three skewed-ray parities (robust fallback)."""
     votes = np.zeros(len(points), dtype=np.int64)
@@ -255,12 +276,12 @@ def _row_parity(
     those before it; only corners between are untrusted.
     """
     other = [k for k in range(3) if k != axis]
-    rows, row_of = np.unique(ij[:, other[0]] * (1 << 31) + ij[:, other[1]], return_inverse=True)
-    row_of = row_of.reshape(-1)
+    width = int(ij[:, other[1]].max()) + 1
+    rows, row_of = _unique_keys(ij[:, other[0]] * width + ij[:, other[1]], None)
     starts = np.empty((len(rows), 3))
     starts[:, axis] = origin[axis]
-    starts[:, other[0]] = origin[other[0]] + (rows >> 31) * hf
-    starts[:, other[1]] = origin[other[1]] + (rows & ((1 << 31) - 1)) * hf
+    starts[:, other[0]] = origin[other[0]] + (rows // width) * hf
+    starts[:, other[1]] = origin[other[1]] + (rows % width) * hf
     direction = np.zeros(3)
     direction[axis] = 1.0
     hq, ht, hdeg, hleaf = lbvh.ray_hit_leaves(starts, direction, full_line=True)
@@ -325,9 +346,6 @@ def _scatter_d2(
     """
     tri = _pieces(lbvh, 4.0 * hf) if pieces is None else pieces
     best = np.full(len(ukey), np.inf)
-    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    length = np.linalg.norm(nrm, axis=1, keepdims=True)
-    normal = np.where(length > 0, nrm / np.where(length > 0, length, 1.0), 0.0)  # zero: no cut
     top = n_fine - 1
     tlo, thi = tri.min(axis=1), tri.max(axis=1)
     imin = np.clip(np.ceil((tlo - w - origin) / hf).astype(np.int64), 0, top)
@@ -335,10 +353,16 @@ def _scatter_d2(
     span = np.maximum(imax - imin + 1, 0)
     count = span.prod(axis=1)
     imin0, imin1, imin2 = (np.ascontiguousarray(imin[:, k]) for k in range(3))
-    span1, span2 = np.ascontiguousarray(span[:, 1]), np.ascontiguousarray(span[:, 2])
+    span2 = np.ascontiguousarray(span[:, 2])
+    span12 = span[:, 1] * span2
     ta, tb, tc = (np.ascontiguousarray(tri[:, k].T) for k in range(3))
     blo, bhi = np.ascontiguousarray(tlo.T), np.ascontiguousarray(thi.T)
-    nrows = np.ascontiguousarray(normal.T)
+    # Corner key -> row of ukey: a dense table when the fine grid is small enough (one
+    # gather per pair), else a binary search. -1: not a corner of a marked block.
+    dense = int(np.prod(n_fine)) <= max(1 << 22, 4 * len(ukey))
+    if dense:
+        table = np.full(int(np.prod(n_fine)), -1, dtype=np.int64)
+        table[ukey] = np.arange(len(ukey))
     csum = np.cumsum(count)
     bounds = np.searchsorted(csum, np.arange(1, csum[-1] // 1_000_000 + 2) * 1_000_000)
     start = 0
@@ -346,30 +370,32 @@ def _scatter_d2(
         cnt = count[start:end]
         tid = np.repeat(np.arange(start, end), cnt)
         k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-        s1, s2 = span1[tid], span2[tid]
-        g = np.stack(
-            [imin0[tid] + k // (s1 * s2), imin1[tid] + (k // s2) % s1, imin2[tid] + k % s2]
-        )
-        p = origin[:, None] + g * hf
-        # Cheap cuts first, each a lower bound of the distance: the triangle's box (the
-        # enumeration used it grown by w as a cube, whose corners are farther than w) ...
+        s2, s12 = span2.take(tid), span12.take(tid)
+        rem = k % s12
+        g0 = imin0.take(tid) + k // s12
+        g1 = imin1.take(tid) + rem // s2
+        g2 = imin2.take(tid) + rem % s2
+        p0, p1, p2 = origin[0] + g0 * hf, origin[1] + g1 * hf, origin[2] + g2 * hf
+        # Cheap cut first: the distance to the triangle's box (the enumeration took that
+        # box grown by w as a cube, whose corners lie farther than w) bounds it below.
         dd = np.zeros(len(tid))
-        for ax in range(3):
-            e = np.maximum(np.maximum(blo[ax, tid] - p[ax], p[ax] - bhi[ax, tid]), 0.0)
+        for ax, pk in enumerate((p0, p1, p2)):
+            e = np.maximum(np.maximum(blo[ax].take(tid) - pk, pk - bhi[ax].take(tid)), 0.0)
             dd += e * e
         near = np.nonzero(dd <= w * w)[0]
-        tid, p, g = tid[near], p[:, near], g[:, near]
-        # ... and the triangle's plane.
-        a = ta[:, tid]
-        nr = nrows[:, tid]
-        h = (p[0] - a[0]) * nr[0] + (p[1] - a[1]) * nr[1] + (p[2] - a[2]) * nr[2]
-        near = np.nonzero(np.abs(h) <= w)[0]
-        tid, p, g, a = tid[near], p[:, near], g[:, near], a[:, near]
-        key = (g[0] * n_fine[1] + g[1]) * n_fine[2] + g[2]
-        pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
-        hit = np.nonzero(ukey[pos] == key)[0]  # only corners of marked blocks
-        tid, pos, p, a = tid[hit], pos[hit], p[:, hit], a[:, hit]
-        d2 = point_triangle_distance2_rows(p, a, tb[:, tid], tc[:, tid])
+        tid = tid.take(near)
+        key = (g0.take(near) * n_fine[1] + g1.take(near)) * n_fine[2] + g2.take(near)
+        if dense:
+            pos = table.take(key)
+        else:
+            pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
+            pos[ukey.take(pos) != key] = -1
+        hit = np.nonzero(pos >= 0)[0]
+        tid, pos, near = tid.take(hit), pos.take(hit), near.take(hit)
+        p = np.stack([p0.take(near), p1.take(near), p2.take(near)])
+        d2 = point_triangle_distance2_rows(
+            p, np.take(ta, tid, axis=1), np.take(tb, tid, axis=1), np.take(tc, tid, axis=1)
+        )
         np.minimum.at(best, pos, d2)
         start = int(end)
     best[best > w * w] = np.inf
@@ -437,7 +463,7 @@ def _build(
     n_fine = dims * s + 1
     gij = (blocks[:, None, :] * s + offs[None]).reshape(-1, 3)
     key = (gij[:, 0] * n_fine[1] + gij[:, 1]) * n_fine[2] + gij[:, 2]
-    ukey, inv = np.unique(key, return_inverse=True)
+    ukey, inv = _unique_keys(key, int(np.prod(n_fine)))
     uij = np.stack(
         [ukey // (n_fine[1] * n_fine[2]), (ukey // n_fine[2]) % n_fine[1], ukey % n_fine[2]], axis=1
     )
