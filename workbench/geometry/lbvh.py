@@ -65,9 +65,12 @@ class LBVH:
         self.vertices, self.faces = v, f
         used = np.zeros(len(v), dtype=bool)
         used[f.reshape(-1)] = True
-        vu = v if used.all() else v[used]
-        self.bounds = np.stack([vu.min(axis=0), vu.max(axis=0)])
-        scale = float(np.ptp(v, axis=0).max()) or 1.0
+        v_lo, v_hi = v.min(axis=0), v.max(axis=0)
+        if used.all():
+            self.bounds = np.stack([v_lo, v_hi])
+        else:
+            self.bounds = np.stack([v[used].min(axis=0), v[used].max(axis=0)])
+        scale = float((v_hi - v_lo).max()) or 1.0
         self.scale = scale
         # Morton codes of the triangles' AABB centres (independent of vertex order, so
         # duplicate triangles get equal codes), sorted stably: ties keep index order, which
