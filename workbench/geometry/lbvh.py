@@ -1,11 +1,14 @@
-"""Linear BVH over a triangle mesh: Karras (2012) construction, closest points, ray crossings.
+"""Linear BVH over a triangle mesh: Karras' (2012) radix tree, closest points, ray crossings.
 
-Seed 001, step 1: triangle centroids are quantised in the mesh AABB to Morton codes, sorted,
-and the binary radix tree is built by Karras' binary search, every internal node at once
-(numpy over nodes, O(log n) passes). Boxes are refit bottom-up one tree level at a time.
+Seed 001, step 1: the centres of the triangles' AABBs are quantised in the mesh AABB to
+Morton codes and sorted; the binary radix tree on those (index-augmented) keys is built
+bottom-up as in Apetrei (2014), all nodes whose children are done in one numpy round, with
+the box refit fused into the same rounds. It is the tree of Karras' top-down binary-search
+definition (the tests compare both), at O(n) work instead of O(n log n).
 
-Node numbering: internal nodes 0 .. n-2 (root 0), leaf k (k-th triangle in Morton order)
-is node n-1+k. With one triangle the root is that leaf.
+Node numbering: internal node i (0 .. n-2) splits leaves i | i+1 (the root is `root`),
+leaf k (k-th triangle in Morton order) is node n-1+k. With one triangle the root is that
+leaf.
 
 Input handling: NaN/inf vertices, bad shapes and out-of-range indices raise InputError; a
 mesh without faces raises MeshError. Degenerate (zero-area) triangles are kept: distances to
