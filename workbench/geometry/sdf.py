@@ -4,8 +4,9 @@ Level 1: a coarse grid (cell size h, by default 1/64 of the model's largest exte
 is marked when a triangle grown by the band width r can touch it: the cell box grown by r
 (a cube, which contains the ball-grown box) overlaps the triangle by the separating-axis
 test. Level 2: each marked cell is split into s^3 fine cells; exact distances at their
-corners come from the LBVH, and the sign from ray parity along +x and +y (both must agree
-and neither may graze an edge; otherwise three skewed rays vote).
+corners come from the LBVH, and the sign from ray parity along x and y (both must agree
+and neither may be untrusted, i.e. lie between the ends of a triangle the row grazes;
+otherwise three skewed rays vote). Hits and corners of a row are compared exactly.
 
 Values are truncated at W = r + sqrt(3)/2 * h/s (the band plus half a fine diagonal):
 exact corner distances are only needed up to W, and most come from a triangle-driven pass
