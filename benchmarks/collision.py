@@ -190,11 +190,21 @@ def robot_checks() -> None:
 def main() -> None:
     import sys
 
-    if "--skip-build" not in sys.argv:
+    # --only lbvh,closest,sdf,robot runs just those sections (saves time under load).
+    only = {"lbvh", "closest", "sdf", "robot"}
+    for k, arg in enumerate(sys.argv):
+        if arg == "--only" and k + 1 < len(sys.argv):
+            only = set(sys.argv[k + 1].split(","))
+    if "--skip-build" in sys.argv:
+        only.discard("lbvh")
+    if "lbvh" in only:
         lbvh_build()
-    closest_point_queries()
-    sdf_build()
-    robot_checks()
+    if "closest" in only:
+        closest_point_queries()
+    if "sdf" in only:
+        sdf_build()
+    if "robot" in only:
+        robot_checks()
 
 
 if __name__ == "__main__":

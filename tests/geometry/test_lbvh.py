@@ -52,7 +52,8 @@ def test_tree_structure_is_a_valid_bvh() -> None:
     n, k = bvh.n, bvh.n_internal
     children = np.concatenate([bvh.left, bvh.right])
     # Every node except the root is the child of exactly one internal node.
-    assert np.array_equal(np.sort(children), np.arange(1, n + k))
+    assert np.array_equal(np.sort(children), np.delete(np.arange(n + k), bvh.root))
+    assert bvh.first[bvh.root] == 0 and bvh.last[bvh.root] == n - 1
     # Each internal node's box is the union of its children's boxes; leaves bound triangles.
     np.testing.assert_array_equal(bvh.lo[:k], np.minimum(bvh.lo[bvh.left], bvh.lo[bvh.right]))
     np.testing.assert_array_equal(bvh.hi[:k], np.maximum(bvh.hi[bvh.left], bvh.hi[bvh.right]))
@@ -64,6 +65,37 @@ def test_tree_structure_is_a_valid_bvh() -> None:
     # The 8-wide collapse references every leaf exactly once.
     leaves = -bvh.wide_child[bvh.wide_child <= -2] - 2
     assert np.array_equal(np.sort(leaves), np.arange(n))
+
+
+def _karras_splits(keys: list[int]) -> dict[tuple[int, int], int]:
+    """Top-down binary radix tree (Karras 2012): {(first, last): split} for internal nodes."""
+    out: dict[tuple[int, int], int] = {}
+    stack = [(0, len(keys) - 1)]
+    while stack:
+        lo, hi = stack.pop()
+        if lo == hi:
+            continue
+        bit = (keys[lo] ^ keys[hi]).bit_length() - 1  # highest differing bit
+        split = max(i for i in range(lo, hi + 1) if not (keys[i] >> bit) & 1)
+        out[(lo, hi)] = split
+        stack += [(lo, split), (split + 1, hi)]
+    return out
+
+
+@pytest.mark.parametrize("clustered", [False, True])
+def test_bottom_up_build_is_the_karras_radix_tree(clustered: bool) -> None:
+    """Internal node i splits leaves i | i+1 and covers exactly Karras' ranges."""
+    m = _scene()
+    v, f = np.asarray(m.vertices), np.asarray(m.faces)
+    if clustered:  # many equal Morton codes: ties are split by the leaf index
+        v = np.round(v * 4) / 4
+    bvh = LBVH(v, f)
+    bits = bvh.n.bit_length()
+    keys = [(int(c) << bits) | i for i, c in enumerate(bvh.codes)]  # index-augmented
+    assert keys == sorted(keys)
+    twin = _karras_splits(keys)
+    ours = {(int(a), int(b)): i for i, (a, b) in enumerate(zip(bvh.first, bvh.last, strict=True))}
+    assert ours == twin
 
 
 def test_closest_points_match_brute_force_and_trimesh() -> None:

@@ -151,6 +151,34 @@ def test_grid_aligned_box_signs() -> None:
     assert np.all(np.sign(q[np.abs(ex) > sdf.max_error]) == np.sign(ex[np.abs(ex) > sdf.max_error]))
 
 
+@pytest.mark.parametrize("delta", [1e-13, -1e-13, 1e-11])
+def test_sign_of_corners_a_hair_inside_an_oblique_face(delta: float) -> None:
+    """Grid corners 7e-14 inside (or outside) a face at 45 degrees to both ray axes.
+
+    Both axis rays then hit the face a hair from the corner, so a parity that orders hits
+    and corners with too little resolution gets both wrong at once (the old single float
+    key per row did, for ~90 % of these corners) and no fallback is asked. Twin: the
+    prism's exact inside test (0 < x, y, z < 1 and x + y < c).
+    """
+    c = 1.5 + delta
+    poly = np.array([[0, 0], [1, 0], [1, c - 1], [c - 1, 1], [0, 1]])
+    m = trimesh.convex.convex_hull(
+        np.concatenate([np.c_[poly, np.zeros(5)], np.c_[poly, np.ones(5)]])
+    )
+    sdf = SparseSDF.from_mesh(m, cell_size=1 / 16, subdivisions=4, band=1 / 16)
+    assert sdf.signed and np.all(sdf.origin == -0.125) and sdf.fine_cell_size == 1 / 64
+    i = np.arange(42, 71)  # x = (i - 8) / 64 in (0.5, 1), y = 1.5 - x: on x + y = 1.5
+    k = np.arange(9, 72)  # z in (0, 1)
+    ii, kk = np.meshgrid(i, k, indexing="ij")
+    p = np.stack([(ii - 8) / 64, (112 - ii - 8) / 64, (kk - 8) / 64], axis=-1).reshape(-1, 3)
+    assert np.all(p[:, 0] + p[:, 1] == 1.5)
+    inside = np.all((p > 0) & (p < 1), axis=1) & (p[:, 0] + p[:, 1] < c)
+    assert inside.all() == (delta > 0) and inside.any() == (delta > 0)
+    q = sdf.query(p)
+    assert np.all((q < 0) == inside)
+    assert np.abs(q).max() <= abs(delta)  # and the value is the (tiny) exact distance
+
+
 def test_triangle_box_overlap_against_sampled_distance() -> None:
     rng = np.random.default_rng(0)
     n = 3000

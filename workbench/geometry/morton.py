@@ -1,8 +1,9 @@
-"""Morton (Z-order) codes and index-augmented sort keys for LBVH construction.
+"""Morton (Z-order) codes, a stable radix argsort for them, and the highest set bit.
 
-A key is ``(morton << index_bits) | index`` in a uint64, so keys are unique even where
-centroids quantise to the same cell (Karras 2012, section 4: "augment each key with its
-index"). The Morton part gets as many bits per axis as fit in 62 bits beside the index.
+LBVH construction sorts triangles by the Morton code of their box centres. A stable sort
+keeps equal codes in index order, which is exactly Karras' (2012, section 4) index-augmented
+key ``(morton << index_bits) | index`` without sorting 64-bit keys: the LSD radix sort below
+makes 16-bit passes with numpy's stable (radix) argsort of uint16.
 """
 
 from __future__ import annotations
@@ -13,19 +14,25 @@ from numpy.typing import NDArray
 U64 = NDArray[np.uint64]
 
 
-def bits_for(n: int) -> tuple[int, int]:
-    """Return (bits per axis, index bits) for `n` primitives so that keys fit in 62 bits."""
-    index_bits = max(1, int(n - 1).bit_length())
-    per_axis = min(20, (62 - index_bits) // 3)
-    return per_axis, index_bits
+def _spread_table(bits: int) -> U64:
+    """Return t[x] = x (< 2**bits) with two zero bits inserted after each bit."""
+    x = np.arange(1 << bits, dtype=np.uint64)
+    out = np.zeros_like(x)
+    for k in range(bits):
+        out |= ((x >> np.uint64(k)) & np.uint64(1)) << np.uint64(3 * k)
+    return out
+
+
+_SPREAD8 = _spread_table(8)
 
 
 def spread_bits(x: NDArray[np.uint64], bits: int) -> U64:
     """Return `x` (< 2**bits, bits <= 21) with two zero bits inserted after each bit."""
     x = x.astype(np.uint64)
-    out = np.zeros_like(x)
-    for k in range(bits):  # bits <= 21: a short loop over bit positions, vectorised over x
-        out |= ((x >> np.uint64(k)) & np.uint64(1)) << np.uint64(3 * k)
+    out = _SPREAD8[x & np.uint64(0xFF)]
+    for k in range(1, (bits + 7) // 8):  # one table look-up per byte
+        byte = (x >> np.uint64(8 * k)) & np.uint64(0xFF)
+        out |= _SPREAD8[byte] << np.uint64(24 * k)
     return out
 
 
@@ -38,6 +45,15 @@ def morton_codes(unit_points: NDArray[np.float64], bits: int) -> U64:
         | (spread_bits(q[:, 1], bits) << np.uint64(1))
         | spread_bits(q[:, 2], bits)
     )
+
+
+def radix_argsort(codes: U64, bits: int) -> NDArray[np.int64]:
+    """Return the stable argsort of `codes` (< 2**bits) by 16-bit LSD radix passes."""
+    order = np.argsort((codes & np.uint64(0xFFFF)).astype(np.uint16), kind="stable")
+    for shift in range(16, bits, 16):
+        digit = ((codes >> np.uint64(shift)) & np.uint64(0xFFFF)).astype(np.uint16)
+        order = order[np.argsort(digit[order], kind="stable")]
+    return order.astype(np.int64, copy=False)
 
 
 def highest_bit(x: U64) -> NDArray[np.int64]:

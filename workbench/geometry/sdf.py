@@ -4,8 +4,9 @@ Level 1: a coarse grid (cell size h, by default 1/64 of the model's largest exte
 is marked when a triangle grown by the band width r can touch it: the cell box grown by r
 (a cube, which contains the ball-grown box) overlaps the triangle by the separating-axis
 test. Level 2: each marked cell is split into s^3 fine cells; exact distances at their
-corners come from the LBVH, and the sign from ray parity along +x and +y (both must agree
-and neither may graze an edge; otherwise three skewed rays vote).
+corners come from the LBVH, and the sign from ray parity along x and y (both must agree
+and neither may be untrusted, i.e. lie between the ends of a triangle the row grazes;
+otherwise three skewed rays vote). Hits and corners of a row are compared exactly.
 
 Values are truncated at W = r + sqrt(3)/2 * h/s (the band plus half a fine diagonal):
 exact corner distances are only needed up to W, and most come from a triangle-driven pass
@@ -53,8 +54,13 @@ _SKEWED = np.array([[1.0, 0.0123, 0.0071], [0.0093, 1.0, 0.0137], [0.0111, 0.005
 
 def is_watertight(vertices: FloatArray, faces: IntArray) -> bool:
     """Return True when every edge (vertices merged by position) is shared by exactly two faces."""
-    _, inv = np.unique(vertices, axis=0, return_inverse=True)
-    f = inv.reshape(-1)[faces]
+    order = np.lexsort((vertices[:, 2], vertices[:, 1], vertices[:, 0]))
+    sv = vertices[order]
+    new = np.ones(len(sv), dtype=bool)
+    new[1:] = np.any(sv[1:] != sv[:-1], axis=1)
+    inv = np.empty(len(sv), dtype=np.int64)
+    inv[order] = np.cumsum(new) - 1  # the same id for vertices at the same position
+    f = inv[faces]
     e = np.sort(np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]]), axis=1)
     e = e[e[:, 0] != e[:, 1]]
     _, counts = np.unique(e[:, 0] * (len(vertices) + 1) + e[:, 1], return_counts=True)
@@ -233,6 +239,22 @@ class SparseSDF:
         return out
 
 
+def _unique_keys(key: IntArray, size: int | None) -> tuple[IntArray, IntArray]:
+    """Return (sorted unique keys, index of each key among them) for keys in [0, size).
+
+    A mark-and-count pass over [0, size) when that range is small (size None: the
+    largest key + 1), else np.unique; the same result either way.
+    """
+    top = int(key.max()) + 1 if size is None else size
+    if top > max(1 << 22, 8 * len(key)):
+        u, inv = np.unique(key, return_inverse=True)
+        return u, inv.reshape(-1)
+    mark = np.zeros(top, dtype=bool)
+    mark[key] = True
+    rank = np.cumsum(mark) - 1
+    return np.flatnonzero(mark), rank[key]
+
+
 def _skewed_inside(lbvh: LBVH, points: FloatArray) -> NDArray[np.bool_]:
     """Return inside flags by a majority of three skewed-ray parities (robust fallback)."""
     votes = np.zeros(len(points), dtype=np.int64)
@@ -244,27 +266,68 @@ def _skewed_inside(lbvh: LBVH, points: FloatArray) -> NDArray[np.bool_]:
 def _row_parity(
     lbvh: LBVH, ij: IntArray, axis: int, origin: FloatArray, hf: float
 ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
-    """Return (odd crossings beyond each corner along +axis, untrusted) for corners ij (P,3)."""
+    """Return (inside by ray parity along `axis`, trusted) for fine corners ij (P,3).
+
+    One full-line ray per grid row. Hits are compared with the corners of their own row
+    exactly (sorted by (row, t), not by one float key mixing row and position, which
+    loses ~row * 1e-16 of resolution and misplaced corners within ~1e-12 of a face).
+    A degenerate hit (near an edge, or the row lying in a triangle's plane) makes parity
+    untrustworthy only on its own side: a corner past every degenerate triangle's extent
+    along the row counts the regular hits after it, a corner before all of them counts
+    those before it; only corners between are untrusted.
+    """
     other = [k for k in range(3) if k != axis]
-    rows, row_of = np.unique(ij[:, other[0]] * (1 << 31) + ij[:, other[1]], return_inverse=True)
-    row_of = row_of.reshape(-1)
+    width = int(ij[:, other[1]].max()) + 1
+    rows, row_of = _unique_keys(ij[:, other[0]] * width + ij[:, other[1]], None)
     starts = np.empty((len(rows), 3))
     starts[:, axis] = origin[axis]
-    starts[:, other[0]] = origin[other[0]] + (rows >> 31) * hf
-    starts[:, other[1]] = origin[other[1]] + (rows & ((1 << 31) - 1)) * hf
+    starts[:, other[0]] = origin[other[0]] + (rows // width) * hf
+    starts[:, other[1]] = origin[other[1]] + (rows % width) * hf
     direction = np.zeros(3)
     direction[axis] = 1.0
-    hq, ht, hdeg = lbvh.ray_hits(starts, direction, full_line=True)
-    shift = abs(float(ht.min(initial=0.0))) + hf
-    span = (ij[:, axis].max() + 2) * hf + float(ht.max(initial=0.0)) + shift
-    hit_key = np.sort(hq + (ht + shift) / (2 * span))
-    corner_key = row_of + (ij[:, axis] * hf + shift) / (2 * span)
-    beyond = np.searchsorted(hit_key, row_of + 1.0) - np.searchsorted(
-        hit_key, corner_key, side="right"
+    hq, ht, hdeg, hleaf = lbvh.ray_hit_leaves(starts, direction, full_line=True)
+    # Untrusted stretch of each row: the extents along `axis` of its degenerate triangles.
+    margin = 1e-9 * lbvh.scale
+    dl = hleaf[hdeg]
+    ta, tb, tc = lbvh.a[dl, axis], lbvh.b[dl, axis], lbvh.c[dl, axis]
+    bad_lo = np.full(len(rows), np.inf)
+    bad_hi = np.full(len(rows), -np.inf)
+    np.minimum.at(bad_lo, hq[hdeg], np.minimum(np.minimum(ta, tb), tc) - origin[axis] - margin)
+    np.maximum.at(bad_hi, hq[hdeg], np.maximum(np.maximum(ta, tb), tc) - origin[axis] + margin)
+    rq, rt = hq[~hdeg], ht[~hdeg]
+    xc = ij[:, axis] * hf  # corner position along the row, in the rays' t
+    # Merge hits and corners by (row, t); at equal t a hit sorts before the corner.
+    n_hit = len(rq)
+    order = np.lexsort(
+        (
+            np.concatenate([np.zeros(n_hit, np.int8), np.ones(len(xc), np.int8)]),
+            np.concatenate([rt, xc]),
+            np.concatenate([rq, row_of]),
+        )
     )
-    bad_rows = np.zeros(len(rows), dtype=bool)
-    bad_rows[hq[hdeg]] = True
-    return beyond % 2 == 1, bad_rows[row_of]
+    hits_upto = np.cumsum(order < n_hit)
+    pos = np.empty(len(order), dtype=np.int64)
+    pos[order] = np.arange(len(order))
+    total = np.bincount(rq, minlength=len(rows))
+    before = hits_upto[pos[n_hit:]] - (np.cumsum(total) - total)[row_of]
+    after = total[row_of] - before
+    trust_after = xc > bad_hi[row_of]
+    trust_before = xc < bad_lo[row_of]
+    odd = np.where(trust_after, after, before) % 2 == 1
+    return odd, trust_after | trust_before
+
+
+def _pieces(lbvh: LBVH, max_edge: float) -> FloatArray:
+    """Return the mesh's triangles (T', 3, 3), the long ones split to edges <= max_edge [m]."""
+    tri = np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1)
+    edge2 = np.maximum(
+        np.maximum(((lbvh.b - lbvh.a) ** 2).sum(axis=1), ((lbvh.c - lbvh.b) ** 2).sum(axis=1)),
+        ((lbvh.a - lbvh.c) ** 2).sum(axis=1),
+    )
+    long = edge2 > max_edge * max_edge
+    if not long.any():
+        return tri
+    return np.concatenate([tri[~long], split_long_triangles(tri[long], max_edge)])
 
 
 def _scatter_d2(
@@ -282,24 +345,25 @@ def _scatter_d2(
     triangle of a corner at distance d <= w is among them, so the minimum is exact there.
     Long triangles are first split (same surface) so that no AABB enumerates too many cells.
     """
-    tri = (
-        split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
-        if pieces is None
-        else pieces
-    )
+    tri = _pieces(lbvh, 4.0 * hf) if pieces is None else pieces
     best = np.full(len(ukey), np.inf)
-    nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    length = np.linalg.norm(nrm, axis=1, keepdims=True)
-    normal = np.where(length > 0, nrm / np.where(length > 0, length, 1.0), 0.0)  # zero: no cut
     top = n_fine - 1
-    imin = np.clip(np.ceil((tri.min(axis=1) - w - origin) / hf).astype(np.int64), 0, top)
-    imax = np.clip(np.floor((tri.max(axis=1) + w - origin) / hf).astype(np.int64), 0, top)
+    tlo, thi = tri.min(axis=1), tri.max(axis=1)
+    imin = np.clip(np.ceil((tlo - w - origin) / hf).astype(np.int64), 0, top)
+    imax = np.clip(np.floor((thi + w - origin) / hf).astype(np.int64), 0, top)
     span = np.maximum(imax - imin + 1, 0)
     count = span.prod(axis=1)
     imin0, imin1, imin2 = (np.ascontiguousarray(imin[:, k]) for k in range(3))
-    span1, span2 = np.ascontiguousarray(span[:, 1]), np.ascontiguousarray(span[:, 2])
+    span2 = np.ascontiguousarray(span[:, 2])
+    span12 = span[:, 1] * span2
     ta, tb, tc = (np.ascontiguousarray(tri[:, k].T) for k in range(3))
-    nrows = np.ascontiguousarray(normal.T)
+    blo, bhi = np.ascontiguousarray(tlo.T), np.ascontiguousarray(thi.T)
+    # Corner key -> row of ukey: a dense table when the fine grid is small enough (one
+    # gather per pair), else a binary search. -1: not a corner of a marked block.
+    dense = int(np.prod(n_fine)) <= max(1 << 22, 4 * len(ukey))
+    if dense:
+        table = np.full(int(np.prod(n_fine)), -1, dtype=np.int64)
+        table[ukey] = np.arange(len(ukey))
     csum = np.cumsum(count)
     bounds = np.searchsorted(csum, np.arange(1, csum[-1] // 1_000_000 + 2) * 1_000_000)
     start = 0
@@ -307,22 +371,32 @@ def _scatter_d2(
         cnt = count[start:end]
         tid = np.repeat(np.arange(start, end), cnt)
         k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-        s1, s2 = span1[tid], span2[tid]
-        gi = imin0[tid] + k // (s1 * s2)
-        gj = imin1[tid] + (k // s2) % s1
-        gk = imin2[tid] + k % s2
-        key = (gi * n_fine[1] + gj) * n_fine[2] + gk
-        pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
-        hit = np.nonzero(ukey[pos] == key)[0]
-        tid, pos = tid[hit], pos[hit]
-        p = np.stack([origin[0] + gi[hit] * hf, origin[1] + gj[hit] * hf, origin[2] + gk[hit] * hf])
-        a = ta[:, tid]
-        # Cheap cut first: farther than w from the triangle's plane means farther than w.
-        nr = nrows[:, tid]
-        h = (p[0] - a[0]) * nr[0] + (p[1] - a[1]) * nr[1] + (p[2] - a[2]) * nr[2]
-        near = np.nonzero(np.abs(h) <= w)[0]
-        tid, pos, p, a = tid[near], pos[near], p[:, near], a[:, near]
-        d2 = point_triangle_distance2_rows(p, a, tb[:, tid], tc[:, tid])
+        s2, s12 = span2.take(tid), span12.take(tid)
+        rem = k % s12
+        g0 = imin0.take(tid) + k // s12
+        g1 = imin1.take(tid) + rem // s2
+        g2 = imin2.take(tid) + rem % s2
+        p0, p1, p2 = origin[0] + g0 * hf, origin[1] + g1 * hf, origin[2] + g2 * hf
+        # Cheap cut first: the distance to the triangle's box (the enumeration took that
+        # box grown by w as a cube, whose corners lie farther than w) bounds it below.
+        dd = np.zeros(len(tid))
+        for ax, pk in enumerate((p0, p1, p2)):
+            e = np.maximum(np.maximum(blo[ax].take(tid) - pk, pk - bhi[ax].take(tid)), 0.0)
+            dd += e * e
+        near = np.nonzero(dd <= w * w)[0]
+        tid = tid.take(near)
+        key = (g0.take(near) * n_fine[1] + g1.take(near)) * n_fine[2] + g2.take(near)
+        if dense:
+            pos = table.take(key)
+        else:
+            pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
+            pos[ukey.take(pos) != key] = -1
+        hit = np.nonzero(pos >= 0)[0]
+        tid, pos, near = tid.take(hit), pos.take(hit), near.take(hit)
+        p = np.stack([p0.take(near), p1.take(near), p2.take(near)])
+        d2 = point_triangle_distance2_rows(
+            p, np.take(ta, tid, axis=1), np.take(tb, tid, axis=1), np.take(tc, tid, axis=1)
+        )
         np.minimum.at(best, pos, d2)
         start = int(end)
     best[best > w * w] = np.inf
@@ -390,7 +464,7 @@ def _build(
     n_fine = dims * s + 1
     gij = (blocks[:, None, :] * s + offs[None]).reshape(-1, 3)
     key = (gij[:, 0] * n_fine[1] + gij[:, 1]) * n_fine[2] + gij[:, 2]
-    ukey, inv = np.unique(key, return_inverse=True)
+    ukey, inv = _unique_keys(key, int(np.prod(n_fine)))
     uij = np.stack(
         [ukey // (n_fine[1] * n_fine[2]), (ukey // n_fine[2]) % n_fine[1], ukey % n_fine[2]], axis=1
     )
@@ -402,7 +476,7 @@ def _build(
     # pairs per corner (about the cost of one LBVH query); else to 2 fine cells + LBVH.
     # Counted on the split pieces the pass enumerates: a large triangle's pieces, each grown
     # by W, visit far more corners than the triangle's own grown box.
-    pieces = split_long_triangles(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), 4.0 * hf)
+    pieces = _pieces(lbvh, 4.0 * hf)
     ext = np.ptp(pieces, axis=1)
     pairs_full = float(np.prod((ext + 2 * trunc) / hf + 1.0, axis=1).sum())
     w_s = trunc if pairs_full <= 12.0 * len(pts) else min(trunc, 2.0 * hf)
@@ -422,10 +496,11 @@ def _build(
     sign_far = np.ones(dims, dtype=np.float64)
     if watertight:
         progress(0.8, "signs by ray parity along x and y")
-        in_x, bad_x = _row_parity(lbvh, uij, 0, origin, hf)
-        in_y, bad_y = _row_parity(lbvh, uij, 1, origin, hf)
+        in_x, ok_x = _row_parity(lbvh, uij, 0, origin, hf)
+        in_y, ok_y = _row_parity(lbvh, uij, 1, origin, hf)
         inside = in_x
-        redo = np.nonzero(bad_x | bad_y | (in_x != in_y))[0]
+        # Corners exactly on the surface need no sign (often rows lying in a face plane).
+        redo = np.nonzero((~ok_x | ~ok_y | (in_x != in_y)) & (dist > 0))[0]
         if redo.size:
             inside[redo] = _skewed_inside(lbvh, pts[redo])
         dist = np.where(inside, -dist, dist)
