@@ -1,0 +1,345 @@
+"""A joint path certified between samples: fast conservative items first, exact pairs where flagged.
+
+The engine (any mode) gives, per configuration, clearance lower bounds of "items" (a sphere
+or capsule against the cell, a sphere pair of a self-collision pair), each belonging to a
+"group" of exact body pairs (a body against every obstacle, or one self pair). A group is
+*flagged* at a configuration when one of its items has clearance <= 0; only then are its
+exact pairs (python-fcl collide plus containment) evaluated. The fast items never miss a
+contact, so a configuration collides exactly iff one of its flagged groups' pairs collides:
+the per-sample verdict equals the dense exact check of every pair.
+
+Between two samples a, b (both free), an item with levers L (dof,) [m/rad] is safe when
+``c_a + c_b > |q_b - q_a| @ L + 2 * dev @ L`` (its clearance changes by at most |dq| @ L,
+and the real motion is within dev of the straight joint segment); for a flagged group the
+exact surface distances of its pairs are used instead of the items. Intervals that cannot
+be certified are bisected; a midpoint whose flagged pairs collide exactly is a collision
+between samples.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+Pair = tuple[str, str]
+Sampler = Callable[[FloatArray], FloatArray]
+# From this bisection depth on, a group whose fast items keep failing is settled with exact
+# distances (one fcl distance per pair) rather than more midpoints.
+PROMOTE_DEPTH = 2
+# At most this many (interval, group) clearance bounds are settled with fcl for the report.
+REFINE = 64
+# An anchor (a configuration with fcl's distance d) serves nearby configurations while its
+# lever bound stays >= RENEW * d.
+RENEW = 0.8
+
+
+def _chord_bound(a: FloatArray, b: FloatArray, travel: FloatArray) -> FloatArray:
+    """Return the least clearance along a joint segment [m] from end bounds a, b and travel.
+
+    Clearance at travel x from a is at least max(a - x, b - (travel - x)); its minimum over
+    x in [0, travel] is (a + b - travel) / 2 where |a - b| <= travel, else max(a, b) - travel.
+    """
+    return np.where(np.abs(a - b) <= travel, (a + b - travel) / 2, np.maximum(a, b) - travel)
+
+
+class PathOracle(Protocol):
+    """What the certifier needs of an engine (see `CollisionEngine`)."""
+
+    dof: int
+    item_group: NDArray[np.int64]
+    group_start: NDArray[np.int64]
+    group_pairs: list[list[Pair]]
+    always_pairs: list[Pair]
+    pair_lever: dict[Pair, FloatArray]
+    margin: float
+
+    def path_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]: ...
+
+    def contained(self, qs: FloatArray) -> NDArray[np.bool_]: ...
+
+    def poses(self, qs: FloatArray) -> FloatArray: ...
+
+    def place(self, poses: FloatArray) -> None: ...
+
+    def aabb_gaps(self, poses: FloatArray) -> FloatArray: ...
+
+    def pair_collides(self, pair: Pair) -> bool: ...
+
+    def pair_distance(self, pair: Pair) -> float: ...
+
+
+@dataclass
+class _Node:
+    t: float
+    q: FloatArray
+    clr: FloatArray  # (I,) item clearances [m]
+    gmin: FloatArray  # (G,) least item clearance per group [m]
+    poses: FloatArray  # (B, 4, 4) world poses of the moving bodies
+    gaps: FloatArray  # (P,) bounding-box gaps of the exact pairs, less the margin [m]
+    hits: tuple[Pair, ...] = ()
+    dist: dict[tuple[Pair, int], float] = field(default_factory=dict)
+
+
+@dataclass
+class PathOutcome:
+    """What the certifier found (SI units); `events` are (time, interval start, q, hits)."""
+
+    sample_hits: dict[int, tuple[Pair, ...]]
+    flagged: int
+    events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]]
+    clearance: float
+    evaluated: int
+    exact_pairs: int
+
+
+class PathCertifier:
+    """Certify a sampled joint path with an engine's items, confirming flagged groups exactly."""
+
+    def __init__(self, oracle: PathOracle) -> None:
+        self.o = oracle
+        self._placed: int | None = None
+        self.exact_pairs = 0
+        # Per pair, configurations with an exact distance: the distance at any q is at least
+        # d - |q - q_anchor| @ lever (the lever bound along the straight joint segment).
+        self.anchors: dict[Pair, tuple[list[FloatArray], list[float]]] = {}
+        # Exact pairs in `aabb_gaps` column order (the order of `pair_lever`).
+        self.pair_index = {p: k for k, p in enumerate(oracle.pair_lever)}
+        self.plev = np.stack(list(oracle.pair_lever.values()))
+
+    def _nodes(self, t: FloatArray, q: FloatArray) -> list[_Node]:
+        clr, self.lev = self.o.path_items(q)
+        gmin = np.minimum.reduceat(clr, self.o.group_start, axis=1)
+        inside = self.o.contained(q)
+        T = self.o.poses(q)
+        gaps = self.o.aabb_gaps(T)
+        nodes = [_Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i]) for i in range(len(q))]
+        for node, held in zip(nodes, inside, strict=True):
+            # Exact confirmation of what the fast items could not rule out. A pair whose
+            # bounding boxes are apart, or that an anchor keeps apart, cannot touch.
+            pairs = [p for g in np.flatnonzero(node.gmin <= 0.0) for p in self.o.group_pairs[g]]
+            held_pairs = [self.o.always_pairs[k] for k in np.flatnonzero(held)]
+            hits = []
+            for p in dict.fromkeys(pairs + held_pairs):
+                if p not in held_pairs and (
+                    self._lower(node, p, 0) + self.o.margin > 0.0
+                    or self._anchored(node, p) + self.o.margin > 0.0
+                ):
+                    continue
+                self._place(node)
+                self.exact_pairs += 1
+                if self.o.pair_collides(p):
+                    hits.append(p)
+                elif p not in held_pairs:
+                    self._lower(node, p, 2)  # an anchor for the configurations nearby
+            node.hits = tuple(hits)
+        return nodes
+
+    def _place(self, node: _Node) -> None:
+        if self._placed != id(node):
+            self.o.place(node.poses)
+            self._placed = id(node)
+
+    def _anchored(self, node: _Node, pair: Pair) -> float:
+        """Return the anchors' bound at node where it keeps RENEW of the anchor's distance, else -inf.
+
+        Renewing anchors before their bound decays to 0 keeps the reported clearance within
+        about 1 - RENEW of fcl's distance.
+        """
+        qa, da = self.anchors.get(pair, ([], []))
+        if not qa:
+            return -np.inf
+        d = np.asarray(da)
+        b = d - np.abs(np.asarray(qa) - node.q) @ self.o.pair_lever[pair]
+        k = int(np.argmax(b))
+        return float(b[k]) if b[k] >= RENEW * d[k] else -np.inf
+
+    def _lower(self, node: _Node, pair: Pair, tier: int) -> float:
+        """Return a lower bound [m] of the pair's distance (less the margin) at node.
+
+        tier 0: the gap between bounding boxes; 1: the best anchor's lever bound; 2: fcl's
+        distance (which becomes an anchor).
+        """
+        if tier == 0:
+            return float(node.gaps[self.pair_index[pair]])
+        key = (pair, tier)
+        if key in node.dist:
+            return node.dist[key]
+        if tier == 1:
+            qa, da = self.anchors.get(pair, ([], []))
+            if not qa:
+                return -np.inf
+            lever = self.o.pair_lever[pair]
+            return float(np.max(np.asarray(da) - np.abs(np.asarray(qa) - node.q) @ lever))
+        self._place(node)
+        self.exact_pairs += 1
+        value = self.o.pair_distance(pair)
+        qa, da = self.anchors.setdefault(pair, ([], []))
+        qa.append(node.q)
+        da.append(value)
+        node.dist[key] = value
+        return value
+
+    def run(
+        self,
+        q: FloatArray,
+        t: FloatArray,
+        *,
+        sampler: Sampler | None,
+        acceleration: FloatArray | None,
+        deviation: FloatArray,
+        max_depth: int,
+        budget: int,
+        progress: Callable[[float, str], None] | None = None,
+    ) -> PathOutcome:
+        """Return the outcome for samples q (N, dof) [rad] at times t (N,) [s].
+
+        sampler(times) -> q gives the real motion at bisection midpoints; with `acceleration`
+        (dof,) [rad/s^2] bounding |q''| the deviation from the chord of an interval of length
+        h is ``acceleration * h**2 / 8``. Without a sampler, midpoints lie on the chord and
+        `deviation` (dof,) [rad] is used for every interval.
+        """
+        report = progress or (lambda _f, _m: None)
+        report(0.0, f"fast check of {len(q)} samples")
+        nodes = self._nodes(t, q)
+        lev = self.lev
+        sample_hits = {i: n.hits for i, n in enumerate(nodes) if n.hits}
+        flagged = int(sum(bool(np.any(n.gmin <= 0.0)) for n in nodes))
+        report(0.3, f"{flagged} flagged samples confirmed exactly; certifying between samples")
+        evaluated = len(nodes)
+        events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]] = []
+        work = [
+            (nodes[i], nodes[i + 1], 0, i)
+            for i in range(len(nodes) - 1)
+            if not nodes[i].hits and not nodes[i + 1].hits
+        ]
+        if len(nodes) == 1 and not nodes[0].hits:
+            work = [(nodes[0], nodes[0], 0, 0)]  # one configuration: its clearance only
+        total = max(len(work), 1)
+        # Certified intervals: per group the clearance bound, and whether it is fcl's.
+        cert: list[tuple[Any, FloatArray, NDArray[np.bool_], FloatArray, FloatArray]] = []
+        while work:
+            a = np.array([w[0].clr for w in work])
+            b = np.array([w[1].clr for w in work])
+            dq = np.array([np.abs(w[1].q - w[0].q) for w in work])
+            h = np.array([w[1].t - w[0].t for w in work])
+            if acceleration is not None:
+                dev = acceleration[None] * (h[:, None] ** 2) / 8.0
+            else:
+                dev = np.broadcast_to(deviation, dq.shape)
+            travel, tube = dq @ lev.T, dev @ lev.T
+            item_lo = _chord_bound(a, b, travel) - tube
+            group_lo = np.minimum.reduceat(item_lo, self.o.group_start, axis=1)
+            group_fail = ~(group_lo > 0.0)
+            ga = np.array([w[0].gmin for w in work])
+            gb = np.array([w[1].gmin for w in work])
+            depth = np.array([w[2] for w in work])
+            exact = (ga <= 0.0) | (gb <= 0.0) | (group_fail & (depth >= PROMOTE_DEPTH)[:, None])
+            # Exact pairs of the exact groups, tier 0 (box gaps) for all at once.
+            pa = np.array([w[0].gaps for w in work])
+            pb = np.array([w[1].gaps for w in work])
+            ptravel, ptube = dq @ self.plev.T, dev @ self.plev.T
+            pair_lo = _chord_bound(pa, pb, ptravel) - ptube  # (W, P)
+            bisect: list[Any] = []
+            for k, w in enumerate(work):
+                if np.any(group_fail[k] & ~exact[k]):
+                    bisect.append(w)
+                    continue
+                glo = np.where(exact[k], np.inf, group_lo[k])
+                ok = True
+                for g in np.flatnonzero(exact[k]):
+                    for pair in self.o.group_pairs[g]:
+                        j = self.pair_index[pair]
+                        lo = self._pair_interval(w, pair, ptravel[k, j], ptube[k, j], pair_lo[k, j])
+                        if not lo > 0.0:
+                            ok = False
+                            break
+                        glo[g] = min(glo[g], lo)
+                    if not ok:
+                        break
+                if not ok:
+                    bisect.append(w)
+                    continue
+                cert.append((w, glo, np.zeros(len(glo), bool), dq[k], dev[k]))
+            done = [w for w in bisect if w[2] >= max_depth]
+            bisect = [w for w in bisect if w[2] < max_depth]
+            if evaluated + len(bisect) > budget:
+                done, bisect = done + bisect, []
+            for w in done:  # not certified: the clearance is below what bisection resolves
+                tm = (w[0].t + w[1].t) / 2
+                events.append((tm, w[3], (w[0].q + w[1].q) / 2, ()))
+            work = []
+            if bisect:
+                tm = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
+                qm = (
+                    sampler(tm)
+                    if sampler is not None
+                    else np.array([(w[0].q + w[1].q) / 2 for w in bisect])
+                )
+                mids = self._nodes(tm, qm)
+                evaluated += len(mids)
+                for w, m in zip(bisect, mids, strict=True):
+                    if m.hits:
+                        events.append((m.t, w[3], m.q, m.hits))
+                        continue
+                    work.append((w[0], m, w[2] + 1, w[3]))
+                    work.append((m, w[1], w[2] + 1, w[3]))
+            report(
+                0.3 + 0.6 * min(1.0, evaluated / (total + budget * 0.1)),
+                f"{evaluated} configurations checked",
+            )
+        clearance = self._tighten(cert) if cert and not events and not sample_hits else np.inf
+        events.sort(key=lambda e: e[0])
+        return PathOutcome(
+            sample_hits, flagged, events, float(clearance), evaluated, self.exact_pairs
+        )
+
+    def _pair_interval(
+        self, w: Any, pair: Pair, travel: float, tube: float, lo: float, *, fcl: bool = False
+    ) -> float:
+        """Return the pair's clearance bound [m] over interval w, at least `lo` (box gaps).
+
+        Anchors' bounds next (cheap); fcl's distances only when the bound is still <= 0, or
+        when `fcl` asks for the tight bound.
+        """
+        for tier in (1, 2):
+            if tier == 2 and lo > 0.0 and not fcl:
+                break
+            da = self._lower(w[0], pair, tier)
+            db = self._lower(w[1], pair, tier)
+            if np.isfinite(da) and np.isfinite(db):
+                lo = max(
+                    lo, float(_chord_bound(np.array(da), np.array(db), np.array(travel))) - tube
+                )
+        return lo
+
+    def _tighten(
+        self, cert: list[tuple[Any, FloatArray, NDArray[np.bool_], FloatArray, FloatArray]]
+    ) -> float:
+        """Return the path's clearance bound [m], settling the smallest bounds with fcl.
+
+        Every interval's group bound is valid; the smallest are replaced by the bound from fcl
+        distances of the group's pairs (the larger of the two is kept), until the smallest
+        bound left is fcl's, or after `REFINE` refinements.
+        """
+        B = np.array([c[1] for c in cert])
+        tight = np.array([c[2] for c in cert])
+        for _ in range(REFINE):
+            k, g = np.unravel_index(int(np.argmin(B)), B.shape)
+            if tight[k, g] or not np.isfinite(B[k, g]):
+                break
+            w, _, _, dq, dev = cert[k]
+            lo = np.inf
+            for pair in self.o.group_pairs[g]:
+                L = self.o.pair_lever[pair]
+                lo = min(
+                    lo,
+                    self._pair_interval(w, pair, float(dq @ L), float(dev @ L), -np.inf, fcl=True),
+                )
+            B[k, g] = max(B[k, g], lo)
+            tight[k, g] = True
+        return float(B.min())
