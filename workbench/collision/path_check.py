@@ -106,10 +106,17 @@ class PathCertifier:
         self.exact_pairs = 0
         # Per pair, configurations with an exact distance: the distance at any q is at least
         # d - |q - q_anchor| @ lever (the lever bound along the straight joint segment).
-        self.anchors: dict[Pair, tuple[list[FloatArray], list[float]]] = {}
+        self.anchors: dict[Pair, tuple[FloatArray, FloatArray]] = {}
         # Exact pairs in `aabb_gaps` column order (the order of `pair_lever`).
         self.pair_index = {p: k for k, p in enumerate(oracle.pair_lever)}
         self.plev = np.stack(list(oracle.pair_lever.values()))
+        self.pairs = list(oracle.pair_lever)
+        self.group_cols = [
+            np.array([self.pair_index[p] for p in g], np.int64) for g in oracle.group_pairs
+        ]
+        self.group_member = np.zeros((len(self.group_cols), len(self.pairs)), np.int64)
+        for g, cols in enumerate(self.group_cols):
+            self.group_member[g, cols] = 1
 
     def _nodes(self, t: FloatArray, q: FloatArray) -> list[_Node]:
         clr, self.lev = self.o.path_items(q)
@@ -150,11 +157,10 @@ class PathCertifier:
         Renewing anchors before their bound decays to 0 keeps the reported clearance within
         about 1 - RENEW of fcl's distance.
         """
-        qa, da = self.anchors.get(pair, ([], []))
-        if not qa:
+        if pair not in self.anchors:
             return -np.inf
-        d = np.asarray(da)
-        b = d - np.abs(np.asarray(qa) - node.q) @ self.o.pair_lever[pair]
+        qa, d = self.anchors[pair]
+        b = d - np.abs(qa - node.q) @ self.o.pair_lever[pair]
         k = int(np.argmax(b))
         return float(b[k]) if b[k] >= RENEW * d[k] else -np.inf
 
@@ -170,17 +176,15 @@ class PathCertifier:
         if key in node.dist:
             return node.dist[key]
         if tier == 1:
-            qa, da = self.anchors.get(pair, ([], []))
-            if not qa:
+            if pair not in self.anchors:
                 return -np.inf
-            lever = self.o.pair_lever[pair]
-            return float(np.max(np.asarray(da) - np.abs(np.asarray(qa) - node.q) @ lever))
+            qa, da = self.anchors[pair]
+            return float(np.max(da - np.abs(qa - node.q) @ self.o.pair_lever[pair]))
         self._place(node)
         self.exact_pairs += 1
         value = self.o.pair_distance(pair)
-        qa, da = self.anchors.setdefault(pair, ([], []))
-        qa.append(node.q)
-        da.append(value)
+        qa, da = self.anchors.get(pair, (np.zeros((0, len(node.q))), np.zeros(0)))
+        self.anchors[pair] = (np.vstack([qa, node.q]), np.append(da, value))
         node.dist[key] = value
         return value
 
@@ -244,27 +248,31 @@ class PathCertifier:
             pb = np.array([w[1].gaps for w in work])
             ptravel, ptube = dq @ self.plev.T, dev @ self.plev.T
             pair_lo = _chord_bound(pa, pb, ptravel) - ptube  # (W, P)
-            bisect: list[Any] = []
-            for k, w in enumerate(work):
-                if np.any(group_fail[k] & ~exact[k]):
-                    bisect.append(w)
+            # Pairs of the exact groups: box gaps first; anchors and fcl only where those fail
+            # and the interval's fast items pass.
+            fast_fail = np.any(group_fail & ~exact, axis=1)
+            pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
+            pb = np.where(pairs_in, pair_lo, np.inf)
+            failed: set[int] = set()
+            for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
+                if k in failed:
+                    continue  # bisected anyway
+                pb[k, j] = self._pair_interval(
+                    work[k], self.pairs[j], ptravel[k, j], ptube[k, j], pair_lo[k, j]
+                )
+                if not pb[k, j] > 0.0:
+                    failed.add(int(k))
+            safe = ~fast_fail & np.all(pb > 0.0, axis=1)
+            glo = np.where(exact, np.inf, group_lo)
+            for g, cols in enumerate(self.group_cols):
+                if len(cols) == 0:
                     continue
-                glo = np.where(exact[k], np.inf, group_lo[k])
-                ok = True
-                for g in np.flatnonzero(exact[k]):
-                    for pair in self.o.group_pairs[g]:
-                        j = self.pair_index[pair]
-                        lo = self._pair_interval(w, pair, ptravel[k, j], ptube[k, j], pair_lo[k, j])
-                        if not lo > 0.0:
-                            ok = False
-                            break
-                        glo[g] = min(glo[g], lo)
-                    if not ok:
-                        break
-                if not ok:
-                    bisect.append(w)
-                    continue
-                cert.append((w, glo, np.zeros(len(glo), bool), dq[k], dev[k]))
+                glo[:, g] = np.where(exact[:, g], pb[:, cols].min(axis=1), glo[:, g])
+            bisect = [w for w, ok in zip(work, safe, strict=True) if not ok]
+            cert += [
+                (work[k], glo[k], np.zeros(glo.shape[1], bool), dq[k], dev[k])
+                for k in np.flatnonzero(safe)
+            ]
             done = [w for w in bisect if w[2] >= max_depth]
             bisect = [w for w in bisect if w[2] < max_depth]
             if evaluated + len(bisect) > budget:
@@ -274,13 +282,13 @@ class PathCertifier:
                 events.append((tm, w[3], (w[0].q + w[1].q) / 2, ()))
             work = []
             if bisect:
-                tm = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
+                t_mid = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
                 qm = (
-                    sampler(tm)
+                    sampler(t_mid)
                     if sampler is not None
                     else np.array([(w[0].q + w[1].q) / 2 for w in bisect])
                 )
-                mids = self._nodes(tm, qm)
+                mids = self._nodes(t_mid, qm)
                 evaluated += len(mids)
                 for w, m in zip(bisect, mids, strict=True):
                     if m.hits:
