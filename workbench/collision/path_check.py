@@ -330,24 +330,31 @@ class PathCertifier:
     ) -> float:
         """Return the path's clearance bound [m], settling the smallest bounds with fcl.
 
-        Every interval's group bound is valid; the smallest are replaced by the bound from fcl
-        distances of the group's pairs (the larger of the two is kept), until the smallest
-        bound left is fcl's, or after `REFINE` refinements.
+        Every interval's group bound is valid. The smallest is settled with fcl distances of
+        its group's pairs at the interval's ends; those become anchors, whose lever bounds
+        then raise that group's bound on every interval (the larger bound is kept). Stops when
+        the smallest bound left is fcl's, or after `REFINE` rounds.
         """
         B = np.array([c[1] for c in cert])
-        tight = np.array([c[2] for c in cert])
+        tight = np.zeros(B.shape, bool)
+        qa = np.array([c[0][0].q for c in cert])
+        qb = np.array([c[0][1].q for c in cert])
+        dq = np.array([c[3] for c in cert])
+        dev = np.array([c[4] for c in cert])
         for _ in range(REFINE):
             k, g = np.unravel_index(int(np.argmin(B)), B.shape)
             if tight[k, g] or not np.isfinite(B[k, g]):
                 break
-            w, _, _, dq, dev = cert[k]
-            lo = np.inf
+            w = cert[k][0]
+            lo = np.full(len(cert), np.inf)
             for pair in self.o.group_pairs[g]:
+                # The interval's ends as anchors (every anchor gives a valid bound).
+                anchor_q = np.stack([w[0].q, w[1].q])
+                anchor_d = np.array([self._lower(w[0], pair, 2), self._lower(w[1], pair, 2)])
                 L = self.o.pair_lever[pair]
-                lo = min(
-                    lo,
-                    self._pair_interval(w, pair, float(dq @ L), float(dev @ L), -np.inf, fcl=True),
-                )
-            B[k, g] = max(B[k, g], lo)
+                da = np.max(anchor_d[None] - np.abs(qa[:, None] - anchor_q[None]) @ L, axis=1)
+                db = np.max(anchor_d[None] - np.abs(qb[:, None] - anchor_q[None]) @ L, axis=1)
+                lo = np.minimum(lo, _chord_bound(da, db, dq @ L) - dev @ L)
+            B[:, g] = np.maximum(B[:, g], lo)
             tight[k, g] = True
         return float(B.min())
