@@ -82,13 +82,29 @@ class ConservativeChecker:
         self.robot, self.margin, self.links = robot, float(margin), chosen
         centres, radii, owner = [], [], []
         for i in chosen:
-            s = fit_spheres(link_meshes[i], spheres_per_link, seed=seed)
+            s = fit_spheres(link_meshes[i], spheres_per_link, seed=seed, cache_dir=cache_dir)
             centres.append(s.centres)
             radii.append(s.radii)
             owner.append(np.full(len(s.radii), i))
         self.centres: FloatArray = np.concatenate(centres)
         self.radii: FloatArray = np.concatenate(radii)
         self.sphere_link: NDArray[np.int64] = np.concatenate(owner)
+        # The same spheres padded per link, (L, K, 3) and (L, K): one small einsum places all
+        # of them without gathering a (N, S, 4, 4) copy of the link frames. Padding spheres
+        # sit at the link origin with radius -inf (clearance +inf: never the worst).
+        k = max(len(r) for r in radii)
+        self._pad_c = np.zeros((len(chosen), k, 3))
+        self._pad_r = np.full((len(chosen), k), -np.inf)
+        self._valid = np.zeros((len(chosen), k), bool)
+        for j, (c, r) in enumerate(zip(centres, radii, strict=True)):
+            self._pad_c[j, : len(r)], self._pad_r[j, : len(r)], self._valid[j, : len(r)] = (
+                c,
+                r,
+                True,
+            )
+        self._pad_link = np.repeat(np.array(chosen), k)
+        self._pad_h = np.concatenate([self._pad_c, np.ones((len(chosen), k, 1))], axis=2)
+        self._pad_h = np.ascontiguousarray(self._pad_h.transpose(0, 2, 1))
         band = float(self.radii.max()) + self.margin
         self.sdf = SparseSDF.from_mesh(
             cell_mesh,
@@ -99,20 +115,26 @@ class ConservativeChecker:
             progress=progress,
         )
 
-    def sphere_centres(self, q: ArrayLike) -> FloatArray:
-        """Return world sphere centres (N, S, 3) [m] for configurations q (N, dof) [rad]."""
+    def _placed(self, q: ArrayLike) -> FloatArray:
+        """Return padded world sphere centres (N, L, K, 3) [m] for q (N, dof) [rad]."""
         qa = np.atleast_2d(np.asarray(q, dtype=float))
         if qa.ndim != 2 or qa.shape[1] != self.robot.dof:
             raise InputError(f"q must have shape (N, {self.robot.dof}) [rad], got {np.shape(q)}")
-        T = self.robot.link_transforms(qa)[:, self.sphere_link]  # (N, S, 4, 4)
-        return np.einsum("nsij,sj->nsi", T[..., :3, :3], self.centres) + T[..., :3, 3]
+        T = self.robot.link_transforms(qa)[:, self.links, :3, :]  # (N, L, 3, 4)
+        # Homogeneous centres (L, 4, K): one batched matmul (BLAS) instead of an einsum.
+        return np.matmul(T, self._pad_h).swapaxes(-1, -2)
+
+    def sphere_centres(self, q: ArrayLike) -> FloatArray:
+        """Return world sphere centres (N, S, 3) [m] for configurations q (N, dof) [rad]."""
+        c = self._placed(q)
+        return c[:, self._valid]
 
     def check(self, q: ArrayLike) -> ConservativeReport:
         """Return the report for configurations q (N, dof) [rad]; never misses a contact."""
-        c = self.sphere_centres(q)
-        n, s = c.shape[:2]
-        d = self.sdf.query(c.reshape(-1, 3)).reshape(n, s) - self.radii
+        c = self._placed(q)
+        n = len(c)
+        d = self.sdf.query(c.reshape(-1, 3)).reshape(n, -1) - self._pad_r.reshape(-1)
         worst = np.argmin(d, axis=1)
         clearance = d[np.arange(n), worst]
-        collides = np.any(d <= self.margin + self.sdf.max_error, axis=1)
-        return ConservativeReport(collides, clearance, self.sphere_link[worst])
+        collides = clearance <= self.margin + self.sdf.max_error
+        return ConservativeReport(collides, clearance, self._pad_link[worst])

@@ -360,8 +360,7 @@ class CollisionEngine:
         """Return world sphere centres (S,3) [m], radii (S,) [m] and each sphere's body name."""
         if self.mode != "spheres":
             raise InputError(f"spheres: the {self.mode} mode has no spheres; use mode 'spheres'")
-        T = self.body_poses(q)[0][self.sphere_body]
-        c = np.einsum("sij,sj->si", T[:, :3, :3], self.centres) + T[:, :3, 3]
+        c = self.sphere_centres(np.atleast_2d(np.asarray(q, float)))[0]
         return c, self.radii.copy(), [self.body_names[b] for b in self.sphere_body]
 
     def _relative(
@@ -394,9 +393,24 @@ class CollisionEngine:
             return self._capsule_items(qs)
         return self._exact_items(qs)
 
+    def sphere_centres(self, qs: ArrayLike) -> FloatArray:
+        """Return world sphere centres (N, S, 3) [m] at qs (N, dof) [rad] (spheres mode)."""
+        if not hasattr(self, "_pad_h"):
+            # Centres padded per body, homogeneous (B, 4, K): one batched matmul places all.
+            nb, k = len(self.body_names), int(np.bincount(self.sphere_body).max())
+            pad = np.zeros((nb, 4, k))
+            slot = np.zeros(len(self.radii), np.int64)
+            for b in range(nb):
+                own = np.flatnonzero(self.sphere_body == b)
+                pad[b, :3, : len(own)], pad[b, 3, : len(own)] = self.centres[own].T, 1.0
+                slot[own] = b * k + np.arange(len(own))
+            self._pad_h, self._slot = pad, slot
+        T = self.body_poses(qs)[:, :, :3, :]  # (N, B, 3, 4)
+        c = np.matmul(T, self._pad_h).swapaxes(-1, -2)  # (N, B, K, 3)
+        return c.reshape(len(c), -1, 3)[:, self._slot]
+
     def _sphere_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
-        T = self.body_poses(qs)[:, self.sphere_body]
-        c = np.einsum("nsij,sj->nsi", T[..., :3, :3], self.centres) + T[..., :3, 3]
+        c = self.sphere_centres(qs)
         n = len(c)
         cols, levers = [], []
         if self.sdf is not None and self.cell_spheres.size:
