@@ -182,6 +182,8 @@ class CollisionEngine:
         )
         self.sdf: SparseSDF | None = None
         if mode == "spheres":
+            if int(resolution) < 2:
+                raise InputError(f"resolution: {resolution} must be >= 2 coarse cells")
             if spheres_per_link < 1:
                 raise InputError(f"spheres_per_link: {spheres_per_link} must be a positive integer")
             cs, rs, owner = [], [], []
@@ -211,11 +213,15 @@ class CollisionEngine:
             self.pair_b = np.concatenate(pb) if pb else np.zeros(0, np.int64)
             cell = self.cell_mesh()
             if cell is not None:
+                r = float(self.radii.max()) + self.margin if band is None else float(band)
+                # Coarse cells from the cell's size, but at least r / 8: a small cell with a
+                # band of many cells would mark (r / h)^3 cells per triangle.
+                h = max(float(np.ptp(cell.vertices, axis=0).max()) / max(resolution, 1), r / 8)
                 self.sdf = SparseSDF.from_mesh(
                     cell,
-                    resolution=resolution,
+                    cell_size=h,
                     subdivisions=subdivisions,
-                    band=float(self.radii.max()) + self.margin if band is None else band,
+                    band=r,
                     cache_dir=cache_dir,
                     progress=lambda f, m: report(0.3 + 0.7 * f, m),
                 )
