@@ -54,6 +54,14 @@ def shared_engine(
     cache = str(Path(cache_dir) if cache_dir is not None else default_cache_dir())
     key = (int(spheres_per_link), int(resolution), cache)
     per = _ENGINES.setdefault(checker, {})
+    open_meshes = [
+        name for name, e in checker.scene.static.items() if e.solid.kind == "mesh" and not e.closed
+    ]
+    if open_meshes and key not in per:
+        per[key] = (
+            f"obstacle {open_meshes[0]!r} is not watertight, so the cell's distance field would"
+            " have no inside"
+        )
     if key not in per:
         try:
             eng = CollisionEngine(
@@ -68,7 +76,7 @@ def shared_engine(
             per[key] = f"the spheres engine could not be built ({exc})"
         else:
             per[key] = (
-                "the cell's mesh is not watertight, so its distance field has no inside"
+                "the cell's merged mesh is not watertight, so its distance field has no inside"
                 if eng.sdf is not None and not eng.sdf.signed
                 else eng
             )
