@@ -30,9 +30,9 @@ Pair = tuple[str, str]
 Sampler = Callable[[FloatArray], FloatArray]
 # From this bisection depth on, a group whose fast items keep failing is settled with exact
 # distances (one fcl distance per pair) rather than more midpoints.
-PROMOTE_DEPTH = 2
+PROMOTE_DEPTH = 1
 # At most this many (interval, group) clearance bounds are settled with fcl for the report.
-REFINE = 64
+REFINE = 256
 # An anchor (a configuration with fcl's distance d) serves nearby configurations while its
 # lever bound stays >= RENEW * d.
 RENEW = 0.8
@@ -125,25 +125,29 @@ class PathCertifier:
         T = self.o.poses(q)
         gaps = self.o.aabb_gaps(T)
         nodes = [_Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i]) for i in range(len(q))]
-        for node, held in zip(nodes, inside, strict=True):
-            # Exact confirmation of what the fast items could not rule out. A pair whose
-            # bounding boxes are apart, or that an anchor keeps apart, cannot touch.
-            pairs = [p for g in np.flatnonzero(node.gmin <= 0.0) for p in self.o.group_pairs[g]]
-            held_pairs = [self.o.always_pairs[k] for k in np.flatnonzero(held)]
-            hits = []
-            for p in dict.fromkeys(pairs + held_pairs):
-                if p not in held_pairs and (
-                    self._lower(node, p, 0) + self.o.margin > 0.0
-                    or self._anchored(node, p) + self.o.margin > 0.0
-                ):
-                    continue
-                self._place(node)
-                self.exact_pairs += 1
-                if self.o.pair_collides(p):
-                    hits.append(p)
-                elif p not in held_pairs:
-                    self._lower(node, p, 2)  # an anchor for the configurations nearby
-            node.hits = tuple(hits)
+        # Exact confirmation of what the fast items could not rule out: the pairs of flagged
+        # groups whose bounding boxes touch (apart boxes cannot touch), and the held pairs.
+        flagged = ((gmin <= 0.0).astype(np.int64) @ self.group_member > 0) & ~(
+            gaps + self.o.margin > 0.0
+        )
+        for i, j in zip(*np.nonzero(flagged), strict=True):
+            node, p = nodes[i], self.pairs[j]
+            if self._anchored(node, p) + self.o.margin > 0.0:
+                continue  # an anchor keeps it apart
+            self._place(node)
+            self.exact_pairs += 1
+            if self.o.pair_collides(p):
+                node.hits += (p,)
+            else:
+                self._lower(node, p, 2)  # an anchor for the configurations nearby
+        for i, k in zip(*np.nonzero(inside), strict=True):
+            node, p = nodes[i], self.o.always_pairs[k]
+            if p in node.hits:
+                continue
+            self._place(node)
+            self.exact_pairs += 1
+            if self.o.pair_collides(p):
+                node.hits += (p,)
         return nodes
 
     def _place(self, node: _Node) -> None:
@@ -341,20 +345,23 @@ class PathCertifier:
         qb = np.array([c[0][1].q for c in cert])
         dq = np.array([c[3] for c in cert])
         dev = np.array([c[4] for c in cert])
+        best = np.inf  # the smallest fcl-settled bound so far: rows above it cannot matter
         for _ in range(REFINE):
             k, g = np.unravel_index(int(np.argmin(B)), B.shape)
             if tight[k, g] or not np.isfinite(B[k, g]):
                 break
             w = cert[k][0]
-            lo = np.full(len(cert), np.inf)
+            rows = np.flatnonzero(B[:, g] < best)
+            lo = np.full(len(rows), np.inf)
             for pair in self.o.group_pairs[g]:
                 # The interval's ends as anchors (every anchor gives a valid bound).
                 anchor_q = np.stack([w[0].q, w[1].q])
                 anchor_d = np.array([self._lower(w[0], pair, 2), self._lower(w[1], pair, 2)])
                 L = self.o.pair_lever[pair]
-                da = np.max(anchor_d[None] - np.abs(qa[:, None] - anchor_q[None]) @ L, axis=1)
-                db = np.max(anchor_d[None] - np.abs(qb[:, None] - anchor_q[None]) @ L, axis=1)
-                lo = np.minimum(lo, _chord_bound(da, db, dq @ L) - dev @ L)
-            B[:, g] = np.maximum(B[:, g], lo)
+                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ L, axis=1)
+                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ L, axis=1)
+                lo = np.minimum(lo, _chord_bound(da, db, dq[rows] @ L) - dev[rows] @ L)
+            B[rows, g] = np.maximum(B[rows, g], lo)
             tight[k, g] = True
+            best = min(best, float(B[k, g]))
         return float(B.min())
