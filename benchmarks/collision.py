@@ -2,7 +2,9 @@
 
 Prints our figure, the peer's figure measured in the same run on the same data, and the
 ratio. Peers: python-fcl's BVHModel (OBBRSS) build, trimesh.proximity.closest_point and
-trimesh.proximity.signed_distance (rtree-based). Run: ``python benchmarks/collision.py``.
+trimesh.proximity.signed_distance (rtree-based). Run: ``python benchmarks/collision.py``;
+``--only robot`` runs the robot-versus-cell part alone (sphere fits, spheres+SDF against
+python-fcl, Workbench.plan_motion with the dense exact check against the fast mode).
 """
 
 from __future__ import annotations
@@ -143,7 +145,7 @@ def robot_checks() -> None:
     q = rng.uniform(lim[:, 0], lim[:, 1], (10_000, 6))
     q[:, 1:3] = rng.uniform(-0.9, 0.9, (10_000, 2))
     t = time.perf_counter()
-    rep = checker.check(q)
+    rep = checker.check(q, early_exit=True)
     ours = (time.perf_counter() - t) / len(q)
 
     def bvh(m: trimesh.Trimesh) -> fcl.BVHModel:
@@ -175,7 +177,9 @@ def robot_checks() -> None:
     print(
         f"robot vs cell, MZ07 links 1-6 ({len(checker.radii)} spheres), {len(cell.faces)}-triangle cell, setup {setup:.1f} s"
     )
-    print(f"  spheres+SDF batched over 10000 configurations: {ours * 1e6:8.2f} us/configuration")
+    print(
+        f"  spheres+SDF batched over 10000 configurations (early exit per link): {ours * 1e6:8.2f} us/configuration"
+    )
     print(
         f"  fcl mesh collide, 6 links ({n_fcl} configurations): {collide * 1e6:8.2f} us   ratio {collide / ours:6.1f}x"
     )
@@ -187,24 +191,103 @@ def robot_checks() -> None:
     )
 
 
+def sphere_fits() -> None:
+    """Volume overshoot of the fitted spheres per MZ07 link (and the fit time, no cache)."""
+    from workbench.geometry.spheres import fit_spheres
+    from workbench.kinematics import DHRobot
+    from workbench.kinematics.link_shapes import link_meshes
+
+    meshes = link_meshes(DHRobot.mz07())
+    print(
+        "sphere fits, MZ07 links (volume overshoot = union / mesh volume - 1; fit time, no cache)"
+    )
+    print("  link    " + "".join(f"  k={k}: overshoot  time s" for k in (4, 6, 8)))
+    for i, m in enumerate(meshes):
+        row = f"  link{i}  "
+        for k in (4, 6, 8):
+            t = time.perf_counter()
+            s = fit_spheres(m, k)
+            row += f"       {s.volume_overshoot:9.2f}  {time.perf_counter() - t:6.2f}"
+        print(row)
+
+
+def plan_checks() -> None:
+    """Workbench.plan_motion on projects/mz07_cell.json: dense exact samples vs the fast mode."""
+    import tempfile
+    from pathlib import Path
+
+    import workbench.service.collision_engine as ce
+    from workbench.service import Workbench
+    from workbench.service.motion_plan import check_trajectory
+
+    project = Path(__file__).resolve().parents[1] / "projects" / "mz07_cell.json"
+    shared = ce.shared_engine
+    with tempfile.TemporaryDirectory() as tmp:
+        ce.default_cache_dir = lambda: Path(tmp) / "sdf"  # type: ignore[assignment]
+        t = time.perf_counter()
+        cold = Workbench.open(project).plan_motion()
+        cold_s = time.perf_counter() - t
+        wb = Workbench.open(project)  # a new session: spheres and field from the disk cache
+        t = time.perf_counter()
+        plan = wb.plan_motion()
+        warm_s = time.perf_counter() - t
+        fast = _best_of(lambda: wb.plan_motion())
+        ce.shared_engine = lambda *a, **k: (None, "benchmark: the dense exact check")  # type: ignore[assignment]
+        dense = _best_of(lambda: wb.plan_motion())
+        ce.shared_engine = shared  # type: ignore[assignment]
+        q, times = plan.positions, plan.times
+        exact_s = _best_of(lambda: wb.checker.check_path(q))
+        check_s = _best_of(lambda: check_trajectory(plan.trajectory, times, q, wb.checker))
+    rep = plan.collision_report
+    ref = wb.checker.check_path(q)
+    assert rep.colliding_indices == ref.colliding_indices
+    print(
+        f"Workbench.plan_motion, projects/mz07_cell.json ({len(q)} samples every 10 ms; best of 3)"
+    )
+    print(f"  dense exact check of every sample (before)      {dense:7.3f} s")
+    print(
+        f"  fast mode, engine in memory                      {fast:7.3f} s   ratio {dense / fast:5.2f}x"
+    )
+    print(f"  fast mode, new session (spheres+field from cache) {warm_s:6.3f} s")
+    print(f"  fast mode, cold (fits spheres, builds the field) {cold_s:7.3f} s")
+    print(
+        f"  the check alone: dense exact {exact_s * 1e3:7.1f} ms, fast {check_s * 1e3:7.1f} ms"
+        f" (ratio {exact_s / check_s:4.2f}x); {rep.flagged_samples} of {len(q)} samples flagged,"
+        f" {rep.exact_pairs} exact pair tests, {rep.evaluated} configurations"
+    )
+    print(f"  report: {rep.message}")
+    print(f"  (cold plan: {cold.collision_report.message})")
+
+
 def main() -> None:
     import sys
 
-    # --only lbvh,closest,sdf,robot runs just those sections (saves time under load).
-    only = {"lbvh", "closest", "sdf", "robot"}
+    # --only lbvh,closest,sdf,spheres,robot,plan runs just those sections (saves time under load).
+    sections = {"lbvh", "closest", "sdf", "spheres", "robot", "plan"}
+    only = set(sections)
     for k, arg in enumerate(sys.argv):
         if arg == "--only" and k + 1 < len(sys.argv):
             only = set(sys.argv[k + 1].split(","))
+            if only == {"robot"}:  # the robot-versus-cell part as a whole
+                only = {"spheres", "robot", "plan"}
     if "--skip-build" in sys.argv:
         only.discard("lbvh")
+    if unknown := only - sections:
+        sys.exit(
+            f"--only takes a comma-separated subset of {sorted(sections)}, got {sorted(unknown)}"
+        )
     if "lbvh" in only:
         lbvh_build()
     if "closest" in only:
         closest_point_queries()
     if "sdf" in only:
         sdf_build()
+    if "spheres" in only:
+        sphere_fits()
     if "robot" in only:
         robot_checks()
+    if "plan" in only:
+        plan_checks()
 
 
 if __name__ == "__main__":

@@ -99,6 +99,12 @@ def test_zero_false_negatives_on_10000_configurations(setup) -> None:
     fp = np.sum(rep.collides & ~exact) / max(np.sum(~exact), 1)
     assert fp < 0.5  # conservative, not useless (figure printed with -s)
     print(f"\n10000 configurations: {exact.sum()} collide, false-positive rate {fp:.1%}")
+    # Early exit (one bounding sphere per link first): never misses either, and its clearance
+    # is a lower bound of the full one.
+    fast = checker.check(q, early_exit=True)
+    assert not np.any(exact & ~fast.collides)
+    assert np.all(fast.clearance <= rep.clearance + 1e-12)
+    assert np.all(fast.collides[rep.collides])
 
 
 def test_spheres_contain_every_link_vertex(setup) -> None:

@@ -7,7 +7,14 @@ import pytest
 import trimesh
 
 from workbench.errors import InputError, MeshError
-from workbench.geometry.spheres import SphereSet, _contain_triangles, fit_spheres
+from workbench.geometry.spheres import (
+    SphereSet,
+    _assign,
+    _contain_triangles,
+    _need,
+    _tighten,
+    fit_spheres,
+)
 from workbench.geometry.subdivide import split_long_triangles
 
 
@@ -98,3 +105,38 @@ def test_bad_meshes() -> None:
         fit_spheres((np.zeros((0, 3)), np.zeros((0, 3), dtype=int)), 2)
     with pytest.raises(InputError, match="NaN"):
         fit_spheres(([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]), 2)
+
+
+def test_tightening_keeps_every_piece_in_one_sphere_and_never_grows() -> None:
+    """Twin: brute force over pieces x spheres; volume against the assignment it starts from."""
+    m = _link()
+    pieces = split_long_triangles(m.vertices[m.faces], 0.03)
+    rng = np.random.default_rng(4)
+    start = pieces.reshape(-1, 3)[rng.choice(len(pieces) * 3, 6, replace=False)]
+    radii0, _ = _assign(_need(pieces, start))
+    centres, radii = _tighten(pieces, start)
+    assert np.sum(radii**3) <= np.sum(radii0**3)
+    far = np.linalg.norm(pieces[:, :, None, :] - centres[None, None], axis=3).max(axis=1)
+    assert np.all(np.any(far <= radii[None] * (1 + 1e-12), axis=1))
+
+
+def test_cache_returns_the_same_fit_and_is_keyed_by_parameters(tmp_path) -> None:
+    m = _link()
+    fresh = fit_spheres(m, 4, seed=1, iterations=10)
+    first = fit_spheres(m, 4, seed=1, iterations=10, cache_dir=tmp_path)
+    (entry,) = list(tmp_path.glob("spheres-*.npz"))
+    again = fit_spheres(m, 4, seed=1, iterations=10, cache_dir=tmp_path)
+    for s in (first, again):
+        np.testing.assert_array_equal(s.centres, fresh.centres)
+        np.testing.assert_array_equal(s.radii, fresh.radii)
+        assert s.volume_overshoot == fresh.volume_overshoot
+    # The second call read the file: a marked entry comes back as stored.
+    with np.load(entry) as d:
+        data = {k: d[k] for k in d.files}
+    data["radii"] = data["radii"] * 2
+    np.savez(entry, **data)
+    np.testing.assert_array_equal(
+        fit_spheres(m, 4, seed=1, iterations=10, cache_dir=tmp_path).radii, fresh.radii * 2
+    )
+    fit_spheres(m, 3, seed=1, iterations=10, cache_dir=tmp_path)  # other parameters: own entry
+    assert len(list(tmp_path.glob("spheres-*.npz"))) == 2

@@ -73,11 +73,18 @@ def test_sdf_slice_matches_the_box_distance(svc: CollisionService) -> None:
 
 
 def test_cache_makes_the_second_build_instant(svc: CollisionService, tmp_path: Path) -> None:
-    svc.engine()
-    messages: list[str] = []
+    first = svc.engine()
+    # The same checker: the engine that plans use is shared, not rebuilt.
     again = CollisionService(svc.wb, cache_dir=svc.cache_dir)
-    again.engine(progress=lambda f, m: messages.append(m))
+    assert again.engine() is first
+    # A new session on the same project: the field and the sphere fits come from the disk cache.
+    messages: list[str] = []
+    fresh = CollisionService(Workbench.from_dict(PROJECT), cache_dir=svc.cache_dir)
+    eng = fresh.engine(progress=lambda f, m: messages.append(m))
     assert any("cache" in m for m in messages), messages
+    assert eng is not first
+    np.testing.assert_array_equal(eng.radii, first.radii)
+    np.testing.assert_array_equal(eng.centres, first.centres)
 
 
 def test_bad_input_through_the_service(svc: CollisionService) -> None:

@@ -31,6 +31,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.fcl_checker import CollisionReport
 from workbench.collision.motion_bound import JointLevers
+from workbench.collision.path_check import PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
 from workbench.errors import InputError
 from workbench.geometry.lbvh import LBVH
@@ -64,10 +65,15 @@ class ConfigCheck:
 class EnginePathReport(PathReport):
     """A joint path's report: `PathReport` fields plus the guarantee between samples.
 
-    clearance [m]: lower bound over the whole path (samples and between) when collision-free.
-    first_time [s] / first_q [rad]: where the first collision is (a sample or between two);
-    link/obstacle: the colliding pair's names; penetration [m]: deepest vertex of either body
-    inside the other. `evaluated`: configurations checked, subdivisions included.
+    `colliding_indices`: samples in collision (the exact verdict of each sample);
+    `between_indices`: samples i whose interval to i+1 collides (or could not be certified)
+    between them. clearance [m]: lower bound over the whole path (samples and between) when
+    collision-free. first_time [s] / first_q [rad]: where the first collision is (a sample
+    or, `between`, between two); link/obstacle: the colliding pair's names; penetration [m]:
+    deepest vertex of either body inside the other. `evaluated`: configurations checked,
+    subdivisions included; `flagged_samples`: samples the fast mode sent to the exact check;
+    `exact_pairs`: exact pair tests (collide or distance) run. `fallback`: why the fast mode
+    was not used (the samples were then checked densely and exactly, not between them).
     """
 
     mode: str = "spheres"
@@ -79,10 +85,26 @@ class EnginePathReport(PathReport):
     penetration: float = 0.0
     evaluated: int = 0
     certified: bool = True
+    between: bool = False
+    between_indices: tuple[int, ...] = ()
+    flagged_samples: int = 0
+    exact_pairs: int = 0
+    fallback: str | None = None
 
     @property
     def message(self) -> str:
         """Return the report as one sentence for a user (mm)."""
+        if self.fallback is not None:
+            if self.collision_free:
+                return (
+                    f"collision-free at every sample ({self.samples} samples, exact check;"
+                    f" not certified between samples: {self.fallback})"
+                )
+            return (
+                f"collision at t = {self.first_time:.3f} s (sample {self.first_index}):"
+                f" {self.link} hits {self.obstacle} (exact check of every sample;"
+                f" {self.fallback})"
+            )
         if self.collision_free:
             return (
                 f"collision-free, including between samples, with clearance"
@@ -95,9 +117,13 @@ class EnginePathReport(PathReport):
                 " below the subdivision limit; treat it as touching"
             )
         where = f"t = {self.first_time:.3f} s" if self.first_time is not None else "?"
-        between = "" if self.first_index is None else f" (sample {self.first_index})"
+        at = (
+            f" (between samples {self.first_index} and {self.first_index + 1})"
+            if self.between and self.first_index is not None
+            else f" (sample {self.first_index})"
+        )
         return (
-            f"collision at {where}{between}: {self.link} hits {self.obstacle},"
+            f"collision at {where}{at}: {self.link} hits {self.obstacle},"
             f" penetration {self.penetration * 1e3:.1f} mm"
         )
 
@@ -107,7 +133,10 @@ class CollisionEngine:
 
     Built from the exact checker (its bodies, cell and enabled self-collision pairs).
     margin [m]: clearance demanded. spheres_per_link, resolution, subdivisions, cache_dir:
-    sphere and SDF parameters (spheres mode); progress(fraction, message) during builds.
+    sphere and SDF parameters (spheres mode; fits and fields are cached in cache_dir).
+    band [m]: the field's band, default the largest sphere radius + margin (every sphere
+    test then reads an interpolated value, not a far lower bound). progress(fraction,
+    message) during builds.
     """
 
     def __init__(
@@ -119,7 +148,7 @@ class CollisionEngine:
         spheres_per_link: int = 8,
         resolution: int = 64,
         subdivisions: int = 4,
-        band: float | None = 0.0,
+        band: float | None = None,
         cache_dir: str | None = None,
         progress: Progress | None = None,
     ) -> None:
@@ -153,12 +182,14 @@ class CollisionEngine:
         )
         self.sdf: SparseSDF | None = None
         if mode == "spheres":
+            if int(resolution) < 2:
+                raise InputError(f"resolution: {resolution} must be >= 2 coarse cells")
             if spheres_per_link < 1:
                 raise InputError(f"spheres_per_link: {spheres_per_link} must be a positive integer")
             cs, rs, owner = [], [], []
             for k, i in enumerate(range(len(names))):
                 report(0.3 * k / len(names), f"fitting spheres to {names[i]}")
-                s = fit_spheres(self.meshes[i], int(spheres_per_link), seed=0)
+                s = fit_spheres(self.meshes[i], int(spheres_per_link), seed=0, cache_dir=cache_dir)
                 cs.append(s.centres)
                 rs.append(s.radii)
                 owner.append(np.full(len(s.radii), i))
@@ -182,17 +213,100 @@ class CollisionEngine:
             self.pair_b = np.concatenate(pb) if pb else np.zeros(0, np.int64)
             cell = self.cell_mesh()
             if cell is not None:
+                r = float(self.radii.max()) + self.margin if band is None else float(band)
+                # Coarse cells from the cell's size, but at least r / 8: a small cell with a
+                # band of many cells would mark (r / h)^3 cells per triangle.
+                h = max(float(np.ptp(cell.vertices, axis=0).max()) / max(resolution, 1), r / 8)
                 self.sdf = SparseSDF.from_mesh(
                     cell,
-                    resolution=resolution,
+                    cell_size=h,
                     subdivisions=subdivisions,
-                    band=band,
+                    band=r,
                     cache_dir=cache_dir,
                     progress=lambda f, m: report(0.3 + 0.7 * f, m),
                 )
         if mode == "capsules":
             self._capsules(checked)
+        self._groups(idx)
+        self._body_index = idx
+        self._pending = np.zeros((0, 4, 4))
+        self._placed: set[str] = set()
         report(1.0, "collision engine ready")
+
+    def _groups(self, idx: dict[str, int]) -> None:
+        """Set which exact pairs each item stands for, and the pairs always checked exactly.
+
+        Items are contiguous per group (`group_start`). A sphere against the cell stands for its
+        body against every obstacle; a sphere pair, a capsule item and an exact item for one
+        pair. `always_pairs`: pairs where one body could lie wholly inside the other (its
+        largest extent is below the other's diagonal) without touching it; spheres hold
+        surfaces, so those pairs get the exact test (collide, then containment) at every
+        configuration.
+        """
+        groups: list[list[tuple[str, str]]] = []
+        item_group: list[NDArray[np.int64]] = []
+        if self.mode == "spheres":
+            if self.sdf is not None:
+                bodies = self.sphere_body[self.cell_spheres]
+                for b in np.unique(bodies):
+                    name = self.body_names[b]
+                    item_group.append(np.full(int(np.sum(bodies == b)), len(groups)))
+                    groups.append([p for p in self.cell_pairs if p[0] == name])
+            for a, b in self.self_pairs:
+                n = int(np.sum(self.sphere_body == idx[a]) * np.sum(self.sphere_body == idx[b]))
+                item_group.append(np.full(n, len(groups)))
+                groups.append([(a, b)])
+        else:
+            pairs = list(self.exact.scene.pairs) if self.mode == "exact" else self._cap_pairs
+            for p in pairs:
+                item_group.append(np.array([len(groups)]))
+                groups.append([p])
+        self.group_pairs = groups
+        self.item_group = (
+            np.concatenate(item_group).astype(np.int64) if item_group else np.zeros(0, np.int64)
+        )
+        self.group_start = np.flatnonzero(np.r_[True, np.diff(self.item_group) != 0]).astype(
+            np.int64
+        )
+        scene = self.exact.scene
+        size = {n: np.asarray(scene._entry(n).mesh.extents, float) for n in scene.moving}
+        size.update({n: np.asarray(e.mesh.extents, float) for n, e in scene.static.items()})
+
+        # A body wholly inside an obstacle has its surface inside, which the items catch; an
+        # obstacle (or another body) wholly inside a body does not touch the body's spheres.
+        # Such (inner, outer) pairs, where inner's largest extent is below outer's diagonal
+        # (>= its diameter), get the containment test of the exact checker (inner's probe
+        # vertex inside outer) at every configuration, batched in `contained`.
+        def fits(a: str, b: str) -> bool:
+            inner, outer = scene._entry(a), scene._entry(b)
+            # fcl's collide already finds a mesh inside a primitive (a solid).
+            return outer.closed and bool(
+                np.max(inner.mesh.extents) <= np.linalg.norm(outer.mesh.extents)
+            )
+
+        self.always_pairs: list[tuple[str, str]] = []
+        self._inside_tests: list[tuple[int, str, str]] = []  # (always pair, inner, outer)
+        for a, b in scene.pairs if self.mode != "exact" else []:
+            tests = [(b, a)] if fits(b, a) else []
+            if b in scene.moving and fits(a, b):
+                tests.append((a, b))
+            if tests:
+                self._inside_tests += [(len(self.always_pairs), i, o) for i, o in tests]
+                self.always_pairs.append((a, b))
+        self._convex = {n: scene._entry(n).halfspaces for _, _, n in self._inside_tests}
+        self.pair_lever = {
+            (a, b): (
+                self._relative(
+                    np.array([idx[a]]),
+                    np.array([idx[b]]),
+                    self.body_lever[[idx[a]]],
+                    self.body_lever[[idx[b]]],
+                )[0]
+                if b in idx
+                else self.body_lever[idx[a]]
+            )
+            for a, b in scene.pairs
+        }
 
     # -- geometry ---------------------------------------------------------------------
     def cell_mesh(self) -> trimesh.Trimesh | None:
@@ -224,6 +338,12 @@ class CollisionEngine:
             [self.levers_of.levers(int(self.body_frame[i]), s) for i, s in enumerate(self.cap_seg)]
         )
         self.cap_checked = checked
+        self._cap_pairs = [
+            (self.body_names[b], name)
+            for b in checked
+            for name in self.obstacles
+            if (self.body_names[b], name) in self.cell_pairs
+        ] + list(self.self_pairs)
         boxes = []
         for name in self.obstacles:
             e = self.exact.scene.static[name]
@@ -246,8 +366,7 @@ class CollisionEngine:
         """Return world sphere centres (S,3) [m], radii (S,) [m] and each sphere's body name."""
         if self.mode != "spheres":
             raise InputError(f"spheres: the {self.mode} mode has no spheres; use mode 'spheres'")
-        T = self.body_poses(q)[0][self.sphere_body]
-        c = np.einsum("sij,sj->si", T[:, :3, :3], self.centres) + T[:, :3, 3]
+        c = self.sphere_centres(np.atleast_2d(np.asarray(q, float)))[0]
         return c, self.radii.copy(), [self.body_names[b] for b in self.sphere_body]
 
     def _relative(
@@ -280,9 +399,24 @@ class CollisionEngine:
             return self._capsule_items(qs)
         return self._exact_items(qs)
 
+    def sphere_centres(self, qs: ArrayLike) -> FloatArray:
+        """Return world sphere centres (N, S, 3) [m] at qs (N, dof) [rad] (spheres mode)."""
+        if not hasattr(self, "_pad_h"):
+            # Centres padded per body, homogeneous (B, 4, K): one batched matmul places all.
+            nb, k = len(self.body_names), int(np.bincount(self.sphere_body).max())
+            pad = np.zeros((nb, 4, k))
+            slot = np.zeros(len(self.radii), np.int64)
+            for b in range(nb):
+                own = np.flatnonzero(self.sphere_body == b)
+                pad[b, :3, : len(own)], pad[b, 3, : len(own)] = self.centres[own].T, 1.0
+                slot[own] = b * k + np.arange(len(own))
+            self._pad_h, self._slot = pad, slot
+        T = self.body_poses(qs)[:, :, :3, :]  # (N, B, 3, 4)
+        c = np.matmul(T, self._pad_h).swapaxes(-1, -2)  # (N, B, K, 3)
+        return c.reshape(len(c), -1, 3)[:, self._slot]
+
     def _sphere_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
-        T = self.body_poses(qs)[:, self.sphere_body]
-        c = np.einsum("nsij,sj->nsi", T[..., :3, :3], self.centres) + T[..., :3, 3]
+        c = self.sphere_centres(qs)
         n = len(c)
         cols, levers = [], []
         if self.sdf is not None and self.cell_spheres.size:
@@ -421,130 +555,185 @@ class CollisionEngine:
                 depth = max(depth, float(bvh.closest_points(local[inside])[1].max()))
         return depth
 
+    def contained(self, qs: FloatArray) -> NDArray[np.bool_]:
+        """Return (N, len(always_pairs)): whether one body of the pair holds the other's probe.
+
+        The containment half of the exact checker's test, batched over configurations: the
+        inner body's probe vertex tested against the outer body (half-spaces when convex,
+        trimesh's ray test otherwise).
+        """
+        out = np.zeros((len(qs), len(self.always_pairs)), bool)
+        if not self._inside_tests:
+            return out
+        scene = self.exact.scene
+        T = self.body_poses(qs)
+        idx = {nm: i for i, nm in enumerate(self.body_names)}
+
+        def pose(name: str) -> FloatArray:
+            if name in idx:
+                return T[:, idx[name]]
+            return np.broadcast_to(scene.static[name].T, (len(qs), 4, 4))
+
+        for k, inner, outer in self._inside_tests:
+            Ti, To = pose(inner), pose(outer)
+            p = np.einsum("nij,j->ni", Ti[:, :3, :3], scene._entry(inner).probe) + Ti[:, :3, 3]
+            local = np.einsum("nji,nj->ni", To[:, :3, :3], p - To[:, :3, 3])
+            planes = self._convex[outer]
+            if planes is not None:
+                inside = np.all(local @ planes[0].T <= planes[1], axis=1)
+            else:
+                inside = np.asarray(scene._entry(outer).mesh.contains(local), bool)
+            out[:, k] |= inside
+        return out
+
+    # -- the path certifier's oracle ----------------------------------------------------
+    def path_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """Return `items` for the path certifier; the exact mode leaves every pair to fcl."""
+        if self.mode == "exact":
+            lev = np.stack([self.pair_lever[p] for p in self.exact.scene.pairs])
+            return np.full((len(qs), len(lev)), -1.0), lev  # flagged: every pair to fcl
+        return self.items(qs)
+
+    def poses(self, qs: FloatArray) -> FloatArray:
+        """Return world poses (N, B, 4, 4) of the moving bodies, for `place`."""
+        return self.body_poses(qs)
+
+    def place(self, poses: FloatArray) -> None:
+        """Set the world poses (B, 4, 4) of the moving bodies; each is placed when first used."""
+        self._pending = poses
+        self._placed = set()
+
+    def _ready(self, pair: tuple[str, str]) -> None:
+        moving = self.exact.scene.moving
+        for name in pair:
+            if name in moving and name not in self._placed:
+                moving[name].place(self._pending[self._body_index[name]])
+                self._placed.add(name)
+
+    def aabb_gaps(self, poses: FloatArray) -> FloatArray:
+        """Return (N, P): gaps [m] between the world bounding boxes of every exact pair, less the margin.
+
+        poses (N, B, 4, 4) of the moving bodies; pairs in `exact.scene.pairs` order. A gap is
+        a lower bound of the pair's distance (0 where the boxes overlap).
+        """
+        scene = self.exact.scene
+        if not hasattr(self, "_corners"):
+            self._corners = np.stack([scene.moving[n].local_corners for n in self.body_names])
+            self._pair_rows = [
+                (self._body_index.get(a, -1), self._body_index.get(b, -1), a, b)
+                for a, b in scene.pairs
+            ]
+        w = (
+            np.einsum("nbij,bkj->nbki", poses[..., :3, :3], self._corners)
+            + poses[:, :, None, :3, 3]
+        )
+        lo, hi = w.min(axis=2), w.max(axis=2)  # (N, B, 3)
+        out = np.empty((len(poses), len(self._pair_rows)))
+        for k, (ia, ib, _a, b) in enumerate(self._pair_rows):
+            alo, ahi = lo[:, ia], hi[:, ia]
+            if ib >= 0:
+                blo, bhi = lo[:, ib], hi[:, ib]
+            else:
+                blo, bhi = scene.static[b].aabb
+            gap = np.maximum(np.maximum(alo - bhi, blo - ahi), 0.0)
+            out[:, k] = np.sqrt(np.einsum("ni,ni->n", gap, gap))
+        return out - self.margin
+
+    def pair_collides(self, pair: tuple[str, str]) -> bool:
+        """Return the exact verdict (fcl collide, then containment) of a pair as placed."""
+        self._ready(pair)
+        return self.exact.scene.collides(*pair)
+
+    def pair_distance(self, pair: tuple[str, str]) -> float:
+        """Return the pair's surface distance [m] as placed, less the margin."""
+        self._ready(pair)
+        return self.exact.scene.distance(*pair) - self.margin
+
     def check_path(
         self,
         qs: ArrayLike,
         times: ArrayLike | None = None,
         *,
         deviation: ArrayLike | None = None,
+        sampler: Callable[[FloatArray], FloatArray] | None = None,
+        acceleration: ArrayLike | None = None,
         max_depth: int = 12,
         budget: int = 5000,
+        progress: Progress | None = None,
     ) -> EnginePathReport:
         """Return the report of the path through samples qs (N, dof) [rad], between samples too.
 
-        times (N,) [s] (default 0, 1, 2, ...). deviation (dof,) [rad]: bound on how far the real
-        motion strays from the straight joint segment between samples. Intervals that cannot
-        be certified are bisected up to `max_depth` times; what the fast test flags is
-        confirmed with the exact checker.
+        times (N,) [s] (default 0, 1, 2, ...). Between samples the motion is either the
+        straight joint segment, or within deviation (dof,) [rad] of it, or (with `sampler`,
+        times -> (M, dof) [rad], the real motion) within ``acceleration * h**2 / 8`` of it,
+        acceleration (dof,) [rad/s^2] bounding |q''|. Intervals that cannot be certified are
+        bisected up to `max_depth` times (at most `budget` configurations in all). All
+        samples go through the fast items at once; what they flag is confirmed exactly, pair
+        by pair, so `colliding_indices` equals the dense exact check of every sample.
         """
         q = np.atleast_2d(np.asarray(qs, float))
+        self.body_poses(q)  # validates the shape
         n = len(q)
         t = np.arange(n, dtype=float) if times is None else np.asarray(times, float).reshape(-1)
         if t.shape != (n,) or not np.all(np.isfinite(t)):
             raise InputError(f"times: expected {n} finite values [s], got shape {t.shape}")
         dev = np.zeros(self.dof) if deviation is None else np.abs(np.asarray(deviation, float))
-        clr, lev = self.items(q)
-        evaluated = n
-        low = clr.min(axis=1)
-        flagged = low <= 0.0
-        colliding = np.zeros(n, bool)
-        confirmed: dict[int, CollisionReport] = {}
-        for fi in np.flatnonzero(flagged):
-            i = int(fi)
-            rep = self.exact.check(q[i], distance=False)
-            if rep.in_collision:
-                colliding[i] = True
-                confirmed[int(i)] = rep
-        tube = 2.0 * (lev @ dev)
-        between: list[tuple[Any, Any, Any, Any]] = []
-        # A flagged sample that is free exactly: the fast bound cannot certify next to it.
-        fallback = flagged & ~colliding if self.mode != "exact" else np.zeros(n, bool)
-        # Intervals to certify: (t_a, t_b, q_a, q_b, clr_a, clr_b, start sample, depth).
-        work: list[Any] = []
-        for k in range(n - 1):
-            i = int(k)
-            if colliding[i] or colliding[i + 1]:
-                continue
-            if fallback[i] or fallback[i + 1]:
-                between.append(((t[i] + t[i + 1]) / 2, i, (q[i] + q[i + 1]) / 2, None))
-                continue
-            work.append((t[i], t[i + 1], q[i], q[i + 1], clr[i], clr[i + 1], i, 0))
-        clearance = np.inf
-        if n == 1 and not colliding[0]:
-            clearance = float(self.exact_twin().items(q)[0].min()) if fallback[0] else float(low[0])
-        while work:
-            need = [np.abs(w[3] - w[2]) @ lev.T + tube for w in work]
-            todo = [w for w, nd in zip(work, need, strict=True) if not np.all(w[4] + w[5] > nd)]
-            for w, nd in zip(work, need, strict=True):
-                if np.all(w[4] + w[5] > nd):
-                    clearance = min(clearance, float(np.min((w[4] + w[5] - nd) / 2)))
-            if not todo:
-                break
-            if evaluated + len(todo) > budget:  # give up on these: report them uncertified
-                between.extend(((w[0] + w[1]) / 2, w[6], (w[2] + w[3]) / 2, None) for w in todo)
-                break
-            mids = np.array([(w[2] + w[3]) / 2 for w in todo])
-            mclr, _ = self.items(mids)
-            evaluated += len(mids)
-            work = []
-            for w, qm, cm in zip(todo, mids, mclr, strict=True):
-                tm = (w[0] + w[1]) / 2
-                if cm.min() <= 0.0:
-                    rep = self.exact.check(qm, distance=False)
-                    between.append((tm, w[6], qm, rep if rep.in_collision else None))
-                    continue
-                if w[7] >= max_depth:
-                    between.append((tm, w[6], qm, None))
-                    continue
-                work.append((w[0], tm, w[2], qm, w[4], cm, w[6], w[7] + 1))
-                work.append((tm, w[1], qm, w[3], cm, w[5], w[6], w[7] + 1))
-        if self.mode != "exact" and any(rep is None for *_, rep in between):
-            # The fast bound could not settle these intervals (false positives near a
-            # flagged sample): settle them with exact distances and the bodies' levers.
-            exact = self.exact_twin()
-            kept = [e for e in between if e[3] is not None]
-            for i in sorted({e[1] for e in between if e[3] is None}):
-                sub = exact.check_path(
-                    q[i : i + 2], t[i : i + 2], deviation=dev, max_depth=max_depth, budget=64
-                )
-                evaluated += sub.evaluated
-                if sub.collision_free:
-                    clearance = min(clearance, sub.clearance)
-                elif sub.first_time is not None and sub.first_q is not None:
-                    kept.append((sub.first_time, i, sub.first_q, sub.first_report))
-            between = kept
-        hits = np.flatnonzero(colliding)
-        events: list[tuple[Any, Any, Any, Any]] = [
-            (float(t[i]), int(i), q[i], confirmed[int(i)]) for i in hits
-        ] + [(tm, None, qm, rep) for tm, _, qm, rep in between]
-        for _, i0, _, _ in [(tm, i, qm, r) for tm, i, qm, r in between]:
-            colliding[i0] = True  # the interval starting at this sample collides
-        events.sort(key=lambda e: e[0])
-        free = not events
+        acc = None if acceleration is None else np.abs(np.asarray(acceleration, float))
+        if dev.shape != (self.dof,) or (acc is not None and acc.shape != (self.dof,)):
+            raise InputError(f"deviation/acceleration: expected {self.dof} values per joint")
+        if sampler is not None and acc is None:
+            raise InputError("acceleration: a sampler needs the bound on |q''| [rad/s^2]")
+        out = PathCertifier(self).run(
+            q,
+            t,
+            sampler=sampler,
+            acceleration=acc,
+            deviation=dev,
+            max_depth=max_depth,
+            budget=budget,
+            progress=progress,
+        )
+        hits = sorted(out.sample_hits)
+        between = sorted({e[1] for e in out.events})
         base: dict[str, Any] = {
-            "collision_free": free,
+            "collision_free": not hits and not out.events,
             "first_index": None,
             "first_report": None,
-            "min_distance": max(clearance, 0.0) if free else 0.0,
+            "min_distance": 0.0,
             "samples": n,
-            "colliding_indices": tuple(int(i) for i in np.flatnonzero(colliding)),
+            "colliding_indices": tuple(hits),
             "mode": self.mode,
-            "clearance": max(clearance, 0.0) if free else 0.0,
-            "evaluated": evaluated,
+            "clearance": 0.0,
+            "evaluated": out.evaluated,
+            "between_indices": tuple(between),
+            "flagged_samples": out.flagged,
+            "exact_pairs": out.exact_pairs,
         }
-        if free:
-            return EnginePathReport(**base)  # type: ignore[arg-type]
-        tm, i0, qm, rep = events[0]
+        if base["collision_free"]:
+            clr = max(out.clearance, 0.0) if np.isfinite(out.clearance) else float("inf")
+            base.update(min_distance=clr, clearance=clr)
+            return EnginePathReport(**base)
+        # The first event: a colliding sample or an interval (collision or not certified).
+        cands: list[tuple[float, int | None, FloatArray, tuple[tuple[str, str], ...]]]
+        cands = [(float(t[i]), i, q[i], out.sample_hits[i]) for i in hits[:1]]
+        cands += [(e[0], None, e[2], e[3]) for e in out.events[:1]]
+        first = min(cands, key=lambda c: c[0])
+        tm, i0, qm, pairs = first
         extra: dict[str, object] = {
             "first_index": i0 if i0 is not None else int(np.searchsorted(t, tm) - 1),
-            "first_report": rep,
             "first_time": tm,
             "first_q": qm,
+            "between": i0 is None,
         }
-        if rep is None:
-            extra["certified"] = False
+        if pairs:
+            a, b = pairs[0]
+            extra.update(
+                first_report=CollisionReport(pairs, 0.0, pairs[0], len(self.exact.scene.pairs)),
+                link=a,
+                obstacle=b,
+                penetration=self.penetration(qm, a, b),
+            )
         else:
-            a, b = rep.colliding[0]
-            extra.update(link=a, obstacle=b, penetration=self.penetration(qm, a, b))
+            extra["certified"] = False
         base.update(extra)
-        return EnginePathReport(**base)  # type: ignore[arg-type]
+        return EnginePathReport(**base)

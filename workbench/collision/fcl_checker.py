@@ -48,6 +48,14 @@ class _Entry:
         self.local_corners = np.array(list(itertools.product(*zip(lo, hi, strict=True))))
         # A point on the surface, for the containment test.
         self.probe = np.asarray(mesh.vertices[0], float)
+        self.closed = solid.kind == "mesh" and bool(mesh.is_watertight)
+        # Convex closed meshes (generated links, hulls) answer containment by half-spaces;
+        # the surface itself counts as inside (1e-9 m slack), as for trimesh's ray test.
+        self.halfspaces: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
+        if self.closed and mesh.is_convex:
+            n = np.asarray(mesh.face_normals, float)
+            off = np.einsum("fi,fi->f", n, np.asarray(mesh.triangles_center, float)) + 1e-9
+            self.halfspaces = (n, off)
         self.place(np.eye(4))
 
     def place(self, T: NDArray[np.float64]) -> None:
@@ -57,9 +65,11 @@ class _Entry:
         self.aabb = (w.min(0), w.max(0))
 
     def contains_world_point(self, p: NDArray[np.float64]) -> bool:
-        if self.solid.kind != "mesh" or not self.mesh.is_watertight:
+        if not self.closed:
             return False  # fcl primitives are solids already; open meshes have no inside
         local = (p - self.T[:3, 3]) @ self.T[:3, :3]
+        if self.halfspaces is not None:
+            return bool(np.all(self.halfspaces[0] @ local <= self.halfspaces[1]))
         return bool(self.mesh.contains(local[None])[0])
 
 
@@ -101,31 +111,50 @@ class CollisionScene:
     def _entry(self, name: str) -> _Entry:
         return self.moving.get(name) or self.static[name]
 
+    def place(self, poses: dict[str, NDArray[np.float64]]) -> None:
+        """Place moving bodies at `poses` (name -> (4, 4) world pose)."""
+        for name, T in poses.items():
+            self.moving[name].place(T)
+
+    def collides(self, a: str, b: str) -> bool:
+        """Return whether bodies a and b (as placed) touch, or one holds the other."""
+        ea, eb = self._entry(a), self._entry(b)
+        if fcl.collide(ea.obj, eb.obj, fcl.CollisionRequest(), fcl.CollisionResult()) > 0:
+            return True
+        if not _aabbs_overlap(ea.aabb, eb.aabb):
+            return False
+        return eb.contains_world_point(ea.T[:3, :3] @ ea.probe + ea.T[:3, 3]) or (
+            ea.contains_world_point(eb.T[:3, :3] @ eb.probe + eb.T[:3, 3])
+        )
+
+    def distance(self, a: str, b: str) -> float:
+        """Return fcl's distance [m] between the surfaces of bodies a and b as placed (>= 0)."""
+        ea, eb = self._entry(a), self._entry(b)
+        d = fcl.distance(ea.obj, eb.obj, fcl.DistanceRequest(), fcl.DistanceResult())
+        return max(float(d), 0.0)
+
+    def aabb_gap(self, a: str, b: str) -> float:
+        """Return the distance [m] between the world bounding boxes of a and b (0 when they overlap)."""
+        ea, eb = self._entry(a), self._entry(b)
+        gap = np.maximum(np.maximum(ea.aabb[0] - eb.aabb[1], eb.aabb[0] - ea.aabb[1]), 0.0)
+        return float(np.sqrt(gap @ gap))
+
     def check(
         self, poses: dict[str, NDArray[np.float64]], *, distance: bool = True
     ) -> CollisionReport:
         """Return the report for moving bodies placed at `poses` (name -> (4, 4) world pose)."""
-        for name, T in poses.items():
-            self.moving[name].place(T)
+        self.place(poses)
         colliding: list[tuple[str, str]] = []
         best, best_pair = np.inf, None
-        request = fcl.CollisionRequest()
-        dist_request = fcl.DistanceRequest()
         for a, b in self.pairs:
-            ea, eb = self._entry(a), self._entry(b)
-            hit = fcl.collide(ea.obj, eb.obj, request, fcl.CollisionResult()) > 0
-            if not hit and _aabbs_overlap(ea.aabb, eb.aabb):
-                hit = eb.contains_world_point(ea.T[:3, :3] @ ea.probe + ea.T[:3, 3]) or (
-                    ea.contains_world_point(eb.T[:3, :3] @ eb.probe + eb.T[:3, 3])
-                )
-            if hit:
+            if self.collides(a, b):
                 colliding.append((a, b))
                 best, best_pair = 0.0, (a, b)
                 continue
             if distance and best > 0:
-                d = fcl.distance(ea.obj, eb.obj, dist_request, fcl.DistanceResult())
+                d = self.distance(a, b)
                 if d < best:
-                    best, best_pair = max(float(d), 0.0), (a, b)
+                    best, best_pair = d, (a, b)
         return CollisionReport(tuple(colliding), float(best), best_pair, len(self.pairs))
 
 

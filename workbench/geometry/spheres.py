@@ -14,7 +14,10 @@ surface (an obstacle entirely inside a link, never touching its surface, is not 
 
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -26,6 +29,7 @@ from workbench.geometry.sdf import is_watertight
 from workbench.geometry.subdivide import split_long_triangles
 
 FloatArray = NDArray[np.float64]
+_FORMAT = 2  # bump when the fit changes: cached fits of older versions are not reused
 
 
 @dataclass(frozen=True)
@@ -81,20 +85,101 @@ def _decode(centres: FloatArray, pts: FloatArray) -> FloatArray:
 
 def _contain_triangles(tri: FloatArray, centres: FloatArray, scale: float) -> FloatArray:
     """Return radii (k,) such that each triangle lies in one sphere (all three vertices in it)."""
-    need = np.zeros((len(tri), len(centres)))
-    for i in range(3):  # farthest vertex of each triangle from each centre, (T, k)
-        np.maximum(need, np.linalg.norm(tri[:, i, None, :] - centres[None], axis=2), out=need)
-    radii = np.zeros(len(centres))
-    best: FloatArray | None = None
-    for _ in range(4):  # reassign to spheres that already fit, then shrink to what is needed
+    need = _need(tri, centres)
+    radii, _ = _assign(need)
+    return radii * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
+
+
+def _need(tri: FloatArray, centres: FloatArray) -> FloatArray:
+    """Return (T, k): the farthest vertex of each triangle from each centre [m]."""
+    c2 = np.sum(centres**2, axis=1)[None]
+    need2 = np.zeros((len(tri), len(centres)))
+    for i in range(3):
+        p = tri[:, i]
+        d2 = np.sum(p**2, axis=1)[:, None] - 2 * p @ centres.T + c2
+        np.maximum(need2, d2, out=need2)
+    return np.sqrt(np.maximum(need2, 0.0))
+
+
+def _assign(need: FloatArray) -> tuple[FloatArray, NDArray[np.int64]]:
+    """Return radii (k,) and each triangle's sphere (T,) so that every triangle is in its sphere.
+
+    Triangles go to a sphere that already holds them (least inflation first, then the
+    tightest), then each radius shrinks to its farthest assigned vertex; best of 4 rounds.
+    """
+    k = need.shape[1]
+    radii = np.zeros(k)
+    best: tuple[FloatArray, NDArray[np.int64]] | None = None
+    rows = np.arange(len(need))
+    for _ in range(4):
         extra = np.maximum(need - radii[None], 0.0)
-        j = np.argmin(extra * 1e6 + need, axis=1)  # least inflation first, then tightest
-        radii = np.zeros(len(centres))
-        np.maximum.at(radii, j, need[np.arange(len(tri)), j])
-        if best is None or np.sum(radii**3) < np.sum(best**3):
-            best = radii.copy()
+        j = np.argmin(extra * 1e6 + need, axis=1)
+        radii = np.zeros(k)
+        np.maximum.at(radii, j, need[rows, j])
+        if best is None or np.sum(radii**3) < np.sum(best[0] ** 3):
+            best = (radii.copy(), j)
     assert best is not None
-    return best * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
+    return best
+
+
+def _enclosing_centres(
+    pts: FloatArray, owner: NDArray[np.int64], centres: FloatArray, rounds: int = 60
+) -> FloatArray:
+    """Return centres (k, 3) moved towards each sphere's smallest ball around its points.
+
+    Badoiu-Clarkson steps (move a fraction 1/(t+2) towards the farthest point); the centre
+    kept is the one with the smallest farthest distance seen. `owner` (P,) gives each point's
+    sphere; spheres without points keep their centre.
+    """
+    out = centres.copy()
+    for j in range(len(centres)):  # k is small (spheres per link)
+        p = np.unique(pts[owner == j], axis=0)
+        if len(p) == 0:
+            continue
+        c = centres[j].copy()
+        d2 = np.sum((p - c) ** 2, axis=1)
+        i = int(np.argmax(d2))
+        best, best_r2 = c.copy(), d2[i]
+        for t in range(rounds):
+            c += (p[i] - c) / (t + 2.0)
+            d2 = np.sum((p - c) ** 2, axis=1)
+            i = int(np.argmax(d2))
+            if d2[i] < best_r2:
+                best, best_r2 = c.copy(), d2[i]
+        out[j] = best
+    return out
+
+
+def _tighten(
+    pieces: FloatArray, centres: FloatArray, rounds: int = 8
+) -> tuple[FloatArray, FloatArray]:
+    """Return centres (k,3) and radii (k,) holding every piece in one sphere, smaller in total.
+
+    Alternates assignment (`_assign`) and re-centring each sphere on the smallest ball around
+    the vertices of its pieces (a Lloyd iteration for the k-centre cover). Every candidate is
+    valid (each piece in its sphere); the smallest total volume wins.
+    """
+    need = _need(pieces, centres)
+    radii, j = _assign(need)
+    best = (centres.copy(), radii)
+    pts = pieces.reshape(-1, 3)
+    for _ in range(rounds):
+        centres = _enclosing_centres(pts, np.repeat(j, 3), centres)
+        need = _need(pieces, centres)
+        radii, j = _assign(need)
+        if np.sum(radii**3) < np.sum(best[1] ** 3):
+            best = (centres.copy(), radii)
+        else:
+            break
+    return best
+
+
+def _axis_seeds(cover: FloatArray, count: int) -> FloatArray:
+    """Return `count` centres: the mean cover point of equal-count slabs along the principal axis."""
+    mean = cover.mean(axis=0)
+    _, _, vt = np.linalg.svd(cover - mean, full_matrices=False)
+    order = np.argsort((cover - mean) @ vt[0])
+    return np.stack([cover[part].mean(axis=0) for part in np.array_split(order, count)])
 
 
 def fit_spheres(
@@ -105,11 +190,13 @@ def fit_spheres(
     iterations: int = 60,
     particles: int = 24,
     samples: int = 2000,
+    cache_dir: str | Path | None = None,
 ) -> SphereSet:
     """Return `count` spheres enveloping `mesh` (trimesh.Trimesh or (vertices, faces)) [m].
 
     iterations/particles: PSO budget. samples: surface points the swarm must cover (besides
-    vertices). Every triangle is contained exactly afterwards. Raises InputError for
+    vertices). Every triangle is contained exactly afterwards. cache_dir: reuse/store the fit
+    there as ``spheres-<sha256 of mesh and parameters>.npz``. Raises InputError for
     count <= 0, MeshError for an empty mesh.
     """
     if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
@@ -126,6 +213,37 @@ def fit_spheres(
         raise InputError(
             f"iterations >= 0, particles >= 1, samples >= 0 required; got {iterations}, {particles}, {samples}"
         )
+    path = None
+    if cache_dir is not None:
+        params = [count, seed, iterations, particles, samples, _FORMAT]
+        digest = hashlib.sha256(
+            v.tobytes() + f.astype(np.int64).tobytes() + json.dumps(params).encode()
+        ).hexdigest()
+        path = Path(cache_dir) / f"spheres-{digest[:24]}.npz"
+        if path.exists():
+            with np.load(path) as d:
+                return SphereSet(d["centres"], d["radii"], *(float(d[k]) for k in _SCALARS))
+    s = _fit(v, f, count, seed, iterations, particles, samples)
+    if path is not None:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(".tmp.npz")
+        np.savez(tmp, centres=s.centres, radii=s.radii, **{k: getattr(s, k) for k in _SCALARS})
+        tmp.replace(path)  # atomic: a crash mid-write never leaves a broken cache entry
+    return s
+
+
+_SCALARS = ("coverage", "union_volume", "mesh_volume", "volume_overshoot")
+
+
+def _fit(
+    v: FloatArray,
+    f: NDArray[np.int64],
+    count: int,
+    seed: int,
+    iterations: int,
+    particles: int,
+    samples: int,
+) -> SphereSet:
     rng = np.random.default_rng(seed)
     tri = v[f]
     scale = float(np.ptp(v, axis=0).max()) or 1.0
@@ -145,6 +263,12 @@ def fit_spheres(
             if np.any(lab == j):
                 seeds[j] = cover[lab == j].mean(axis=0)
     x[0] = seeds
+    if particles > 1:  # particle 1: slab centroids along the principal axis (medial-axis-ish)
+        x[1] = _axis_seeds(cover, count)
+        half = particles // 2  # half the rest start near one of these two, half at random
+        x[2 : 2 + half] = x[rng.integers(0, 2, size=max(0, min(half, particles - 2)))] + rng.normal(
+            0, 0.01 * scale, (max(0, min(half, particles - 2)), count, 3)
+        )
     vel = np.zeros_like(x)
     cost = np.sum(_decode(x, cover) ** 3, axis=1)
     pbest, pcost = x.copy(), cost.copy()
@@ -162,10 +286,11 @@ def fit_spheres(
     # Long thin triangles (a cylinder's sides) would force huge spheres: split them first.
     pieces = split_long_triangles(
         tri,
-        0.5 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale,
-        limit=2_000_000,
+        0.35 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale,
+        limit=200_000,
     )
-    radii = _contain_triangles(pieces, centres, scale)
+    centres, radii = _tighten(pieces, centres)
+    radii = radii * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
     keep = radii > 1e-12 * scale * 2
     if not np.all(keep):  # spheres left with no triangle: drop them
         centres, radii = centres[keep], radii[keep]

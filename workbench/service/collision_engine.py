@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import weakref
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -10,19 +11,79 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.collision import RobotCollisionChecker
 from workbench.collision.engine import MODES, CollisionEngine, ConfigCheck, EnginePathReport
-from workbench.errors import InputError
+from workbench.errors import InputError, WorkbenchError
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
 
 Progress = Callable[[float, str], None]
+# Parameters of the spheres engine that plans and the GUI share (fits and fields are cached).
+SPHERES_PER_LINK = 6
+RESOLUTION = 32
+# One engine (or the reason there is none) per exact checker and parameters; a checker is
+# replaced with its project, which drops its engines.
+_ENGINES: weakref.WeakKeyDictionary[
+    RobotCollisionChecker, dict[tuple[int, int, str], CollisionEngine | str]
+] = weakref.WeakKeyDictionary()
 
 
 def default_cache_dir() -> Path:
     """Return where distance fields are cached (~/.cache/workbench/sdf, or $WORKBENCH_CACHE/sdf)."""
     root = os.environ.get("WORKBENCH_CACHE")
     return (Path(root) if root else Path.home() / ".cache" / "workbench") / "sdf"
+
+
+def shared_engine(
+    checker: RobotCollisionChecker,
+    *,
+    spheres_per_link: int = SPHERES_PER_LINK,
+    resolution: int = RESOLUTION,
+    cache_dir: str | os.PathLike[str] | None = None,
+    progress: Progress | None = None,
+) -> tuple[CollisionEngine | None, str | None]:
+    """Return (the spheres engine of `checker`, None), or (None, why the fast mode cannot apply).
+
+    Built on first use (sphere fits and the cell's field are cached on disk under
+    `cache_dir`, default `default_cache_dir()`), then kept for the checker. The fast mode does
+    not apply when the engine cannot be built (e.g. a joint that is not revolute) or when the
+    cell's mesh is not watertight (its field is unsigned: a link wholly inside an obstacle
+    would not be seen).
+    """
+    cache = str(Path(cache_dir) if cache_dir is not None else default_cache_dir())
+    key = (int(spheres_per_link), int(resolution), cache)
+    per = _ENGINES.setdefault(checker, {})
+    open_meshes = [
+        name for name, e in checker.scene.static.items() if e.solid.kind == "mesh" and not e.closed
+    ]
+    if open_meshes and key not in per:
+        per[key] = (
+            f"obstacle {open_meshes[0]!r} is not watertight, so the cell's distance field would"
+            " have no inside"
+        )
+    if key not in per:
+        try:
+            eng = CollisionEngine(
+                checker,
+                "spheres",
+                spheres_per_link=int(spheres_per_link),
+                resolution=int(resolution),
+                cache_dir=cache,
+                progress=progress,
+            )
+        except WorkbenchError as exc:
+            per[key] = f"the spheres engine could not be built ({exc})"
+        else:
+            per[key] = (
+                "the cell's merged mesh is not watertight, so its distance field has no inside"
+                if eng.sdf is not None and not eng.sdf.signed
+                else eng
+            )
+    elif progress is not None:
+        progress(1.0, "collision engine ready")
+    found = per[key]
+    return (None, found) if isinstance(found, str) else (found, None)
 
 
 class CollisionService:
@@ -37,8 +98,8 @@ class CollisionService:
         self,
         wb: Workbench,
         *,
-        spheres_per_link: int = 4,
-        resolution: int = 32,
+        spheres_per_link: int = SPHERES_PER_LINK,
+        resolution: int = RESOLUTION,
         cache_dir: str | os.PathLike[str] | None = None,
     ) -> None:
         self.wb = wb
@@ -51,6 +112,17 @@ class CollisionService:
         """Return the engine of `mode`, building it on first use."""
         if mode not in MODES:
             raise InputError(f"mode: {mode!r} is not one of {', '.join(MODES)}")
+        if mode == "spheres" and mode not in self._engines:
+            eng, _ = shared_engine(
+                self.wb.checker,
+                spheres_per_link=self.spheres_per_link,
+                resolution=self.resolution,
+                cache_dir=self.cache_dir,
+                progress=progress,
+            )
+            if eng is not None:  # shared with the motion plans
+                self._engines[mode] = eng
+                return eng
         if mode not in self._engines:
             self._engines[mode] = CollisionEngine(
                 self.wb.checker,

@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.collision import PathReport, RobotCollisionChecker
+from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.motion import (
@@ -41,7 +42,10 @@ class MotionPlan:
     """A planned program: the trajectory, its samples, and what the checks found.
 
     Samples are every `dt` [s]: `times` (N,), `positions`/`velocities`/`accelerations` (N, dof)
-    [rad, rad/s, rad/s^2], `tcp_speed` (N,) [m/s]; `colliding` (N,) marks samples in collision.
+    [rad, rad/s, rad/s^2], `tcp_speed` (N,) [m/s]; `colliding` (N,) marks samples in collision
+    and samples followed by a collision before the next one. `collision_report` is an
+    `EnginePathReport` (its `message` states the guarantee between samples or the first
+    failure); its `colliding_indices` are exactly the samples the dense exact check flags.
     """
 
     program: Program
@@ -73,7 +77,10 @@ class MotionPlan:
             if self.limits_report.ok
             else f"{len(self.limits_report.violations)} limit violation(s)"
         )
-        if self.collision_report.collision_free:
+        rep_ = self.collision_report
+        if isinstance(rep_, EnginePathReport):
+            lines.append(rep_.message)
+        elif rep_.collision_free:
             lines.append("collision-free at every sample")
         else:
             first = self.collision_report.first_index
@@ -165,7 +172,12 @@ def plan_from_trajectory(
     progress: Progress | None = None,
 ) -> MotionPlan:
     """Return the `MotionPlan` of a timed program: limits checked every `validate_dt` [s] and at
-    the trajectory's peaks, samples every `dt` [s] with TCP speed, each sample checked exactly."""
+    the trajectory's peaks, samples every `dt` [s] with TCP speed, collisions checked at and
+    between the samples.
+
+    The check (`check_trajectory`) runs the spheres engine over all samples at once, confirms
+    what it flags with python-fcl and certifies the motion between samples; where the fast
+    mode cannot apply every sample is checked exactly and the report says why."""
     model = setup.model
     limits = validate_trajectory(
         trajectory,
@@ -178,11 +190,78 @@ def plan_from_trajectory(
     times, q, qd, qdd = trajectory.sample(dt)
     tcp = (setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp)[:, :3, 3]
     tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
-    path_report = checker.check_path(q, progress=progress)
+    path_report = check_trajectory(trajectory, times, q, checker, progress=progress)
     colliding = np.zeros(len(times), bool)
     colliding[list(path_report.colliding_indices)] = True
+    colliding[list(path_report.between_indices)] = True
     return MotionPlan(
         program, trajectory, times, q, qd, qdd, tcp_speed, colliding, limits, path_report
+    )
+
+
+def acceleration_bound(trajectory: Trajectory) -> NDArray[np.float64]:
+    """Return max |q''| per joint [rad/s^2] over the whole trajectory, exactly.
+
+    Within a constant-jerk piece the acceleration is linear in time, so its largest magnitude
+    is at one of the piece's ends.
+    """
+    start = trajectory.piece_start
+    end = np.concatenate([start[:, 1:], np.full((len(start), 1), trajectory.duration)], axis=1)
+    length = np.clip(end - start, 0.0, None)
+    a0, jerk = trajectory.piece_a, trajectory.piece_j
+    return np.maximum(np.abs(a0), np.abs(a0 + jerk * length)).max(axis=1)
+
+
+def check_trajectory(
+    trajectory: Trajectory,
+    times: NDArray[np.float64],
+    q: NDArray[np.float64],
+    checker: RobotCollisionChecker,
+    *,
+    progress: Progress | None = None,
+) -> EnginePathReport:
+    """Return the collision report of a trajectory sampled at `times` [s] as q (N, dof) [rad].
+
+    Fast mode: the shared spheres engine (`shared_engine`), bisecting between samples on the
+    real motion (`trajectory.at`) with the exact acceleration bound. Fallback: every sample
+    checked exactly with python-fcl, nothing certified between them (`fallback` says why).
+    """
+    from workbench.service.collision_engine import shared_engine
+
+    report = progress or (lambda f, m: None)
+    engine, why = shared_engine(checker, progress=lambda f, m: report(0.2 * f, m))
+    if engine is not None:
+        return engine.check_path(
+            q,
+            times,
+            sampler=lambda t: trajectory.at(t)[0],
+            acceleration=acceleration_bound(trajectory),
+            progress=lambda f, m: report(0.2 + 0.8 * f, m),
+        )
+    dense = checker.check_path(q, progress=lambda f, m: report(0.2 + 0.8 * f, m))
+    hits = dense.colliding_indices
+    extra: dict[str, object] = {}
+    if hits:
+        rep = dense.first_report
+        a, b = rep.colliding[0] if rep is not None else (None, None)
+        extra = {
+            "first_time": float(times[hits[0]]),
+            "first_q": q[hits[0]],
+            "link": a,
+            "obstacle": b,
+        }
+    return EnginePathReport(
+        collision_free=dense.collision_free,
+        first_index=dense.first_index,
+        first_report=dense.first_report,
+        min_distance=dense.min_distance,
+        samples=dense.samples,
+        colliding_indices=hits,
+        mode="exact",
+        evaluated=len(q),
+        certified=False,
+        fallback=why,
+        **extra,  # type: ignore[arg-type]
     )
 
 

@@ -1,0 +1,175 @@
+"""Fast path check (spheres first, flagged pairs to fcl) against the dense exact check of every sample."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from workbench.collision.engine import CollisionEngine
+from workbench.service import Workbench
+
+PROJECT = {
+    "schema_version": 1,
+    "robot": {"preset": "mz07"},
+    "tool": {"tcp": {"xyz": [0, 0, 150]}, "size": [60, 80, 120]},
+    "cell": {
+        "objects": [
+            {
+                "name": "block",
+                "shape": "box",
+                "size": [300, 400, 300],
+                "pose": {"xyz": [600, 0, 300]},
+            },
+            {
+                "name": "post",
+                "shape": "cylinder",
+                "radius": 60,
+                "height": 900,
+                "pose": {"xyz": [0, -550, 450]},
+            },
+        ]
+    },
+}
+
+
+@pytest.fixture(scope="module")
+def wb() -> Workbench:
+    return Workbench.from_dict(PROJECT)
+
+
+@pytest.fixture(scope="module")
+def engine(wb: Workbench, tmp_path_factory: pytest.TempPathFactory) -> CollisionEngine:
+    cache = str(tmp_path_factory.mktemp("cache"))
+    return CollisionEngine(
+        wb.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache
+    )
+
+
+def _paths(wb: Workbench, count: int, samples: int, seed: int) -> list[np.ndarray]:
+    """Random joint walks through the reachable space in front of the robot (near the cell)."""
+    rng = np.random.default_rng(seed)
+    lim = wb.robot.limits
+    out = []
+    for _ in range(count):
+        q0 = rng.uniform(lim[:, 0], lim[:, 1])
+        q0[1:3] = rng.uniform(-1.2, 1.2, 2)
+        step = rng.normal(0.0, 0.05, 6)
+        qs = q0 + np.arange(samples)[:, None] * step
+        out.append(np.clip(qs, lim[:, 0], lim[:, 1]))
+    return out
+
+
+def _dense(wb: Workbench, qs: np.ndarray) -> list[tuple[tuple[str, str], ...]]:
+    return [wb.checker.check(q, distance=False).colliding for q in qs]
+
+
+def test_sample_verdicts_equal_the_dense_exact_check(
+    wb: Workbench, engine: CollisionEngine
+) -> None:
+    """Twin: python-fcl (+ containment) on every pair at every sample; cell and self pairs."""
+    moving = set(engine.body_names)
+    hits = self_hits = 0
+    for qs in _paths(wb, 40, 12, seed=0):
+        dense = _dense(wb, qs)
+        rep = engine.check_path(qs)
+        want = tuple(i for i, c in enumerate(dense) if c)
+        assert rep.colliding_indices == want
+        hits += len(want)
+        self_hits += sum(any(b in moving for _, b in c) for c in dense)
+        if want and not rep.between:  # a sample first: the same pairs as the dense check
+            assert rep.first_report is not None and rep.first_index == want[0]
+            assert set(rep.first_report.colliding) == set(dense[want[0]])
+    assert hits > 40 and self_hits > 0  # the paths do go through contacts, self ones included
+
+
+def test_no_misses_between_samples_and_no_false_hits(
+    wb: Workbench, engine: CollisionEngine
+) -> None:
+    """Twin: the dense exact check on the path resampled 8x finer (straight joint segments)."""
+    free = between = 0
+    rng = np.random.default_rng(1)
+    # Sweeps of joint 1 whose two samples are beside the block and whose motion goes through it.
+    sweeps = [
+        np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
+        + rng.normal(0, 0.04, 6)
+        for _ in range(6)
+    ]
+    for qs in _paths(wb, 24, 6, seed=1) + sweeps:
+        rep = engine.check_path(qs)
+        fine = np.concatenate(
+            [np.linspace(a, b, 9)[:-1] for a, b in zip(qs[:-1], qs[1:], strict=True)] + [qs[-1:]]
+        )
+        dense_fine = [bool(c) for c in _dense(wb, fine)]
+        if any(dense_fine):
+            assert not rep.collision_free, "a contact between samples was missed"
+        if rep.collision_free:
+            free += 1
+            assert rep.clearance >= 0.0
+            assert "collision-free, including between samples" in rep.message
+        elif rep.between and rep.first_q is not None and rep.link is not None:
+            between += 1
+            assert wb.checker.check(rep.first_q, distance=False).in_collision  # confirmed exactly
+            assert f"{rep.link} hits {rep.obstacle}" in rep.message
+    assert free > 3 and between > 0
+
+
+def test_free_path_clearance_is_a_lower_bound_of_fcl(
+    wb: Workbench, engine: CollisionEngine
+) -> None:
+    qs = np.linspace(np.zeros(6), [1.0, 0.3, 0.0, 0.5, 0.0, 0.0], 12)
+    rep = engine.check_path(qs)
+    assert rep.collision_free, rep.message
+    fine = np.linspace(qs[0], qs[-1], 90)
+    d = min(wb.checker.check(q).min_distance for q in fine)
+    assert 0.0 < rep.clearance <= d + 1e-9
+
+
+def test_exact_mode_gives_the_same_sample_verdicts(wb: Workbench, engine: CollisionEngine) -> None:
+    exact = CollisionEngine(wb.checker, "exact")
+    for qs in _paths(wb, 6, 8, seed=2):
+        a, b = engine.check_path(qs), exact.check_path(qs)
+        assert a.colliding_indices == b.colliding_indices
+        assert a.collision_free == b.collision_free or not (a.certified and b.certified)
+
+
+def test_obstacle_wholly_inside_a_link_is_found(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """A peg inside link 3 touches none of its surface (fcl collide: free); containment finds it."""
+    q = np.array([0.3, -0.2, 0.4, 0.0, 0.5, 0.0])
+    probe = Workbench.from_dict(PROJECT)
+    T = probe.checker.world_poses(q)["link3"]
+    centre = T[:3, :3] @ probe.checker.scene.moving["link3"].mesh.centroid + T[:3, 3]
+    data = {
+        **PROJECT,
+        "cell": {
+            "objects": [
+                {
+                    "name": "peg",
+                    "shape": "box",
+                    "size": [30, 30, 30],
+                    "pose": {"xyz": list(centre * 1000)},
+                }
+            ]
+        },
+    }
+    wb = Workbench.from_dict(data)
+    eng = CollisionEngine(
+        wb.checker,
+        "spheres",
+        spheres_per_link=4,
+        resolution=32,
+        cache_dir=str(tmp_path_factory.mktemp("peg")),
+    )
+    assert ("link3", "peg") in eng.always_pairs
+    scene = wb.checker.scene
+    wb.checker.check(q, distance=False)
+    import fcl
+
+    a, b = scene.moving["link3"], scene.static["peg"]
+    assert not fcl.collide(a.obj, b.obj, fcl.CollisionRequest(), fcl.CollisionResult())
+    assert ("link3", "peg") in wb.checker.check(q, distance=False).colliding  # by containment
+    qs = np.linspace(q - 0.02, q + 0.02, 5)
+    dense = [i for i, x in enumerate(qs) if wb.checker.check(x, distance=False).in_collision]
+    held = eng.contained(qs)[:, eng.always_pairs.index(("link3", "peg"))]
+    assert held[2]  # the batched containment test sees it
+    rep = eng.check_path(qs)
+    assert list(rep.colliding_indices) == dense and 2 in dense

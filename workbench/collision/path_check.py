@@ -1,0 +1,367 @@
+"""A joint path certified between samples: fast conservative items first, exact pairs where flagged.
+
+The engine (any mode) gives, per configuration, clearance lower bounds of "items" (a sphere
+or capsule against the cell, a sphere pair of a self-collision pair), each belonging to a
+"group" of exact body pairs (a body against every obstacle, or one self pair). A group is
+*flagged* at a configuration when one of its items has clearance <= 0; only then are its
+exact pairs (python-fcl collide plus containment) evaluated. The fast items never miss a
+contact, so a configuration collides exactly iff one of its flagged groups' pairs collides:
+the per-sample verdict equals the dense exact check of every pair.
+
+Between two samples a, b (both free), an item with levers L (dof,) [m/rad] is safe when
+``c_a + c_b > |q_b - q_a| @ L + 2 * dev @ L`` (its clearance changes by at most |dq| @ L,
+and the real motion is within dev of the straight joint segment); for a flagged group the
+exact surface distances of its pairs are used instead of the items. Intervals that cannot
+be certified are bisected; a midpoint whose flagged pairs collide exactly is a collision
+between samples.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+Pair = tuple[str, str]
+Sampler = Callable[[FloatArray], FloatArray]
+# From this bisection depth on, a group whose fast items keep failing is settled with exact
+# distances (one fcl distance per pair) rather than more midpoints.
+PROMOTE_DEPTH = 1
+# At most this many (interval, group) clearance bounds are settled with fcl for the report.
+REFINE = 256
+# An anchor (a configuration with fcl's distance d) serves nearby configurations while its
+# lever bound stays >= RENEW * d.
+RENEW = 0.8
+
+
+def _chord_bound(a: FloatArray, b: FloatArray, travel: FloatArray) -> FloatArray:
+    """Return the least clearance along a joint segment [m] from end bounds a, b and travel.
+
+    Clearance at travel x from a is at least max(a - x, b - (travel - x)); its minimum over
+    x in [0, travel] is (a + b - travel) / 2 where |a - b| <= travel, else max(a, b) - travel.
+    """
+    return np.where(np.abs(a - b) <= travel, (a + b - travel) / 2, np.maximum(a, b) - travel)
+
+
+class PathOracle(Protocol):
+    """What the certifier needs of an engine (see `CollisionEngine`)."""
+
+    dof: int
+    item_group: NDArray[np.int64]
+    group_start: NDArray[np.int64]
+    group_pairs: list[list[Pair]]
+    always_pairs: list[Pair]
+    pair_lever: dict[Pair, FloatArray]
+    margin: float
+
+    def path_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]: ...
+
+    def contained(self, qs: FloatArray) -> NDArray[np.bool_]: ...
+
+    def poses(self, qs: FloatArray) -> FloatArray: ...
+
+    def place(self, poses: FloatArray) -> None: ...
+
+    def aabb_gaps(self, poses: FloatArray) -> FloatArray: ...
+
+    def pair_collides(self, pair: Pair) -> bool: ...
+
+    def pair_distance(self, pair: Pair) -> float: ...
+
+
+@dataclass
+class _Node:
+    t: float
+    q: FloatArray
+    clr: FloatArray  # (I,) item clearances [m]
+    gmin: FloatArray  # (G,) least item clearance per group [m]
+    poses: FloatArray  # (B, 4, 4) world poses of the moving bodies
+    gaps: FloatArray  # (P,) bounding-box gaps of the exact pairs, less the margin [m]
+    hits: tuple[Pair, ...] = ()
+    dist: dict[tuple[Pair, int], float] = field(default_factory=dict)
+
+
+@dataclass
+class PathOutcome:
+    """What the certifier found (SI units); `events` are (time, interval start, q, hits)."""
+
+    sample_hits: dict[int, tuple[Pair, ...]]
+    flagged: int
+    events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]]
+    clearance: float
+    evaluated: int
+    exact_pairs: int
+
+
+class PathCertifier:
+    """Certify a sampled joint path with an engine's items, confirming flagged groups exactly."""
+
+    def __init__(self, oracle: PathOracle) -> None:
+        self.o = oracle
+        self._placed: int | None = None
+        self.exact_pairs = 0
+        # Per pair, configurations with an exact distance: the distance at any q is at least
+        # d - |q - q_anchor| @ lever (the lever bound along the straight joint segment).
+        self.anchors: dict[Pair, tuple[FloatArray, FloatArray]] = {}
+        # Exact pairs in `aabb_gaps` column order (the order of `pair_lever`).
+        self.pair_index = {p: k for k, p in enumerate(oracle.pair_lever)}
+        self.plev = np.stack(list(oracle.pair_lever.values()))
+        self.pairs = list(oracle.pair_lever)
+        self.group_cols = [
+            np.array([self.pair_index[p] for p in g], np.int64) for g in oracle.group_pairs
+        ]
+        self.group_member = np.zeros((len(self.group_cols), len(self.pairs)), np.int64)
+        for g, cols in enumerate(self.group_cols):
+            self.group_member[g, cols] = 1
+
+    def _nodes(self, t: FloatArray, q: FloatArray) -> list[_Node]:
+        clr, self.lev = self.o.path_items(q)
+        gmin = np.minimum.reduceat(clr, self.o.group_start, axis=1)
+        inside = self.o.contained(q)
+        T = self.o.poses(q)
+        gaps = self.o.aabb_gaps(T)
+        nodes = [_Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i]) for i in range(len(q))]
+        # Exact confirmation of what the fast items could not rule out: the pairs of flagged
+        # groups whose bounding boxes touch (apart boxes cannot touch), and the held pairs.
+        flagged = ((gmin <= 0.0).astype(np.int64) @ self.group_member > 0) & ~(
+            gaps + self.o.margin > 0.0
+        )
+        for i, j in zip(*np.nonzero(flagged), strict=True):
+            node, p = nodes[i], self.pairs[j]
+            if self._anchored(node, p) + self.o.margin > 0.0:
+                continue  # an anchor keeps it apart
+            self._place(node)
+            self.exact_pairs += 1
+            if self.o.pair_collides(p):
+                node.hits += (p,)
+            else:
+                self._lower(node, p, 2)  # an anchor for the configurations nearby
+        for i, k in zip(*np.nonzero(inside), strict=True):
+            node, p = nodes[i], self.o.always_pairs[k]
+            if p in node.hits:
+                continue
+            self._place(node)
+            self.exact_pairs += 1
+            if self.o.pair_collides(p):
+                node.hits += (p,)
+        return nodes
+
+    def _place(self, node: _Node) -> None:
+        if self._placed != id(node):
+            self.o.place(node.poses)
+            self._placed = id(node)
+
+    def _anchored(self, node: _Node, pair: Pair) -> float:
+        """Return the anchors' bound at node where it keeps RENEW of the anchor's distance, else -inf.
+
+        Renewing anchors before their bound decays to 0 keeps the reported clearance within
+        about 1 - RENEW of fcl's distance.
+        """
+        if pair not in self.anchors:
+            return -np.inf
+        qa, d = self.anchors[pair]
+        b = d - np.abs(qa - node.q) @ self.o.pair_lever[pair]
+        k = int(np.argmax(b))
+        return float(b[k]) if b[k] >= RENEW * d[k] else -np.inf
+
+    def _lower(self, node: _Node, pair: Pair, tier: int) -> float:
+        """Return a lower bound [m] of the pair's distance (less the margin) at node.
+
+        tier 0: the gap between bounding boxes; 1: the best anchor's lever bound; 2: fcl's
+        distance (which becomes an anchor).
+        """
+        if tier == 0:
+            return float(node.gaps[self.pair_index[pair]])
+        key = (pair, tier)
+        if key in node.dist:
+            return node.dist[key]
+        if tier == 1:
+            if pair not in self.anchors:
+                return -np.inf
+            qa, da = self.anchors[pair]
+            return float(np.max(da - np.abs(qa - node.q) @ self.o.pair_lever[pair]))
+        self._place(node)
+        self.exact_pairs += 1
+        value = self.o.pair_distance(pair)
+        qa, da = self.anchors.get(pair, (np.zeros((0, len(node.q))), np.zeros(0)))
+        self.anchors[pair] = (np.vstack([qa, node.q]), np.append(da, value))
+        node.dist[key] = value
+        return value
+
+    def run(
+        self,
+        q: FloatArray,
+        t: FloatArray,
+        *,
+        sampler: Sampler | None,
+        acceleration: FloatArray | None,
+        deviation: FloatArray,
+        max_depth: int,
+        budget: int,
+        progress: Callable[[float, str], None] | None = None,
+    ) -> PathOutcome:
+        """Return the outcome for samples q (N, dof) [rad] at times t (N,) [s].
+
+        sampler(times) -> q gives the real motion at bisection midpoints; with `acceleration`
+        (dof,) [rad/s^2] bounding |q''| the deviation from the chord of an interval of length
+        h is ``acceleration * h**2 / 8``. Without a sampler, midpoints lie on the chord and
+        `deviation` (dof,) [rad] is used for every interval.
+        """
+        report = progress or (lambda _f, _m: None)
+        report(0.0, f"fast check of {len(q)} samples")
+        nodes = self._nodes(t, q)
+        lev = self.lev
+        sample_hits = {i: n.hits for i, n in enumerate(nodes) if n.hits}
+        flagged = int(sum(bool(np.any(n.gmin <= 0.0)) for n in nodes))
+        report(0.3, f"{flagged} flagged samples confirmed exactly; certifying between samples")
+        evaluated = len(nodes)
+        events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]] = []
+        work = [
+            (nodes[i], nodes[i + 1], 0, i)
+            for i in range(len(nodes) - 1)
+            if not nodes[i].hits and not nodes[i + 1].hits
+        ]
+        if len(nodes) == 1 and not nodes[0].hits:
+            work = [(nodes[0], nodes[0], 0, 0)]  # one configuration: its clearance only
+        total = max(len(work), 1)
+        # Certified intervals: per group the clearance bound, and whether it is fcl's.
+        cert: list[tuple[Any, FloatArray, NDArray[np.bool_], FloatArray, FloatArray]] = []
+        while work:
+            a = np.array([w[0].clr for w in work])
+            b = np.array([w[1].clr for w in work])
+            dq = np.array([np.abs(w[1].q - w[0].q) for w in work])
+            h = np.array([w[1].t - w[0].t for w in work])
+            if acceleration is not None:
+                dev = acceleration[None] * (h[:, None] ** 2) / 8.0
+            else:
+                dev = np.broadcast_to(deviation, dq.shape)
+            travel, tube = dq @ lev.T, dev @ lev.T
+            item_lo = _chord_bound(a, b, travel) - tube
+            group_lo = np.minimum.reduceat(item_lo, self.o.group_start, axis=1)
+            group_fail = ~(group_lo > 0.0)
+            ga = np.array([w[0].gmin for w in work])
+            gb = np.array([w[1].gmin for w in work])
+            depth = np.array([w[2] for w in work])
+            exact = (ga <= 0.0) | (gb <= 0.0) | (group_fail & (depth >= PROMOTE_DEPTH)[:, None])
+            # Exact pairs of the exact groups, tier 0 (box gaps) for all at once.
+            pa = np.array([w[0].gaps for w in work])
+            pb = np.array([w[1].gaps for w in work])
+            ptravel, ptube = dq @ self.plev.T, dev @ self.plev.T
+            pair_lo = _chord_bound(pa, pb, ptravel) - ptube  # (W, P)
+            # Pairs of the exact groups: box gaps first; anchors and fcl only where those fail
+            # and the interval's fast items pass.
+            fast_fail = np.any(group_fail & ~exact, axis=1)
+            pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
+            pb = np.where(pairs_in, pair_lo, np.inf)
+            failed: set[int] = set()
+            for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
+                if k in failed:
+                    continue  # bisected anyway
+                pb[k, j] = self._pair_interval(
+                    work[k], self.pairs[j], ptravel[k, j], ptube[k, j], pair_lo[k, j]
+                )
+                if not pb[k, j] > 0.0:
+                    failed.add(int(k))
+            safe = ~fast_fail & np.all(pb > 0.0, axis=1)
+            glo = np.where(exact, np.inf, group_lo)
+            for g, cols in enumerate(self.group_cols):
+                if len(cols) == 0:
+                    continue
+                glo[:, g] = np.where(exact[:, g], pb[:, cols].min(axis=1), glo[:, g])
+            bisect = [w for w, ok in zip(work, safe, strict=True) if not ok]
+            cert += [
+                (work[k], glo[k], np.zeros(glo.shape[1], bool), dq[k], dev[k])
+                for k in np.flatnonzero(safe)
+            ]
+            done = [w for w in bisect if w[2] >= max_depth]
+            bisect = [w for w in bisect if w[2] < max_depth]
+            if evaluated + len(bisect) > budget:
+                done, bisect = done + bisect, []
+            for w in done:  # not certified: the clearance is below what bisection resolves
+                tm = (w[0].t + w[1].t) / 2
+                events.append((tm, w[3], (w[0].q + w[1].q) / 2, ()))
+            work = []
+            if bisect:
+                t_mid = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
+                qm = (
+                    sampler(t_mid)
+                    if sampler is not None
+                    else np.array([(w[0].q + w[1].q) / 2 for w in bisect])
+                )
+                mids = self._nodes(t_mid, qm)
+                evaluated += len(mids)
+                for w, m in zip(bisect, mids, strict=True):
+                    if m.hits:
+                        events.append((m.t, w[3], m.q, m.hits))
+                        continue
+                    work.append((w[0], m, w[2] + 1, w[3]))
+                    work.append((m, w[1], w[2] + 1, w[3]))
+            report(
+                0.3 + 0.6 * min(1.0, evaluated / (total + budget * 0.1)),
+                f"{evaluated} configurations checked",
+            )
+        clearance = self._tighten(cert) if cert and not events and not sample_hits else np.inf
+        events.sort(key=lambda e: e[0])
+        return PathOutcome(
+            sample_hits, flagged, events, float(clearance), evaluated, self.exact_pairs
+        )
+
+    def _pair_interval(
+        self, w: Any, pair: Pair, travel: float, tube: float, lo: float, *, fcl: bool = False
+    ) -> float:
+        """Return the pair's clearance bound [m] over interval w, at least `lo` (box gaps).
+
+        Anchors' bounds next (cheap); fcl's distances only when the bound is still <= 0, or
+        when `fcl` asks for the tight bound.
+        """
+        for tier in (1, 2):
+            if tier == 2 and lo > 0.0 and not fcl:
+                break
+            da = self._lower(w[0], pair, tier)
+            db = self._lower(w[1], pair, tier)
+            if np.isfinite(da) and np.isfinite(db):
+                lo = max(
+                    lo, float(_chord_bound(np.array(da), np.array(db), np.array(travel))) - tube
+                )
+        return lo
+
+    def _tighten(
+        self, cert: list[tuple[Any, FloatArray, NDArray[np.bool_], FloatArray, FloatArray]]
+    ) -> float:
+        """Return the path's clearance bound [m], settling the smallest bounds with fcl.
+
+        Every interval's group bound is valid. The smallest is settled with fcl distances of
+        its group's pairs at the interval's ends; those become anchors, whose lever bounds
+        then raise that group's bound on every interval (the larger bound is kept). Stops when
+        the smallest bound left is fcl's, or after `REFINE` rounds.
+        """
+        B = np.array([c[1] for c in cert])
+        tight = np.zeros(B.shape, bool)
+        qa = np.array([c[0][0].q for c in cert])
+        qb = np.array([c[0][1].q for c in cert])
+        dq = np.array([c[3] for c in cert])
+        dev = np.array([c[4] for c in cert])
+        best = np.inf  # the smallest fcl-settled bound so far: rows above it cannot matter
+        for _ in range(REFINE):
+            k, g = np.unravel_index(int(np.argmin(B)), B.shape)
+            if tight[k, g] or not np.isfinite(B[k, g]):
+                break
+            w = cert[k][0]
+            rows = np.flatnonzero(B[:, g] < best)
+            lo = np.full(len(rows), np.inf)
+            for pair in self.o.group_pairs[g]:
+                # The interval's ends as anchors (every anchor gives a valid bound).
+                anchor_q = np.stack([w[0].q, w[1].q])
+                anchor_d = np.array([self._lower(w[0], pair, 2), self._lower(w[1], pair, 2)])
+                L = self.o.pair_lever[pair]
+                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ L, axis=1)
+                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ L, axis=1)
+                lo = np.minimum(lo, _chord_bound(da, db, dq[rows] @ L) - dev[rows] @ L)
+            B[rows, g] = np.maximum(B[rows, g], lo)
+            tight[k, g] = True
+            best = min(best, float(B[k, g]))
+        return float(B.min())
