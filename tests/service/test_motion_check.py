@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 import trimesh
 
+from workbench.motion.validation import acceleration_bound
 from workbench.service import Workbench
-from workbench.service.motion_plan import acceleration_bound
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "mz07_cell.json"

@@ -127,14 +127,32 @@ def validate_samples(
     return ValidationReport(tuple(found), worst, n)
 
 
+def _piece_bounds(trajectory: Trajectory) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return the start and end times [s] of every joint's constant-jerk pieces, (dof, P) each."""
+    start = trajectory.piece_start
+    end = np.concatenate([start[:, 1:], np.full((start.shape[0], 1), trajectory.duration)], axis=1)
+    return start, end
+
+
+def acceleration_bound(trajectory: Trajectory) -> NDArray[np.float64]:
+    """Return max |q''| per joint [rad/s^2] over the whole trajectory, exactly.
+
+    Within a constant-jerk piece the acceleration is linear in time, so its largest magnitude
+    is at one of the piece's ends.
+    """
+    start, end = _piece_bounds(trajectory)
+    length = np.clip(end - start, 0.0, None)
+    a0, jerk = trajectory.piece_a, trajectory.piece_j
+    return np.maximum(np.abs(a0), np.abs(a0 + jerk * length)).max(axis=1)
+
+
 def critical_times(trajectory: Trajectory) -> NDArray[np.float64]:
     """Return the times [s] where some joint's |velocity| or |position| peaks within a piece.
 
     With constant jerk per piece, acceleration is linear (extremes at piece ends), velocity
     peaks where the acceleration crosses zero, position where the velocity does.
     """
-    start = trajectory.piece_start
-    end = np.concatenate([start[:, 1:], np.full((start.shape[0], 1), trajectory.duration)], axis=1)
+    start, end = _piece_bounds(trajectory)
     a0, v0, jj = trajectory.piece_a, trajectory.piece_v, trajectory.piece_j
     with np.errstate(divide="ignore", invalid="ignore"):
         t_acc0 = start - a0 / jj

@@ -22,6 +22,7 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
+from workbench.motion.validation import acceleration_bound
 from workbench.project.models import ProgramSpec
 from workbench.service.convert import DEG, MM, pose_to_matrix
 from workbench.service.robot_setup import RobotSetup
@@ -43,7 +44,8 @@ class MotionPlan:
 
     Samples are every `dt` [s]: `times` (N,), `positions`/`velocities`/`accelerations` (N, dof)
     [rad, rad/s, rad/s^2], `tcp_speed` (N,) [m/s]; `colliding` (N,) marks samples in collision
-    and samples followed by a collision before the next one. `collision_report` is an
+    and samples whose interval to the next one collides or could not be certified free
+    (treated as colliding: the plan promises nothing it has not proven). `collision_report` is an
     `EnginePathReport` (its `message` states the guarantee between samples or the first
     failure); its `colliding_indices` are exactly the samples the dense exact check flags.
     """
@@ -197,19 +199,6 @@ def plan_from_trajectory(
     return MotionPlan(
         program, trajectory, times, q, qd, qdd, tcp_speed, colliding, limits, path_report
     )
-
-
-def acceleration_bound(trajectory: Trajectory) -> NDArray[np.float64]:
-    """Return max |q''| per joint [rad/s^2] over the whole trajectory, exactly.
-
-    Within a constant-jerk piece the acceleration is linear in time, so its largest magnitude
-    is at one of the piece's ends.
-    """
-    start = trajectory.piece_start
-    end = np.concatenate([start[:, 1:], np.full((len(start), 1), trajectory.duration)], axis=1)
-    length = np.clip(end - start, 0.0, None)
-    a0, jerk = trajectory.piece_a, trajectory.piece_j
-    return np.maximum(np.abs(a0), np.abs(a0 + jerk * length)).max(axis=1)
 
 
 def check_trajectory(
