@@ -151,6 +151,49 @@ def test_edge_samples_keep_every_point_within_the_resolution(scene):
                 assert t.max() <= space.robot_resolution * (1 + 1e-9)
 
 
+def _fcl_mesh(m: trimesh.Trimesh) -> fcl.CollisionObject:
+    b = fcl.BVHModel()
+    b.beginModel(len(m.vertices), len(m.faces))
+    b.addSubModel(np.asarray(m.vertices, float), np.asarray(m.faces, np.int32))
+    b.endModel()
+    return fcl.CollisionObject(b, fcl.Transform())
+
+
+def _part_hits_arm(q: np.ndarray, meshes: list[trimesh.Trimesh]) -> bool:
+    """Twin: the held part against links 0..5 (those that move relative to it) by python-fcl."""
+    L = ROBOT.link_transforms(q[None])[0]
+    T_part = L[6] @ T_FLANGE_TCP @ np.linalg.inv(T_PART_TCP)
+    part = _fcl_mesh(PART)
+    part.setTransform(fcl.Transform(T_part[:3, :3], T_part[:3, 3]))
+    for k in range(6):
+        link = _fcl_mesh(meshes[k])
+        link.setTransform(fcl.Transform(L[k][:3, :3], L[k][:3, 3]))
+        if fcl.collide(part, link, fcl.CollisionRequest(), fcl.CollisionResult()):
+            return True
+    return False
+
+
+def test_the_held_part_is_checked_against_its_own_arm(scene):
+    robot, obstacles, part, space = scene
+    meshes = link_meshes(ROBOT)
+    # Wrist folded back: the part held at the tool swings towards the forearm and upper arm.
+    rng = np.random.default_rng(5)
+    lo, hi = ROBOT.limits[:, 0], ROBOT.limits[:, 1]
+    qs = rng.uniform(lo, hi, size=(300, 6))
+    qs[:, 4] = rng.uniform(lo[4], lo[4] + 0.6, size=300)
+    only_arm = 0
+    for q in qs:
+        arm = _part_hits_arm(q, meshes)
+        rest = (not robot.check_path(q[None]).collision_free) or not _part_free_exact(
+            space.part_poses(q[None]), obstacles
+        )
+        assert space.any_invalid(q[None]) == (arm or rest), q
+        if arm and not rest:
+            only_arm += 1
+            assert "carried part hits" in space.explain(q)
+    assert only_arm > 0  # the case the planner used to accept
+
+
 def test_bisection_order_is_a_permutation_coarse_first():
     for n in (1, 2, 3, 7, 16, 33):
         o = bisection_order(n)

@@ -4,9 +4,10 @@ A pose-space path of the part may exist that the robot cannot follow without hit
 something (its arm sweeps through an obstacle the part passes by). This planner works on
 the robot's joints instead: a configuration is valid when the carried part (at
 T_world_base · fk(q) · T_flange_tcp · T_part_tcp⁻¹) interferes with nothing
-(`InterferenceChecker`), and the robot's links and tool touch neither the cell nor the
-other parts nor each other (the pairs of `RobotCollisionChecker`, by python-fcl after an
-AABB broad phase, see `contacts.Bodies`).
+(`InterferenceChecker`), the robot's links and tool touch neither the cell nor the
+other parts nor each other (the pairs of `RobotCollisionChecker`), and the part touches
+none of the robot's links that move relative to it (all but the flange link and the tool,
+which are rigid with the grasp); python-fcl after an AABB broad phase, see `contacts.Bodies`.
 
 Motions are straight in joint space. Along one, a point fixed on link k moves at most
 Σ_j |Δq_j|·lever_kj [m] (`collision.motion_bound.JointLevers`: lever_kj bounds the point's
@@ -42,6 +43,7 @@ from workbench.errors import CollisionError, InputError, PlanningError, Unreacha
 from workbench.geometry.transforms import invert_transform
 
 FloatArray = NDArray[np.float64]
+CARRIED_PART = "carried part"  # the held part's name among the bodies checked for contact
 
 
 @dataclass(frozen=True, eq=False)
@@ -124,9 +126,19 @@ class CarrySpace:
         scene = robot_checker.scene
         moving = list(scene.moving)
         self.frames = [min(i, self.dof) for i in range(len(moving))]  # links 0..dof, tool on dof
-        solids = [scene.moving[n].solid for n in moving] + [e.solid for e in scene.static.values()]
+        # The carried part is a body too, so a folding arm cannot sweep through what it holds.
+        # It is paired with every robot body that moves relative to it: the tool and the
+        # flange link are rigid with the grasp (their contact with the part cannot change).
+        part = Solid(CARRIED_PART, "mesh", mesh=part_checker.moving.mesh)
+        solids = (
+            [scene.moving[n].solid for n in moving]
+            + [part]
+            + [e.solid for e in scene.static.values()]
+        )
         fixed = [e.T for e in scene.static.values()]
-        pairs = list(scene.pairs)
+        pairs = list(scene.pairs) + [
+            (CARRIED_PART, n) for n, f in zip(moving, self.frames, strict=True) if f < self.dof
+        ]
         for solid, T in extra:
             solids.append(solid)
             fixed.append(check_pose(T, f"extra {solid.name!r} pose"))
@@ -160,8 +172,9 @@ class CarrySpace:
         qa = np.atleast_2d(np.asarray(q, float))
         L = self.T_world_base @ self.model.link_transforms(qa)  # (N, dof + 1, 4, 4)
         moving = L[:, self.frames]
+        part = (L[:, self.dof] @ self.T_flange_part)[:, None]
         fixed = np.broadcast_to(self.fixed, (len(qa), *self.fixed.shape))
-        return np.concatenate([moving, fixed], axis=1)
+        return np.concatenate([moving, part, fixed], axis=1)
 
     def distance(self, qa: ArrayLike, qb: ArrayLike) -> FloatArray:
         """Return Σ_j |Δq_j|·w_j [m]: a bound on how far any checked point moves from qa to qb."""
