@@ -1,4 +1,7 @@
-"""Orientation helpers of eq. 7 against scipy's rotations and the loop's own recurrence."""
+"""Orientation helpers of eq. 7 against scipy's rotations and the loop's own recurrence.
+
+The recurrence (the loop's angle stepped directly) is the twin of the poles, of the
+suggested fixes for unstable gains and of the simulator's tool axis."""
 
 from __future__ import annotations
 
@@ -6,11 +9,16 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
+from workbench.polishing.force_control import HybridForceParams, simulate_hybrid_force_control
 from workbench.polishing.orientation import (
+    SUGGEST_BELOW,
+    instability_message,
     orientation_loop_poles,
+    orientation_loop_radius,
     rotate3,
     rotation_vector3,
     rotation_vectors,
+    stabilising_changes,
 )
 
 
@@ -49,10 +57,12 @@ def test_rotate3_is_rodrigues() -> None:
     assert rotate3(0.0, 0.0, 1.0, 0.0, 0.0, 0.0) == (0.0, 0.0, 1.0)
 
 
-def _recurrence(kop: float, kod: float, koi: float, dt: float, lag: int, n: int) -> np.ndarray:
-    """Twin: the loop's angle recurrence for a tilt about a fixed axis, stepped directly."""
+def _recurrence(
+    kop: float, kod: float, koi: float, dt: float, lag: int, n: int, th0: float = 1.0
+) -> np.ndarray:
+    """Twin: the loop's angle recurrence for a tilt th0 about a fixed axis, stepped directly."""
     th = np.zeros(n)
-    th[0] = 1.0
+    th[0] = th0
     u = np.zeros(n)
     integ, prev = 0.0, th[0]
     for k in range(n - 1):
@@ -89,3 +99,77 @@ def test_unstable_gains_have_a_pole_outside_the_unit_circle() -> None:
     assert np.abs(orientation_loop_poles(200.0, 0.05, 0.0, dt, 2)).max() > 1  # latency
     th = _recurrence(200.0, 0.05, 0.0, dt, 2, 400)
     assert np.abs(th[-50:]).max() > 10  # the twin blows up too
+
+
+def test_radius_rounds_the_latency_to_whole_cycles() -> None:
+    for latency, lag in ((0.008, 2), (0.0099, 2), (0.011, 3), (0.0, 0)):
+        rho, got = orientation_loop_radius(40.0, 0.05, 10.0, 250.0, latency)
+        assert got == lag
+        assert rho == np.abs(orientation_loop_poles(40.0, 0.05, 10.0, 1 / 250, lag)).max()
+    assert instability_message(40.0, 0.05, 0.0, 250.0, 0.008) is None  # the defaults: stable
+
+
+@pytest.mark.parametrize(
+    ("gains", "fix"),
+    [
+        ((600.0, 0.0, 0.0), "lower kp"),
+        ((200.0, 0.05, 0.0), "lower kp"),
+        # With an I term more P damps the integral's swing: lowering kp makes it worse.
+        ((1.0, 0.05, 3000.0), "raise kp"),
+        ((0.0, 0.0, 100.0), "raise kp"),
+    ],
+)
+def test_suggested_fix_makes_the_recurrence_decay(
+    gains: tuple[float, float, float], fix: str
+) -> None:
+    dt, lag, n = 1 / 250, 2, 3000
+    grow = 1500  # long enough for |z| = 1.002 to grow 20x, short of overflow for |z| = 1.5
+    assert np.abs(_recurrence(*gains, dt, lag, grow)[-50:]).max() > 1.0  # unstable: it grows
+    msg = instability_message(*gains, 250.0, 0.008, ("kp", "kd", "ki"))
+    assert msg is not None and msg.startswith(f"kp = {gains[0]:g} /s, kd = {gains[1]:g}, ")
+    assert f"; {fix} to " in msg
+    changes = stabilising_changes(*gains, 250.0, 0.008)
+    assert changes and changes[0][0] == "kop"
+    short = {"kop": "kp", "kod": "kd", "koi": "ki"}  # the names given to the message
+    for name, value, rho in changes:
+        i = ("kop", "kod", "koi").index(name)
+        g = list(gains)
+        g[i] = value
+        assert rho < SUGGEST_BELOW
+        th = _recurrence(g[0], g[1], g[2], dt, lag, n)
+        assert np.abs(th[-50:]).max() < 1e-9  # the suggested change decays in the twin
+        way = "lower" if value < gains[i] else "raise"
+        assert f"{way} {short[name]} to {value:g}" in msg
+    if fix == "raise kp":
+        assert "lower kp" not in msg
+        # The twin agrees that lowering kp is no fix: at half the kp it still grows.
+        assert np.abs(_recurrence(gains[0] / 2, *gains[1:], dt, lag, grow)[-50:]).max() > 1.0
+
+
+def test_tilt_matches_the_discrete_recurrence_with_latency_and_integral() -> None:
+    # At 250 Hz with 2 cycles of latency and an I term the simulated angle follows the
+    # loop's recurrence exactly (Rodrigues rotations about one axis add up angles exactly).
+    params = HybridForceParams(
+        latency=0.008,
+        kod=0.1,
+        koi=150.0,
+        max_angular_speed=np.inf,
+        filter_cutoff=np.inf,
+        damping=0.0,
+        friction=0.0,
+        form_error=0.0,
+        noise_std=0.0,
+        max_speed=np.inf,
+        max_accel=np.inf,
+    )
+    th0 = np.radians(3.0)
+    line = np.array([[0.0, 0.0, 0.0], [0.02, 0.0, 0.0]])
+    up = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
+    tool_z0 = [np.sin(th0), 0.0, -np.cos(th0)]  # tilted about y
+    res = simulate_hybrid_force_control(
+        line, up, 20.0, 0.01, params=params, dwell=1.0, tool_z0=tool_z0
+    )
+    dt, lag = 1 / params.control_rate, 2
+    th = _recurrence(params.kop, params.kod, params.koi, dt, lag, len(res.t), th0)
+    # The reported error is the unsigned angle; the signed one may overshoot through zero.
+    np.testing.assert_allclose(res.orientation_error, np.abs(th), atol=1e-12)

@@ -43,7 +43,7 @@ k (k_fp s + k_fi) / (s² + k k_fp s + k k_fi) in continuous time. The defaults (
 k_fp = 0.006 (m/s)/N, k_fi = 0.05 (m/s)/(N s)) give s² + 30 s + 250: poles -15 ± 5i rad/s,
 damping ratio 0.95, with margin for the 8 ms latency, the 40 Hz filter and the 4 m/s² limit.
 The orientation defaults (k_op = 40 /s, k_od = 0.05, k_oi = 0) give τ = 26 ms; with the
-2-cycle latency at 250 Hz the largest discrete pole is |z| = 0.74 (`orientation_loop_poles`).
+2-cycle latency at 250 Hz the largest discrete pole is |z| = 0.74 (`orientation_loop_radius`).
 """
 
 from __future__ import annotations
@@ -56,7 +56,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
 from workbench.polishing.orientation import (
-    orientation_loop_poles,
+    instability_message,
     rotate3,
     rotation_vector3,
     rotation_vectors,
@@ -103,7 +103,9 @@ class ForceControlResult:
     tool z and the actual surface normal (into the surface) [rad]; position (K, 3) tool tip
     [m]; tool_z (K, 3) unit tool axis; commanded_velocity (K, 3) [m/s]; commanded_rate
     (K, 3) angular velocity command [rad/s]; reference (K, 3) reference point on the path
-    [m]; surface_normal (K, 3) unit normal of the actual surface at the reference."""
+    [m]; surface (K, 3) the point of the actual surface (form error included) under the
+    reference, the contact's spring anchor [m]; surface_normal (K, 3) unit normal of the actual
+    surface there."""
 
     t: F64
     force: F64
@@ -115,6 +117,7 @@ class ForceControlResult:
     commanded_velocity: F64
     commanded_rate: F64
     reference: F64
+    surface: F64
     surface_normal: F64
     target_force: float
     params: HybridForceParams
@@ -170,15 +173,16 @@ def _check_orientation_gains(prm: HybridForceParams) -> None:
         raise InputError(
             f"params.max_angular_speed must be > 0 rad/s, got {prm.max_angular_speed!r}"
         )
-    dt = 1.0 / prm.control_rate
-    lag = int(round(prm.latency / dt))
-    rho = float(np.abs(orientation_loop_poles(prm.kop, prm.kod, prm.koi, dt, lag)).max())
-    if rho >= 1.0:
-        raise InputError(
-            f"orientation gains kop = {prm.kop:g} /s, kod = {prm.kod:g}, koi = {prm.koi:g} /s² "
-            f"make the loop unstable at {prm.control_rate:g} Hz with {lag} cycles of latency "
-            f"(largest pole |z| = {rho:.3f}); lower kop or kod"
-        )
+    msg = instability_message(
+        prm.kop,
+        prm.kod,
+        prm.koi,
+        prm.control_rate,
+        prm.latency,
+        names=("params.kop", "params.kod", "params.koi"),
+    )
+    if msg is not None:
+        raise InputError(msg)
 
 
 def _actual_normals(p: F64, s_path: F64, s_ref: F64, nrm: F64, slope: F64) -> F64:
@@ -389,6 +393,7 @@ def simulate_hybrid_force_control(
         commanded_velocity=np.asarray(vcmd),
         commanded_rate=np.asarray(wcmd),
         reference=ref,
+        surface=surf,
         surface_normal=n_act,
         target_force=fdes,
         params=prm,

@@ -82,3 +82,93 @@ def orientation_loop_poles(
         poly = np.polyadd(poly, [kod, -2.0 * kod, kod])
         poly = np.polyadd(poly, [koi * dt * dt, 0.0, 0.0])
     return np.asarray(np.roots(poly), dtype=np.complex128)
+
+
+GAINS = ("kop", "kod", "koi")
+_UNITS = (" /s", "", " /s²")
+# Where raising a gain that is 0 starts (then doubled): 1 /s, 0.01, 1 /s².
+_ZERO_START = (1.0, 0.01, 1.0)
+_STEPS = 12  # factors of 2 tried either way: a change of up to 4096x
+# A suggested change must leave a margin: a pole at |z| = 0.999 halves a tilt only every
+# 700 cycles (2.8 s at 250 Hz), stable on paper but no fix.
+SUGGEST_BELOW = 0.98
+
+
+def orientation_loop_radius(
+    kop: float, kod: float, koi: float, control_rate: float, latency: float
+) -> tuple[float, int]:
+    """Return (rho, lag): the largest pole modulus |z| of the orientation loop and its latency
+    in whole cycles.
+
+    Gains in 1/s, -, 1/s²; control_rate [Hz]; latency [s], rounded to whole cycles as the
+    simulation rounds it. The loop is stable when rho < 1."""
+    dt = 1.0 / control_rate
+    lag = int(round(latency / dt))
+    return float(np.abs(orientation_loop_poles(kop, kod, koi, dt, lag)).max()), lag
+
+
+def stabilising_changes(
+    kop: float, kod: float, koi: float, control_rate: float, latency: float
+) -> list[tuple[str, float, float]]:
+    """Return (gain, value, rho) for each gain ('kop', 'kod', 'koi') that alone makes the loop
+    stable with a margin when changed to `value` (the others kept): rho < `SUGGEST_BELOW`,
+    the loop's largest pole there.
+
+    Per gain the nearest such value in factors of 2 from the current one (up to 2**12 either
+    way, lower first on a tie; a gain may be lowered to 0; a zero gain is raised from 1 /s,
+    0.01 or 1 /s²); gains with none are left out. Sorted by how many factors of 2 the change
+    takes. Which way helps depends on the gains: with an I term raising kop can be the fix
+    (the P term damps the integral's oscillation), so no fixed advice is right."""
+    gains = (kop, kod, koi)
+    found: list[tuple[int, str, float, float]] = []
+    for i, name in enumerate(GAINS):
+        v = gains[i]
+        if v > 0:
+            tries = [(j, v * f) for j in range(1, _STEPS + 1) for f in (0.5**j, 2.0**j)]
+            tries.append((_STEPS + 1, 0.0))
+        else:
+            tries = [(j + 1, _ZERO_START[i] * 2.0**j) for j in range(_STEPS + 1)]
+        for dist, new in tries:
+            g = list(gains)
+            g[i] = new
+            rho, _ = orientation_loop_radius(g[0], g[1], g[2], control_rate, latency)
+            if rho < SUGGEST_BELOW:
+                found.append((dist, name, new, rho))
+                break
+    found.sort(key=lambda x: x[0])
+    return [(name, new, rho) for _, name, new, rho in found]
+
+
+def instability_message(
+    kop: float,
+    kod: float,
+    koi: float,
+    control_rate: float,
+    latency: float,
+    names: tuple[str, str, str] = GAINS,
+) -> str | None:
+    """Return why the orientation gains make the loop unstable and which change of one gain
+    fixes it, or None when the loop is stable (`orientation_loop_radius`).
+
+    `names` are the caller's field names for kop, kod, koi (each layer names its own
+    fields); gains in 1/s, -, 1/s², control_rate [Hz], latency [s]."""
+    rho, lag = orientation_loop_radius(kop, kod, koi, control_rate, latency)
+    if rho < 1.0:
+        return None
+    gains = (kop, kod, koi)
+    head = (
+        f"{names[0]} = {kop:g} /s, {names[1]} = {kod:g}, {names[2]} = {koi:g} /s² make the "
+        f"orientation loop unstable at {control_rate:g} Hz with {lag} cycles of latency "
+        f"(largest pole |z| = {rho:.3f}, stable below 1)"
+    )
+    fixes = []
+    for name, new, r in stabilising_changes(kop, kod, koi, control_rate, latency):
+        i = GAINS.index(name)
+        way = "lower" if new < gains[i] else "raise"
+        fixes.append(f"{way} {names[i]} to {new:g}{_UNITS[i]} (|z| = {r:.3f})")
+    if not fixes:
+        return (
+            f"{head}; no change of one gain alone (up to {2**_STEPS}x) makes it stable: change "
+            "the gains together, or lower the latency"
+        )
+    return f"{head}; " + ", or ".join(fixes)
