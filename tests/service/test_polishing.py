@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import copy
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -273,13 +274,42 @@ def test_orientation_loop_gains_come_from_the_file_in_si() -> None:
     assert params.max_angular_speed == pytest.approx(np.pi / 4)  # 45 deg/s
     ctrl["orientation"] = {"enabled": False, "kp": 0}  # off: no gain needed
     assert _wb(controller=ctrl).polishing.params().orientation_loop is False
-    # Gains that destabilise the loop at 250 Hz with 8 ms latency are refused by name.
+    # Gains that destabilise the loop at 250 Hz with 8 ms latency are refused by name on load,
+    # with the change that helps: less P here ...
     ctrl["orientation"] = {"kp": 200}
-    wb = _wb(controller=ctrl)
-    with pytest.raises(
-        InputError, match=r"polishing\.controller\.orientation: .*unstable.*lower kp"
-    ):
+    with pytest.raises(ProjectError) as err:
+        _wb(controller=ctrl)
+    (path, msg), *rest = err.value.problems
+    assert path == "polishing.controller.orientation" and not rest
+    assert re.match(
+        r"^kp = 200 /s, kd = 0\.05, ki = 0 /s² make the orientation loop unstable ", msg
+    )
+    assert msg.endswith("; lower kp to 100 /s (|z| = 0.868)")
+    # ... more P with a large I term (lowering kp would make it worse).
+    ctrl["orientation"] = {"kp": 1, "kd": 0.05, "ki": 3000}
+    with pytest.raises(ProjectError) as err:
+        _wb(controller=ctrl)
+    (path, msg), *rest = err.value.problems
+    assert path == "polishing.controller.orientation" and not rest
+    assert re.search(r"unstable .*; raise kp to \d", msg) and "lower kp" not in msg
+    ctrl["orientation"] = {"kp": 1, "kd": 0.05, "ki": 3000, "enabled": False}
+    _wb(controller=ctrl)  # off: not checked
+
+
+def test_unstable_gains_set_on_the_live_model_are_named_once_before_planning() -> None:
+    wb = _wb()
+    spec = wb.polishing.spec
+    spec.controller.orientation.kp = 600.0  # one field is valid alone; the loop is not
+    with pytest.raises(InputError) as err:
         wb.polishing.simulate()
+    msg = str(err.value)
+    assert re.match(
+        r"^polishing\.controller\.orientation: kp = 600 /s, kd = 0\.05, ki = 0 /s² make the "
+        r"orientation loop unstable at 250 Hz with 2 cycles of latency \(largest pole \|z\| = ",
+        msg,
+    )
+    assert msg.count("polishing.controller.orientation") == 1 and "; lower kp to " in msg
+    assert wb.polishing.last_path is None  # refused before the path was planned
 
 
 def test_parameters_survive_save_and_reopen(tmp_path: Path) -> None:

@@ -21,7 +21,8 @@ class OrientationLoopSpec(StrictModel):
     the surface normal, ω = ω_d + kp e + kd de/dt + ki ∫ e dt (e the tilt's rotation vector).
 
     A constant tilt decays with the time constant (1 + kd)/kp when ki = 0. The gains are
-    rates per angle (unit-free in deg or rad); the speed limit is in deg/s."""
+    rates per angle (unit-free in deg or rad); the speed limit is in deg/s. Gains that make
+    the loop unstable at the controller's rate and latency are refused (`ForceControllerSpec`)."""
 
     enabled: bool = True  # off: the tool z is held along the planned normal
     kp: NonNegative = 40.0  # [1/s]
@@ -51,6 +52,23 @@ class ForceControllerSpec(StrictModel):
     max_speed: Positive = 250.0  # [mm/s] speed limit of the commanded TCP velocity
     max_accel: Positive = 4000.0  # [mm/s²] limit on the change of the command
     orientation: OrientationLoopSpec = Field(default_factory=OrientationLoopSpec)
+
+    @field_validator("orientation")
+    @classmethod
+    def _stable_orientation(
+        cls, v: OrientationLoopSpec, info: ValidationInfo
+    ) -> OrientationLoopSpec:
+        rate, latency = info.data.get("control_rate"), info.data.get("latency")
+        if not v.enabled or rate is None or latency is None:
+            return v  # off, or the rate or latency is already refused by its own field
+        # Imported here: the polishing package pulls in trimesh and scipy, and the project
+        # model stays light for the files without a polishing section.
+        from workbench.polishing.orientation import instability_message
+
+        msg = instability_message(v.kp, v.kd, v.ki, rate, latency * 1e-3, ("kp", "kd", "ki"))
+        if msg is not None:
+            raise ValueError(msg)
+        return v
 
     @model_validator(mode="after")
     def _some_force_gain(self) -> ForceControllerSpec:

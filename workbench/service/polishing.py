@@ -38,7 +38,7 @@ from workbench.polishing import (
 )
 from workbench.polishing.bezier import BezierSurface
 from workbench.polishing.chart import SurfaceChart
-from workbench.polishing.orientation import orientation_loop_poles
+from workbench.polishing.orientation import instability_message
 from workbench.polishing.robot_path import solve_path_ik, tool_frames
 from workbench.project.polishing import PolishingSpec
 from workbench.service.convert import MM, pose_to_matrix
@@ -50,6 +50,7 @@ if TYPE_CHECKING:
 Progress = Callable[[float, str], None]
 F64 = NDArray[np.float64]
 PATTERNS = ("spiral", "raster")
+ORIENTATION = ("kp", "kd", "ki")  # the section's names of the orientation gains
 
 
 @dataclass(frozen=True)
@@ -276,20 +277,20 @@ class PolishingService:
         """Return the controller gains and contact model of the section in SI.
 
         Raises `InputError` naming `polishing.controller.orientation` for orientation gains
-        that make that loop unstable at the control rate and latency."""
+        that make that loop unstable at the control rate and latency, with the change of one
+        gain that makes it stable."""
         s = self.spec
         c, k = s.controller, s.contact
         o = c.orientation
-        if o.enabled:
-            dt = 1.0 / c.control_rate
-            lag = int(round(c.latency * 1e-3 / dt))
-            rho = float(np.abs(orientation_loop_poles(o.kp, o.kd, o.ki, dt, lag)).max())
-            if rho >= 1.0:
-                raise InputError(
-                    f"polishing.controller.orientation: kp = {o.kp:g} /s, kd = {o.kd:g}, "
-                    f"ki = {o.ki:g} /s² make the loop unstable at {c.control_rate:g} Hz with "
-                    f"{c.latency:g} ms latency (largest pole |z| = {rho:.3f}); lower kp or kd"
-                )
+        # The file's section is checked on load; this catches gains changed on the live model
+        # (`validate_assignment` checks one field, not the loop it belongs to).
+        msg = (
+            instability_message(o.kp, o.kd, o.ki, c.control_rate, c.latency * 1e-3, ORIENTATION)
+            if o.enabled
+            else None
+        )
+        if msg is not None:
+            raise InputError(f"polishing.controller.orientation: {msg}")
         return HybridForceParams(
             control_rate=c.control_rate,
             latency=c.latency * 1e-3,
@@ -447,6 +448,7 @@ class PolishingService:
         contact model. Kept as `last_simulation`.
         """
         report = progress or (lambda f, m: None)
+        params = self.params()  # bad gains are named before any path is planned
         pp = self._path()
         spec = self.spec
         proc = pp.path.is_process
@@ -458,12 +460,11 @@ class PolishingService:
                 pp.path.normals[proc],
                 spec.force,
                 feed,
-                params=self.params(),
+                params=params,
                 dwell=spec.dwell,
             )
         except InputError as exc:
-            where = "polishing.controller.orientation" if "orientation" in str(exc) else "polishing"
-            raise InputError(f"{where}: {exc}") from None
+            raise InputError(f"polishing: {exc}") from None
         settle = spec.dwell if spec.dwell > 0 else min(0.5, 0.1 * float(res.t[-1]))
         feed_end = spec.dwell + pp.length / feed
         window = (res.t >= settle) & (res.t <= feed_end)
