@@ -217,11 +217,6 @@ def _interfering(checker: InterferenceChecker, poses: NDArray[np.float64]) -> tu
     return tuple(hits)
 
 
-def _scaled(report: Progress, start: float, span: float) -> Progress:
-    """Return a progress callback mapping [0, 1] onto [start, start + span] of `report`."""
-    return lambda f, m: report(start + span * f, m)
-
-
 def _line(T0: NDArray[np.float64], T1: NDArray[np.float64]) -> NDArray[np.float64]:
     """Return poses (n, 4, 4) from T0 to T1 (both included), every PATH_SPACING [m] of TCP travel."""
     n = max(1, int(np.ceil(float(pose_distance(T0, T1, 0.1)) / PATH_SPACING)))
@@ -797,15 +792,14 @@ class AssemblyService:
 
         Checked: the plan's samples `times` (N,) [s] within the robot's tasks (its "active"
         samples; `joints` (N, dof) [rad] their joints, default from the tasks' trajectories),
-        by the conservative engine with exact confirmation (`check_motion`), task by task: the
-        verdict of each sample is the dense exact one, and the motion between samples is
-        certified on the task's trajectory with its exact bound on |q''|. Each task's start
-        and end times are checked as samples too, so the whole task [t0, t1] is covered;
-        between tasks the robot rests at home (a task's last configuration), which needs no
-        check of its own. The report's indices are indices into `times`:
+        by the conservative engine with exact confirmation (`check_motion`): the verdict of
+        each sample is the dense exact one, and the motion between them is certified on the
+        real timed motion (each task's trajectory from its `t0`, at rest at home between
+        tasks; |q''| bounded by the largest of the tasks' exact bounds: each task starts and
+        ends at rest, so the motion is C1). The tasks' start and end times are checked too
+        (they fall between samples). The report's indices are indices into `times`:
         `colliding_indices` the colliding samples, `between_indices` samples i whose interval
-        to i+1 collides or could not be certified, `first_index` likewise; clearance [m] is
-        the least over the tasks, `evaluated`, `flagged_samples`, `exact_pairs` their sums.
+        to i+1 collides or could not be certified, `first_index` likewise.
         """
         arm = self.arms[robot]
         mine = [t for t in tasks if t.robot == robot]
@@ -816,73 +810,56 @@ class AssemblyService:
         idx = np.flatnonzero(active)
         if not len(idx):
             return None
-        report = progress or (lambda f, m: None)
-        q_plan = None if joints is None else np.asarray(joints, float)
-        parts: list[EnginePathReport] = []
-        hits: set[int] = set()
-        between: set[int] = set()
-        firsts: list[tuple[float, int, bool, EnginePathReport]] = []
-        for k, task in enumerate(mine):
-            ti = np.flatnonzero((t_all >= task.t0) & (t_all <= task.t1))
-            ends = np.array([task.t0, task.t1])
-            if len(ti):
-                ends = ends[np.min(np.abs(ends[:, None] - t_all[ti][None]), axis=1) > 1e-12]
-            t_ext = np.concatenate([t_all[ti], ends])
-            order = np.argsort(t_ext, kind="stable")
-            t_ext = t_ext[order]
-            g_ext = np.concatenate([ti, np.full(len(ends), -1)])[order]  # plan index or -1
 
-            def motion(t: NDArray[np.float64], task: TaskPlan = task) -> NDArray[np.float64]:
-                return task.trajectory.at(np.asarray(t, float).reshape(-1) - task.t0)[0]
+        def motion(t: NDArray[np.float64]) -> NDArray[np.float64]:
+            t = np.asarray(t, float).reshape(-1)
+            q = np.tile(arm.q_home, (len(t), 1))
+            for task in mine:  # as `_sample`: a later task takes over from its start
+                sel = t >= task.t0
+                if sel.any():
+                    q[sel] = task.trajectory.at(t[sel] - task.t0)[0]
+            return q
 
-            q_ext = motion(t_ext)
-            if q_plan is not None:
-                rows = g_ext >= 0
-                q_ext[rows] = q_plan[g_ext[rows]]
-            rep = check_motion(
-                t_ext,
-                q_ext,
-                arm.checker,
-                sampler=motion,
-                acceleration=acceleration_bound(task.trajectory),
-                progress=_scaled(report, k / len(mine), 1 / len(mine)),
-            )
-            parts.append(rep)
-
-            # Back to the plan's samples: an extra sample (or an interval) maps to the plan's
-            # sample at or before its time.
-            def before(i: int, t_ext: NDArray[np.float64] = t_ext) -> int:
-                return int(np.clip(np.searchsorted(t_all, t_ext[i], side="right") - 1, 0, None))
-
-            hits |= {int(g_ext[i]) for i in rep.colliding_indices if g_ext[i] >= 0}
-            between |= {before(i) for i in rep.between_indices}
-            between |= {before(i) for i in rep.colliding_indices if g_ext[i] < 0}
-            if rep.first_index is not None:
-                i = rep.first_index
-                if g_ext[i] < 0 or rep.between:
-                    firsts.append((float(t_ext[i]), before(i), True, rep))
-                else:
-                    firsts.append((float(t_ext[i]), int(g_ext[i]), False, rep))
-        total = {
-            "samples": len(idx),
-            "colliding_indices": tuple(sorted(hits)),
-            "between_indices": tuple(sorted(between)),
-            "evaluated": sum(r.evaluated for r in parts),
-            "flagged_samples": sum(r.flagged_samples for r in parts),
-            "exact_pairs": sum(r.exact_pairs for r in parts),
-        }
-        if not firsts:
-            least = min(parts, key=lambda r: r.min_distance)
-            return dataclasses.replace(least, **total)  # type: ignore[arg-type]
-        # The earliest failure (a sample, or an event between samples at its own time).
-        _, first, is_between, rep = min(
-            firsts, key=lambda f: f[3].first_time if f[3].first_time is not None else f[0]
+        # The tasks' ends as extra samples: the stretches before the first active sample and
+        # after the last one are then between samples too.
+        ends = np.array([x for task in mine for x in (task.t0, task.t1)])
+        ends = ends[np.min(np.abs(ends[:, None] - t_all[idx][None]), axis=1) > 1e-12]
+        t_ext = np.concatenate([t_all[idx], ends])
+        order = np.argsort(t_ext, kind="stable")
+        t_ext = t_ext[order]
+        g_ext = np.concatenate([idx, np.full(len(ends), -1)])[order]  # plan index or -1
+        q_ext = motion(t_ext)
+        if joints is not None:
+            rows = g_ext >= 0
+            q_ext[rows] = np.asarray(joints, float)[g_ext[rows]]
+        acc = np.max([acceleration_bound(task.trajectory) for task in mine], axis=0)
+        rep = check_motion(
+            t_ext, q_ext, arm.checker, sampler=motion, acceleration=acc, progress=progress
         )
+
+        # Back to the plan's sample indices: an extra sample (or an interval) maps to the
+        # plan's sample at or before its time.
+        def before(i: int) -> int:
+            return int(np.clip(np.searchsorted(t_all, t_ext[i], side="right") - 1, 0, None))
+
+        hits = tuple(int(g_ext[i]) for i in rep.colliding_indices if g_ext[i] >= 0)
+        between = sorted(
+            {before(i) for i in rep.between_indices}
+            | {before(i) for i in rep.colliding_indices if g_ext[i] < 0}
+        )
+        first, is_between = rep.first_index, rep.between
+        if first is not None:
+            if g_ext[first] < 0 or is_between:
+                first, is_between = before(first), True
+            else:
+                first = int(g_ext[first])
         return dataclasses.replace(
             rep,
+            samples=len(idx),
+            colliding_indices=hits,
+            between_indices=tuple(between),
             first_index=first,
             between=is_between,
-            **total,  # type: ignore[arg-type]
         )
 
     def cell_bodies(self) -> Bodies:
