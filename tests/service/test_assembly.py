@@ -436,3 +436,85 @@ def test_joint_space_planning_refuses_bad_input_naming_the_field(wb):
     data["assembly"]["planner"]["robot_resolution"] = 0
     with pytest.raises(ProjectError, match=r"assembly.planner.robot_resolution"):
         Workbench.from_dict(data, base_dir=PROJECT.parent)
+
+
+# -- robots through the conservative engine ---------------------------------------------------
+def _active(plan, robot: str) -> np.ndarray:  # type: ignore[no-untyped-def]
+    active = np.zeros(len(plan.times), dtype=bool)
+    for task in plan.tasks:
+        if task.robot == robot:
+            active |= (plan.times >= task.t0) & (plan.times <= task.t1)
+    return np.flatnonzero(active)
+
+
+def _dense_hits(checker, q: np.ndarray, idx: np.ndarray) -> tuple[int, ...]:  # type: ignore[no-untyped-def]
+    """Twin: python-fcl (plus containment) of every robot pair at every active sample."""
+    return tuple(
+        int(idx[i]) for i, qi in enumerate(q) if checker.check(qi, distance=False).in_collision
+    )
+
+
+def test_robots_are_checked_fast_and_equal_the_dense_exact_check(wb, plan):
+    from workbench.collision.engine import EnginePathReport
+
+    a = wb.assembly
+    assert set(plan.robot_reports) == {t.robot for t in plan.tasks}
+    for name, arm in a.arms.items():
+        idx = _active(plan, name)
+        rep = plan.robot_reports[name]
+        assert isinstance(rep, EnginePathReport) and rep.mode == "spheres" and rep.fallback is None
+        assert rep.samples == len(idx)
+        dense = _dense_hits(arm.checker, plan.joints[name][idx], idx)
+        assert plan.robot_collisions[name] == dense == rep.colliding_indices
+        assert arm.checker.check_path(plan.joints[name][idx]).collision_free
+        # Certified between samples too (the tasks' ends included), the clearance stated.
+        assert rep.collision_free and rep.certified and plan.robot_between[name] == ()
+        assert rep.evaluated > len(idx) and rep.clearance >= 0
+        assert rep.message in plan.summary() and "including between samples" in rep.message
+    # The bound between samples needs a C1 motion: every task starts and ends at rest.
+    for task in plan.tasks:
+        _, v, _ = task.trajectory.at([0.0, task.trajectory.duration])
+        np.testing.assert_allclose(v, 0.0, atol=1e-9)
+
+
+def _with_intruder(wb, plan, robot: str) -> Workbench:  # type: ignore[no-untyped-def]
+    """The example with a 100 mm box on `robot`'s elbow at the middle of its first task."""
+    arm = wb.assembly.arms[robot]
+    task = next(t for t in plan.tasks if t.robot == robot)
+    q = task.trajectory.at([(task.t_pick - task.t0) / 2])[0][0]
+    p = (arm.setup.T_world_base @ arm.setup.model.link_transforms(q))[3, :3, 3] * 1e3
+    d = _data()
+    d["cell"]["objects"].append(
+        {
+            "name": "intruder",
+            "shape": "box",
+            "size": [100, 100, 100],
+            "pose": {"xyz": [float(v) for v in p], "rpy": [0, 0, 0]},
+            "collide": True,
+        }
+    )
+    return Workbench.from_dict(d, base_dir=PROJECT.parent)
+
+
+@pytest.mark.parametrize("robot", ["MZ07", "MZ07_B"])
+def test_a_box_in_a_robot_path_is_found_at_the_same_sample_as_the_dense_check(wb, plan, robot):
+    wb2 = _with_intruder(wb, plan, robot)
+    arm = wb2.assembly.arms[robot]
+    rep = wb2.assembly.check_robot(plan.tasks, plan.times, robot)
+    assert rep is not None and rep.mode == "spheres" and not rep.collision_free
+    idx = _active(plan, robot)
+    q = plan.joints[robot][idx]
+    dense = arm.checker.check_path(q)
+    assert rep.colliding_indices == _dense_hits(arm.checker, q, idx) != ()
+    assert rep.colliding_indices == tuple(int(idx[i]) for i in dense.colliding_indices)
+    if rep.between:  # a collision between two earlier free samples, confirmed exactly
+        assert rep.first_index < idx[dense.first_index] and rep.link is not None
+        assert arm.checker.check(rep.first_q, distance=False).in_collision
+    else:
+        assert rep.first_index == idx[dense.first_index]
+        assert rep.first_time == pytest.approx(plan.times[rep.first_index])
+    assert rep.obstacle == "intruder" and rep.link in arm.checker.scene.moving
+    assert "intruder" in rep.message
+    # The other robot does not pass there.
+    other = next(n for n in wb2.assembly.arms if n != robot)
+    assert wb2.assembly.check_robot(plan.tasks, plan.times, other).colliding_indices == ()

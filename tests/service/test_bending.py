@@ -321,3 +321,73 @@ def test_units_of_the_grasp(wb: Workbench) -> None:
     np.testing.assert_allclose(T[:3, 3], [0.150, 0.100, 0.75e-3], atol=1e-12)
     np.testing.assert_allclose(T[:3, 2], [0, 0, -1], atol=1e-12)
     assert MM == 1e-3 and DEG == pytest.approx(np.pi / 180)
+
+
+# -- the robot through the conservative engine ------------------------------------------------
+def _dense(wb: Workbench, q: np.ndarray) -> list[bool]:
+    """Twin: python-fcl (plus containment) of every robot pair at every frame."""
+    return [wb.checker.check(qi, distance=False).in_collision for qi in q]
+
+
+def test_robot_is_checked_fast_and_equals_the_dense_exact_check(wb: Workbench, plan) -> None:  # type: ignore[no-untyped-def]
+    from workbench.collision.engine import EnginePathReport
+
+    rep = plan.robot_report
+    assert isinstance(rep, EnginePathReport) and rep.mode == "spheres" and rep.fallback is None
+    dense = wb.checker.check_path(plan.joints)
+    np.testing.assert_array_equal(plan.robot_colliding, _dense(wb, plan.joints))
+    assert set(np.flatnonzero(plan.robot_colliding)) == set(dense.colliding_indices)
+    # Collision-free between frames too, with a clearance the report states in the summary.
+    assert rep.collision_free and rep.certified and not plan.robot_between.any()
+    assert rep.clearance > 0 and rep.evaluated >= len(plan.times)
+    assert "including between samples" in plan.summary() and rep.message in plan.summary()
+    # The part is the tree's: the robot's checker holds links and tool only, so the tool and
+    # the part it grips are never a pair.
+    flanges = {f.name for f in wb.bending.part.flanges}
+    bodies = set(wb.checker.scene.moving)
+    assert not flanges & bodies and all(b in bodies for b, _ in wb.checker.scene.pairs)
+
+
+def _intruder(wb: Workbench, frame: int, body: int) -> dict:
+    """The example with a 120 mm box on robot frame `body`'s origin at transfer frame `frame`."""
+    q = wb.bending.last_plan.joints[frame]  # type: ignore[union-attr]
+    L = wb.setup.T_world_base @ wb.robot.link_transforms(q)
+    p = L[body, :3, 3] / MM
+    d = example_dict()
+    d["cell"]["objects"].append(
+        {
+            "name": "intruder",
+            "shape": "box",
+            "size": [120, 120, 120],
+            "pose": {"xyz": [float(v) for v in p], "rpy": [0, 0, 0]},
+            "collide": True,
+        }
+    )
+    return d
+
+
+def test_a_box_in_the_transfer_path_is_found_at_the_same_frame_as_the_dense_check(
+    wb: Workbench, plan
+) -> None:  # type: ignore[no-untyped-def]
+    F = len(plan.times)
+    wb2 = Workbench.from_dict(_intruder(wb, F // 2, 3), base_dir=EXAMPLE.parent)
+    p2 = wb2.bending.plan()
+    rep = p2.robot_report
+    assert rep is not None and rep.mode == "spheres"
+    dense = wb2.checker.check_path(p2.joints)
+    np.testing.assert_array_equal(p2.robot_colliding, _dense(wb2, p2.joints))
+    assert p2.robot_colliding[F // 2] and not rep.collision_free
+    assert tuple(np.flatnonzero(p2.robot_colliding)) == dense.colliding_indices
+    # The first failure: the same frame as the dense check, unless the engine found a
+    # collision between two earlier free frames (then it is one the dense check misses).
+    if rep.between:
+        assert rep.first_index < dense.first_index and rep.link is not None
+        assert wb2.checker.check(rep.first_q, distance=False).in_collision  # confirmed exactly
+    else:
+        assert rep.first_index == dense.first_index
+    assert rep.obstacle == "intruder" and rep.link in wb2.checker.scene.moving
+    assert "intruder" in p2.summary() and rep.message in p2.summary()
+    first = p2.first_collision
+    assert first is not None and not p2.ok
+    if first.kind == "robot" and not first.between:
+        assert first.frame == dense.first_index and "intruder" in first.obstacles

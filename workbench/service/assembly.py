@@ -6,14 +6,17 @@ A part move is planned by `plan_part_path` among the cell's objects and the othe
 carries it follows by inverse kinematics in one arm configuration, or (planner
 "joint_rrt_connect") it is planned in the carrying robot's joint space, robot and part
 checked together; the robot motion is timed by the motion module (ruckig, jerk-limited);
-the timed motion is checked again: each robot against the cell (python-fcl), each carried
-part against everything (interference checker), robots against each other and robots
-against the parts (`contacts.Bodies`), the last two reported with both bodies and the time.
+the timed motion is checked again: each robot against the cell and itself (the conservative
+engine, spheres + SDF, what it flags confirmed with python-fcl, certified between samples),
+each carried part against everything (interference checker), robots against each other and
+robots against the parts (`contacts.Bodies`), the last two reported with both bodies and
+the time.
 """
 
 from __future__ import annotations
 
 import csv
+import dataclasses
 import io
 import json
 import threading
@@ -32,6 +35,7 @@ from workbench.assembly.contacts import Bodies, Contact
 from workbench.assembly.motion import check_pose, interpolate, path_samples, pose_distance
 from workbench.assembly.planners.joint_rrt import CarrySpace, plan_carried_path
 from workbench.collision import RobotCollisionChecker, Solid
+from workbench.collision.engine import EnginePathReport
 from workbench.errors import (
     CollisionError,
     InputError,
@@ -46,7 +50,7 @@ from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rap
 from workbench.project.assembly import AssemblyPartSpec, AssemblySpec, AssemblyTaskSpec
 from workbench.project.models import Robot, Tool
 from workbench.service.convert import DEG, MM, load_mesh_file, matrix_to_pose, pose_to_matrix
-from workbench.service.motion_plan import EXPORT_FORMATS
+from workbench.service.motion_plan import EXPORT_FORMATS, acceleration_bound, check_motion
 from workbench.service.robot_setup import RobotSetup, build_robot
 
 if TYPE_CHECKING:
@@ -134,7 +138,10 @@ class AssemblyPlan:
     part_poses[part] (N, 4, 4) [m]; robot_collisions[robot] and part_interference[part]:
     sample indices where the timed motion hits the cell (robot) or an obstacle (part);
     contacts: every robot–robot and robot–part contact (both bodies, e.g. "MZ07/link3" and
-    "part screw_2", sample index and time [s]).
+    "part screw_2", sample index and time [s]). robot_reports[robot]: the robot's
+    `EnginePathReport` over its active samples (indices of this plan's samples; its
+    `message` states the guarantee between samples or the first failure); robot_between[robot]:
+    samples i whose interval to i+1 collides, or could not be certified, between them.
     """
 
     tasks: tuple[TaskPlan, ...]
@@ -146,6 +153,8 @@ class AssemblyPlan:
     robot_collisions: dict[str, tuple[int, ...]]
     part_interference: dict[str, tuple[int, ...]]
     contacts: tuple[Contact, ...] = ()
+    robot_reports: dict[str, EnginePathReport] = field(default_factory=dict, repr=False)
+    robot_between: dict[str, tuple[int, ...]] = field(default_factory=dict)
 
     @property
     def duration(self) -> float:
@@ -154,9 +163,14 @@ class AssemblyPlan:
 
     @property
     def colliding(self) -> NDArray[np.bool_]:
-        """Return (N,) True at samples where any robot collides or any carried part interferes."""
+        """Return (N,) True at samples where any robot collides (at the sample or up to the next)
+        or any carried part interferes."""
         out = np.zeros(len(self.times), dtype=bool)
-        for idx in (*self.robot_collisions.values(), *self.part_interference.values()):
+        for idx in (
+            *self.robot_collisions.values(),
+            *self.robot_between.values(),
+            *self.part_interference.values(),
+        ):
             out[list(idx)] = True
         out[[c.index for c in self.contacts]] = True
         return out
@@ -173,7 +187,11 @@ class AssemblyPlan:
         state = "collision-free at every sample" if hits == 0 else f"{hits} colliding samples"
         if self.contacts:
             state += f" (first contact: {self.contacts[0].describe()})"
-        return f"{len(self.tasks)} part moves ({order}); cycle time {self.duration:.3f} s; {state}"
+        robots = "".join(f"; {n}: {r.message}" for n, r in self.robot_reports.items())
+        return (
+            f"{len(self.tasks)} part moves ({order}); cycle time {self.duration:.3f} s;"
+            f" {state}{robots}"
+        )
 
     def part_pose(self, name: str, t: float) -> NDArray[np.float64]:
         """Return part `name`'s world pose (4, 4) at time t [s] (nearest sample)."""
@@ -739,16 +757,14 @@ class AssemblyService:
                 part_hits[part.name] = tuple(int(idx[h]) for h in hits)
             poses[part.name] = P
         robot_hits: dict[str, tuple[int, ...]] = {}
-        for name, arm in self.arms.items():
-            active = np.zeros(len(times), dtype=bool)
-            for task in tasks:
-                if task.robot == name:
-                    active |= (times >= task.t0) & (times <= task.t1)
-            idx = np.flatnonzero(active)
-            rep = arm.checker.check_path(joints[name][idx]) if len(idx) else None
-            robot_hits[name] = (
-                tuple(int(idx[i]) for i in rep.colliding_indices) if rep is not None else ()
-            )
+        robot_between: dict[str, tuple[int, ...]] = {}
+        reports: dict[str, EnginePathReport] = {}
+        for name in self.arms:
+            rep = self.check_robot(tasks, times, name, joints=joints[name])
+            robot_hits[name] = rep.colliding_indices if rep is not None else ()
+            robot_between[name] = rep.between_indices if rep is not None else ()
+            if rep is not None:
+                reports[name] = rep
         return AssemblyPlan(
             tasks=tuple(tasks),
             times=times,
@@ -759,6 +775,91 @@ class AssemblyService:
             robot_collisions=robot_hits,
             part_interference=part_hits,
             contacts=self.cross_contacts(tasks, times, joints, poses),
+            robot_reports=reports,
+            robot_between=robot_between,
+        )
+
+    def check_robot(
+        self,
+        tasks: list[TaskPlan] | tuple[TaskPlan, ...],
+        times: NDArray[np.float64],
+        robot: str,
+        *,
+        joints: NDArray[np.float64] | None = None,
+        progress: Progress | None = None,
+    ) -> EnginePathReport | None:
+        """Return robot `robot`'s check against the cell and itself over its tasks (None if it has none).
+
+        Checked: the plan's samples `times` (N,) [s] within the robot's tasks (its "active"
+        samples; `joints` (N, dof) [rad] their joints, default from the tasks' trajectories),
+        by the conservative engine with exact confirmation (`check_motion`): the verdict of
+        each sample is the dense exact one, and the motion between them is certified on the
+        real timed motion (each task's trajectory from its `t0`, at rest at home between
+        tasks; |q''| bounded by the largest of the tasks' exact bounds: each task starts and
+        ends at rest, so the motion is C1). The tasks' start and end times are checked too
+        (they fall between samples). The report's indices are indices into `times`:
+        `colliding_indices` the colliding samples, `between_indices` samples i whose interval
+        to i+1 collides or could not be certified, `first_index` likewise.
+        """
+        arm = self.arms[robot]
+        mine = [t for t in tasks if t.robot == robot]
+        t_all = np.asarray(times, float)
+        active = np.zeros(len(t_all), dtype=bool)
+        for task in mine:
+            active |= (t_all >= task.t0) & (t_all <= task.t1)
+        idx = np.flatnonzero(active)
+        if not len(idx):
+            return None
+
+        def motion(t: NDArray[np.float64]) -> NDArray[np.float64]:
+            t = np.asarray(t, float).reshape(-1)
+            q = np.tile(arm.q_home, (len(t), 1))
+            for task in mine:  # as `_sample`: a later task takes over from its start
+                sel = t >= task.t0
+                if sel.any():
+                    q[sel] = task.trajectory.at(t[sel] - task.t0)[0]
+            return q
+
+        # The tasks' ends as extra samples: the stretches before the first active sample and
+        # after the last one are then between samples too.
+        ends = np.array([x for task in mine for x in (task.t0, task.t1)])
+        ends = ends[np.min(np.abs(ends[:, None] - t_all[idx][None]), axis=1) > 1e-12]
+        t_ext = np.concatenate([t_all[idx], ends])
+        order = np.argsort(t_ext, kind="stable")
+        t_ext = t_ext[order]
+        g_ext = np.concatenate([idx, np.full(len(ends), -1)])[order]  # plan index or -1
+        q_ext = motion(t_ext)
+        if joints is not None:
+            rows = g_ext >= 0
+            q_ext[rows] = np.asarray(joints, float)[g_ext[rows]]
+        acc = np.max([acceleration_bound(task.trajectory) for task in mine], axis=0)
+        rep = check_motion(
+            t_ext, q_ext, arm.checker, sampler=motion, acceleration=acc, progress=progress
+        )
+
+        # Back to the plan's sample indices: an extra sample (or an interval) maps to the
+        # plan's sample at or before its time.
+        def before(i: int) -> int:
+            return int(np.clip(np.searchsorted(t_all, t_ext[i], side="right") - 1, 0, None))
+
+        hits = tuple(int(g_ext[i]) for i in rep.colliding_indices if g_ext[i] >= 0)
+        between = sorted(
+            {before(i) for i in rep.between_indices}
+            | {before(i) for i in rep.colliding_indices if g_ext[i] < 0}
+        )
+        first, is_between = rep.first_index, rep.between
+        if first is not None:
+            if g_ext[first] < 0 or is_between:
+                first, is_between = before(first), True
+            else:
+                first = int(g_ext[first])
+        return dataclasses.replace(
+            rep,
+            samples=len(idx),
+            colliding_indices=hits,
+            between_indices=tuple(between),
+            first_index=first,
+            between=is_between,
         )
 
     def cell_bodies(self) -> Bodies:

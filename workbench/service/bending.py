@@ -17,6 +17,7 @@ import shapely
 from numpy.typing import ArrayLike, NDArray
 from pydantic import ValidationError
 
+from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, ProjectError, UnreachableError
 from workbench.geometry.obb import OBB, obb_overlap
 from workbench.geometry.transforms import invert_transform, make_transform, rot_x, rot_z
@@ -24,6 +25,7 @@ from workbench.motion import Trajectory, smooth_joint_path
 from workbench.project.bending import BendingSpec, PartSpec
 from workbench.project.io import problems_from
 from workbench.service.convert import DEG, MM, pose_to_matrix
+from workbench.service.motion_plan import check_trajectory
 from workbench.sheetmetal import FoldedState, FramesReport, OBBTree, SheetMetalPart
 from workbench.sheetmetal.obstacles import ExactShape, Obstacles, confirm_exact
 
@@ -46,13 +48,18 @@ class DiePlacement:
 
 @dataclass(frozen=True)
 class FirstCollision:
-    """The first colliding transfer frame: what hit what (part flanges or robot bodies)."""
+    """The first colliding transfer frame: what hit what (part flanges or robot bodies).
+
+    `between`: the robot collides (or could not be certified free: no bodies named) between
+    frame `frame` and the next, at `time` [s]; the frames themselves are free.
+    """
 
     frame: int
     time: float  # [s]
     kind: str  # "part" or "robot"
     flanges: tuple[str, ...]
     obstacles: tuple[str, ...]
+    between: bool = False
 
     def describe(self) -> str:
         """Return one line naming the frame, the flange(s) or robot body and the obstacle(s)."""
@@ -61,8 +68,18 @@ class FirstCollision:
             if self.kind == "part"
             else f"robot {', '.join(self.flanges)}"
         )
+        where = (
+            f"between frames {self.frame + 1} and {self.frame + 2}"
+            if self.between
+            else f"frame {self.frame + 1}"
+        )
+        if self.between and not self.flanges:
+            return (
+                f"{where} (t = {self.time:.3f} s): robot clearance below what the check"
+                " resolves; treat it as touching"
+            )
         return (
-            f"frame {self.frame + 1} (t = {self.time:.3f} s): {what} hits "
+            f"{where} (t = {self.time:.3f} s): {what} hits "
             f"{', '.join(repr(o) for o in self.obstacles)}"
         )
 
@@ -73,7 +90,11 @@ class BendingPlan:
 
     Per transfer frame (F,): `times` [s], `joints` (F, dof) [rad], `T_world_grasp` (F, 4, 4)
     [m] of the gripped flange, OBB tests of the tree and of the flat per-flange loop, and the
-    check times [s] of both.
+    check times [s] of both. The part is checked by its OBB tree; the robot (links and tool,
+    not the part it holds) by the conservative engine: `robot_colliding` is the exact verdict
+    of each frame, `robot_between` (F,) marks frames whose interval to the next collides (or
+    could not be certified), and `robot_report` (an `EnginePathReport`) states the guarantee
+    between frames or the first failure.
     """
 
     placements: tuple[DiePlacement, ...]
@@ -92,11 +113,14 @@ class BendingPlan:
     robot_colliding: NDArray[np.bool_]
     first_collision: FirstCollision | None
     obstacle_names: tuple[str, ...]
+    robot_report: EnginePathReport | None = None
+    robot_between: NDArray[np.bool_] | None = None
 
     @property
     def colliding(self) -> NDArray[np.bool_]:
-        """Return (F,) frames where the part or the robot collides."""
-        return self.part_colliding | self.robot_colliding
+        """Return (F,) frames where the part or the robot collides (at the frame or up to the next)."""
+        out = self.part_colliding | self.robot_colliding
+        return out if self.robot_between is None else out | self.robot_between
 
     @property
     def ok(self) -> bool:
@@ -115,9 +139,10 @@ class BendingPlan:
             f"{self.trajectory.duration:.2f} s, {F} frames checked. OBB tests on free frames: "
             f"tree/flat = {ratio:.2f}."
         )
+        robot = f" Robot: {self.robot_report.message}." if self.robot_report is not None else ""
         if self.first_collision is None:
-            return head + " Collision-free."
-        return head + f" First collision: {self.first_collision.describe()}."
+            return head + " Collision-free." + robot
+        return head + f" First collision: {self.first_collision.describe()}." + robot
 
 
 @dataclass(frozen=True, eq=False)
@@ -482,7 +507,9 @@ class BendingService:
 
         The transfer is a jerk-limited (ruckig) joint trajectory; `frames` (>= 22) evenly
         timed frames are checked: the part with its OBB tree against the cell (leaf hits on
-        cylinders and meshes confirmed with python-fcl) and the robot with python-fcl.
+        cylinders and meshes confirmed with python-fcl) and the robot's links and tool by the
+        conservative engine (`check_trajectory`: spheres + SDF at every frame, what it flags
+        confirmed with python-fcl, the motion between frames certified on the trajectory).
         `progress(fraction, message)` reports the stages.
         """
         report = progress or (lambda f, m: None)
@@ -517,12 +544,29 @@ class BendingService:
         flat = tree.flat_collide_frames(obst.boxes, T_world_grasp)
         tree_s, flat_s = _time_checks(tree, obst.boxes, T_world_grasp)
         report(0.7, "checking the robot against the cell")
-        path = self.wb.checker.check_path(q)
+        # The checker holds the robot's links and tool, not the part: the tool and the part it
+        # grips are never a pair, and the part's own checks are the tree's above.
+        path = check_trajectory(
+            traj, times, q, self.wb.checker, progress=lambda f, m: report(0.7 + 0.25 * f, m)
+        )
         robot_hit = np.zeros(F, dtype=bool)
         robot_hit[list(path.colliding_indices)] = True
+        robot_between = np.zeros(F, dtype=bool)
+        robot_between[list(path.between_indices)] = True
         first = None
         hit_frames = np.flatnonzero(rep.collides | robot_hit)
-        if len(hit_frames):
+        if path.between and path.first_index is not None and path.first_time is not None:
+            # The robot's first failure lies between two free frames, before any frame hit.
+            if not len(hit_frames) or path.first_time < times[hit_frames[0]]:
+                first = FirstCollision(
+                    path.first_index,
+                    float(path.first_time),
+                    "robot",
+                    (path.link,) if path.link else (),
+                    (path.obstacle,) if path.obstacle else (),
+                    between=True,
+                )
+        if len(hit_frames) and first is None:
             f0 = int(hit_frames[0])
             if rep.collides[f0]:
                 fr = rep.frame(f0)
@@ -559,6 +603,8 @@ class BendingService:
             robot_colliding=robot_hit,
             first_collision=first,
             obstacle_names=obst.names,
+            robot_report=path,
+            robot_between=robot_between,
         )
         self._plan = plan
         report(1.0, "done")

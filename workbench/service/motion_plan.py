@@ -215,6 +215,32 @@ def check_trajectory(
     real motion (`trajectory.at`) with the exact acceleration bound. Fallback: every sample
     checked exactly with python-fcl, nothing certified between them (`fallback` says why).
     """
+    return check_motion(
+        times,
+        q,
+        checker,
+        sampler=lambda t: trajectory.at(t)[0],
+        acceleration=acceleration_bound(trajectory),
+        progress=progress,
+    )
+
+
+def check_motion(
+    times: NDArray[np.float64],
+    q: NDArray[np.float64],
+    checker: RobotCollisionChecker,
+    *,
+    sampler: Callable[[NDArray[np.float64]], NDArray[np.float64]],
+    acceleration: NDArray[np.float64],
+    progress: Progress | None = None,
+) -> EnginePathReport:
+    """Return the collision report of a motion sampled at `times` [s] as q (N, dof) [rad].
+
+    sampler(times (M,) [s]) -> (M, dof) [rad] gives the real motion between samples;
+    acceleration (dof,) [rad/s^2] bounds |q''| over it (the motion must be C1: the chord
+    deviation bound ``acceleration * h**2 / 8`` needs a continuous velocity). Fast mode and
+    fallback as in `check_trajectory`.
+    """
     from workbench.service.collision_engine import shared_engine
 
     report = progress or (lambda f, m: None)
@@ -223,8 +249,8 @@ def check_trajectory(
         return engine.check_path(
             q,
             times,
-            sampler=lambda t: trajectory.at(t)[0],
-            acceleration=acceleration_bound(trajectory),
+            sampler=sampler,
+            acceleration=acceleration,
             progress=lambda f, m: report(0.2 + 0.8 * f, m),
         )
     dense = checker.check_path(q, progress=lambda f, m: report(0.2 + 0.8 * f, m))
