@@ -47,10 +47,11 @@ from workbench.errors import (
 from workbench.geometry.transforms import invert_transform, make_transform
 from workbench.motion import Move, Program, Trajectory, smooth_joint_path
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
+from workbench.motion.validation import acceleration_bound
 from workbench.project.assembly import AssemblyPartSpec, AssemblySpec, AssemblyTaskSpec
 from workbench.project.models import Robot, Tool
 from workbench.service.convert import DEG, MM, load_mesh_file, matrix_to_pose, pose_to_matrix
-from workbench.service.motion_plan import EXPORT_FORMATS, acceleration_bound, check_motion
+from workbench.service.motion_plan import EXPORT_FORMATS, check_motion
 from workbench.service.robot_setup import RobotSetup, build_robot
 
 if TYPE_CHECKING:
