@@ -15,6 +15,7 @@ from workbench.errors import InputError
 from workbench.geometry import OBB, obb_overlap
 from workbench.geometry.transforms import make_transform, rot_z
 from workbench.sheetmetal import SheetMetalPart
+from workbench.sheetmetal.obbtree import OBBTree
 
 _spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
 _tp = importlib.util.module_from_spec(_spec)
@@ -245,3 +246,77 @@ def test_no_obstacles_and_no_frames(seed_state) -> None:
     empty = tree.collide_frames(cup, np.zeros((0, 4, 4)))
     assert empty.collides.shape == empty.n_obb_tests.shape == (0,)
     assert empty.hits.shape == (0, 3) and empty.tested.shape == (0, 2)
+
+
+def thin_plate_tree(depth: int) -> OBBTree:
+    """Coplanar plates (half thickness 1e-5 m) on the world axes: `depth` 0 is one leaf, 1 a
+    root over three leaves, 2 a root over a leaf and a node over two leaves."""
+    half = np.array([0.5, 0.5, 1e-5])
+    leaf_x = [0.0] if depth == 0 else [-1.0, 0.0, 1.0]
+    boxes = [(x, half) for x in leaf_x]
+    if depth == 0:
+        return OBBTree(
+            0,
+            OBB(np.zeros((1, 3)), np.eye(3)[None], half[None]),
+            ((0,),),
+            np.array([0]),
+            np.array([0]),
+            np.array([0]),
+            np.array([0]),
+            np.zeros(0, dtype=np.int64),
+        )
+    wide = np.array([1.5, 0.5, 1e-5])
+    if depth == 1:  # root; leaves 1, 2, 3
+        boxes = [(0.0, wide)] + boxes
+        flanges = ((0, 1, 2), (0,), (1,), (2,))
+        leaf, level = [-1, 0, 1, 2], [0, 1, 1, 1]
+        start, count, index = [0, 4, 4, 4], [3, 0, 0, 0], [1, 2, 3]
+    else:  # root; leaf 1 (flange 0), node 2 over leaves 3, 4 (flanges 1, 2)
+        boxes = [(0.0, wide), boxes[0], (0.5, np.array([1.0, 0.5, 1e-5]))] + boxes[1:]
+        flanges = ((0, 1, 2), (0,), (1, 2), (1,), (2,))
+        leaf, level = [-1, 0, -1, 1, 2], [0, 1, 1, 2, 2]
+        start, count, index = [0, 2, 2, 4, 4], [2, 0, 2, 0, 0], [1, 2, 3, 4]
+    n = len(boxes)
+    return OBBTree(
+        0,
+        OBB(np.array([[x, 0, 0] for x, _ in boxes]), np.eye(3), np.array([h for _, h in boxes])),
+        flanges,
+        np.array(leaf),
+        np.array(level),
+        np.array(start),
+        np.array(count),
+        np.array(index),
+    )
+
+
+@pytest.mark.parametrize("depth", [0, 1, 2])
+def test_touching_thin_plates_are_hits_at_every_level(depth: int) -> None:
+    # Thin plates on the world axes against a thin plate obstacle, faces a gap apart along z:
+    # the exact test keeps gaps up to its absolute SAT_EPS term (~1e-12 m here), far more
+    # than a relative slack of the 1e-5 m half thickness; the AABB pre-filter (at the start
+    # nodes and, with >= AABB_FILTER_MIN pairs, at every level below) must keep them too.
+    from workbench.sheetmetal.obbcheck import AABB_FILTER_MIN
+
+    rng = np.random.default_rng(9)
+    tree = thin_plate_tree(depth)
+    leaves = tree.boxes[tree.leaves]
+    obstacle = OBB([0.0, 0, 0], np.eye(3), [0.5, 0.5, 1e-5])
+    n = 8 * AABB_FILTER_MIN
+    flange = rng.integers(0, len(leaves), n)
+    side = rng.choice([-1.0, 1.0], n)
+    for gap, expect in ((0.0, True), (1e-13, True), (5e-13, True), (1e-11, False)):
+        # Frame k puts leaf flange[k] right above or below the obstacle, shifted sideways.
+        shift = np.c_[rng.uniform(-0.3, 0.3, (n, 2)), side * (2e-5 + gap)]
+        T = make_transform(np.eye(3), shift - leaves.center[flange])
+        for one_frame in (False, True):
+            rep = (
+                [tree.collide(obstacle.reshape(1), T[k]) for k in range(n)]
+                if one_frame
+                else tree.collide_frames(obstacle.reshape(1), T)
+            )
+            collides = np.array([r.collides for r in rep]) if one_frame else rep.collides
+            world = leaves.reshape(1, -1).transformed(T[:, None])
+            brute = obb_overlap(world, obstacle.reshape(1, 1))  # (n, leaves)
+            np.testing.assert_array_equal(collides, brute.any(axis=1))
+            touched = brute[np.arange(n), flange]
+            assert touched.all() if expect else not touched.any()
