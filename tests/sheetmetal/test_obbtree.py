@@ -276,7 +276,6 @@ def thin_plate_tree(depth: int) -> OBBTree:
         flanges = ((0, 1, 2), (0,), (1, 2), (1,), (2,))
         leaf, level = [-1, 0, -1, 1, 2], [0, 1, 1, 2, 2]
         start, count, index = [0, 2, 2, 4, 4], [2, 0, 2, 0, 0], [1, 2, 3, 4]
-    n = len(boxes)
     return OBBTree(
         0,
         OBB(np.array([[x, 0, 0] for x, _ in boxes]), np.eye(3), np.array([h for _, h in boxes])),
