@@ -9,6 +9,7 @@ from pathlib import Path
 import fcl
 import numpy as np
 import pytest
+from numpy.typing import ArrayLike
 from scipy.spatial.transform import Rotation
 
 from workbench.errors import InputError
@@ -248,6 +249,20 @@ def test_no_obstacles_and_no_frames(seed_state) -> None:
     assert empty.hits.shape == (0, 3) and empty.tested.shape == (0, 2)
 
 
+def one_box_tree(half: ArrayLike) -> OBBTree:
+    """A tree of one leaf: a box on the grasp frame's axes with half extents `half` [m]."""
+    return OBBTree(
+        0,
+        OBB(np.zeros((1, 3)), np.eye(3)[None], np.asarray(half, float)[None]),
+        ((0,),),
+        np.array([0]),
+        np.array([0]),
+        np.array([0]),
+        np.array([0]),
+        np.zeros(0, dtype=np.int64),
+    )
+
+
 def thin_plate_tree(depth: int) -> OBBTree:
     """Coplanar plates (half thickness 1e-5 m) on the world axes: `depth` 0 is one leaf, 1 a
     root over three leaves, 2 a root over a leaf and a node over two leaves."""
@@ -255,16 +270,7 @@ def thin_plate_tree(depth: int) -> OBBTree:
     leaf_x = [0.0] if depth == 0 else [-1.0, 0.0, 1.0]
     boxes = [(x, half) for x in leaf_x]
     if depth == 0:
-        return OBBTree(
-            0,
-            OBB(np.zeros((1, 3)), np.eye(3)[None], half[None]),
-            ((0,),),
-            np.array([0]),
-            np.array([0]),
-            np.array([0]),
-            np.array([0]),
-            np.zeros(0, dtype=np.int64),
-        )
+        return one_box_tree(half)
     wide = np.array([1.5, 0.5, 1e-5])
     if depth == 1:  # root; leaves 1, 2, 3
         boxes = [(0.0, wide)] + boxes
@@ -319,3 +325,38 @@ def test_touching_thin_plates_are_hits_at_every_level(depth: int) -> None:
             np.testing.assert_array_equal(collides, brute.any(axis=1))
             touched = brute[np.arange(n), flange]
             assert touched.all() if expect else not touched.any()
+
+
+@pytest.mark.parametrize(
+    "half_box, half_obstacle",
+    [([0.5, 0.5, 1e-5], [0.5, 0.5, 1e-5]), ([0.3, 1e-6, 0.2], [0.05, 0.05, 0.05])],
+)
+def test_pre_filter_keeps_pairs_at_the_exact_tests_boundary(half_box, half_obstacle) -> None:
+    # Bisect, per frame, the largest offset along a random direction at which the exact test
+    # still says "overlap" (its eps slack fully used), for world-aligned, slightly turned
+    # (near-parallel edges) and random orientations: the batched tree must agree with it.
+    rng = np.random.default_rng(10)
+    tree = one_box_tree(half_box)
+    obstacle = OBB([0.1, -0.2, 0.3], np.eye(3), half_obstacle)
+    n = 1500
+    R = Rotation.random(n, random_state=rng).as_matrix()
+    R[: n // 3] = np.eye(3)
+    tiny = rng.normal(size=(n // 3, 3)) * 10 ** rng.uniform(-12, -4, (n // 3, 1))
+    R[n // 3 : 2 * n // 3] = Rotation.from_rotvec(tiny).as_matrix()
+    u = rng.normal(size=(n, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    box = tree.boxes[0]
+
+    def overlap(s: np.ndarray) -> np.ndarray:
+        T = make_transform(R, obstacle.center + s[:, None] * u)
+        return obb_overlap(box.transformed(T), obstacle), T
+
+    lo, hi = np.zeros(n), np.full(n, 4.0)
+    for _ in range(70):
+        mid = (lo + hi) / 2
+        ok, _ = overlap(mid)
+        lo, hi = np.where(ok, mid, lo), np.where(ok, hi, mid)
+    for s, expect in ((lo, True), (hi, False)):
+        brute, T = overlap(s)
+        assert brute.all() if expect else not brute.any()
+        np.testing.assert_array_equal(tree.collide_frames(obstacle.reshape(1), T).collides, brute)
