@@ -197,3 +197,58 @@ def test_bad_query_points() -> None:
         bvh.closest_points([0, 0, 0])
     with pytest.raises(InputError, match="directions"):
         bvh.ray_crossings([[0, 0, 0]], [0, 0, 0])
+
+
+def _edge_and_vertex_rays(
+    rng: np.random.Generator, v: np.ndarray, edges: np.ndarray, n: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Return (origins, directions, points): rays with origin + 1 * direction = point, the
+    points on the given edges (a random fraction of them at the edges' end vertices)."""
+    e = edges[rng.integers(0, len(edges), n)]
+    s = rng.uniform(0, 1, n)
+    s[: n // 5] = rng.integers(0, 2, n // 5)  # a fifth through a vertex
+    p = v[e[:, 0]] + s[:, None] * (v[e[:, 1]] - v[e[:, 0]])
+    d = rng.normal(size=(n, 3))
+    return p - d, d, p
+
+
+def test_rays_through_shared_edges_and_vertices_count_once_or_are_flagged() -> None:
+    # A ray through an edge shared by two triangles may round to just outside both
+    # (barycentrics ~ -1e-16): it must then still be flagged degenerate, never lost.
+    rng = np.random.default_rng(3)
+    lost = 0
+    for _ in range(200):  # random (generally non-planar) quads split along 0-2
+        v = rng.normal(size=(4, 3))
+        bvh = LBVH(v, [[0, 1, 2], [0, 2, 3]])
+        o, d, _ = _edge_and_vertex_rays(rng, v, np.array([[0, 2]]), 100)
+        for full_line in (False, True):
+            q, t, degen = bvh.ray_hits(o, d, full_line=full_line)
+            at_p = np.abs(t - 1.0) < 1e-6  # the hits at the shared edge
+            regular = np.bincount(q[at_p & ~degen], minlength=len(o))
+            flagged = np.bincount(q[at_p & degen], minlength=len(o)) > 0
+            assert np.all((regular == 1) | flagged) and not np.any(flagged & (regular > 0))
+            lost += int(np.sum((regular == 0) & ~flagged))
+    assert lost == 0
+    # A closed mesh: rays from outside through edges and vertices. Wherever nothing on the
+    # whole line is flagged, the regular crossings are even (in and out), and at the point
+    # itself exactly one is counted.
+    m = trimesh.creation.icosphere(subdivisions=2, radius=0.5)
+    v, f = np.asarray(m.vertices), np.asarray(m.faces)
+    bvh = LBVH(v, f)
+    o, d, p = _edge_and_vertex_rays(rng, v, np.asarray(m.edges_unique), 3000)
+    far = p - 2.0 * d / np.linalg.norm(d, axis=1, keepdims=True)  # outside the sphere
+    q, t, degen = bvh.ray_hits(far, d, full_line=True)
+    at_p = np.abs(t - 2.0 / np.linalg.norm(d[q], axis=1)) < 1e-6
+    regular = np.bincount(q[~degen], minlength=len(o))
+    any_flag = np.bincount(q[degen], minlength=len(o)) > 0
+    at_regular = np.bincount(q[at_p & ~degen], minlength=len(o))
+    at_flag = np.bincount(q[at_p & degen], minlength=len(o)) > 0
+    assert np.all((at_regular == 1) | at_flag) and not np.any(at_flag & (at_regular > 0))
+    assert np.all(regular[~any_flag] % 2 == 0)
+    assert at_flag.sum() > 500  # the rays through vertices and edges are flagged, mostly
+    # ray_crossings still counts each closed triangle the ray touches once.
+    mq = rng.uniform(-0.6, 0.6, (500, 3))
+    direction = np.array([1.0, 0.0123, 0.0071])
+    np.testing.assert_array_equal(
+        bvh.ray_crossings(mq, direction), _brute_crossings(v, f, mq, direction)
+    )

@@ -149,9 +149,10 @@ def test_bad_input(center, rotation, half, word) -> None:
         OBB(center, rotation, half)
 
 
-def test_few_pair_path_equals_the_vectorised_test() -> None:
-    # sat_overlap_t answers small batches with a Python loop; both paths must agree exactly,
-    # parallel edges included.
+def test_public_entry_point_equals_the_rt_test_and_its_loop() -> None:
+    # sat_overlap_t (obb_overlap's core) builds sat_overlap_rt's inputs; batches of at most
+    # FEW_PAIRS pairs take the scalar loop. Vectorised, scalar and small-batch answers must
+    # agree exactly, parallel edges included.
     from workbench.geometry import obb as obb_module
     from workbench.geometry.transforms import rpy_to_matrix
 
@@ -172,14 +173,41 @@ def test_few_pair_path_equals_the_vectorised_test() -> None:
     )
     assert n > obb_module.FEW_PAIRS
     vectorised = obb_module.sat_overlap_t(*args)
-    looped = obb_module._sat_few(*args, obb_module.SAT_EPS)
     assert 0.1 < vectorised.mean() < 0.9
+    a, b = OBB(ca, Ra, ea), OBB(cb, Rb, eb)
+    looped = obb_module._sat_rt_few(*_rt_inputs(a, b), obb_module.SAT_EPS)
     np.testing.assert_array_equal(looped, vectorised)
+    assert_agrees_with_plain_15_axes(vectorised, a, b)
     # And through the public entry point in batches small enough for the loop.
     for k in range(0, 40, 4):
         sl = slice(k, k + 4)
         small = tuple(x[..., sl] for x in args)
         np.testing.assert_array_equal(obb_module.sat_overlap_t(*small), vectorised[sl])
+
+
+def plain_separation(a: OBB, b: OBB) -> np.ndarray:
+    """Largest gap [m] (P,) over the 15 unit axes of pairs (a[i], b[i]): plain numpy, no eps.
+
+    Positive: separated. Axes shorter than 1e-9 (parallel edges) are skipped: the face axes
+    decide those pairs.
+    """
+    A, B = a.rotation, b.rotation
+    axes = [A[..., i] for i in range(3)] + [B[..., j] for j in range(3)]
+    axes += [np.cross(A[..., i], B[..., j]) for i in range(3) for j in range(3)]
+    L = np.stack(axes, axis=-2)  # (P, 15, 3)
+    norm = np.linalg.norm(L, axis=-1)
+    L = L / np.maximum(norm, 1e-300)[..., None]
+    ra = np.sum(a.half_extents[:, None] * np.abs(L @ A), axis=-1)
+    rb = np.sum(b.half_extents[:, None] * np.abs(L @ B), axis=-1)
+    gap = np.abs(np.einsum("pkc,pc->pk", L, b.center - a.center)) - ra - rb
+    return np.where(norm < 1e-9, -np.inf, gap).max(axis=-1)
+
+
+def assert_agrees_with_plain_15_axes(verdict: np.ndarray, a: OBB, b: OBB) -> None:
+    """The fast verdicts equal the plain test's except within 1e-9 m of touching."""
+    gap = plain_separation(a, b)
+    differ = verdict != (gap <= 0)
+    assert np.all(np.abs(gap[differ]) < 1e-9), gap[differ]
 
 
 def _rt_inputs(a: OBB, b: OBB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -228,9 +256,9 @@ def test_rt_path_equals_plain_test_fcl_and_touching_cases() -> None:
     Rb[n // 5 : 2 * n // 5] = a.rotation[n // 5 : 2 * n // 5] @ spin  # a_z parallel to b_z
     b = OBB(b.center, Rb, b.half_extents)
     fast = obb_module.sat_overlap_rt(*_rt_inputs(a, b))
-    plain = obb_overlap(a, b)
     assert 0.2 < fast.mean() < 0.8
-    np.testing.assert_array_equal(fast, plain)
+    np.testing.assert_array_equal(fast, obb_overlap(a, b))  # the public entry point
+    assert_agrees_with_plain_15_axes(fast, a, b)
     theirs = fcl_collide(a[:3000], b[:3000])
     for i in np.nonzero(fast[:3000] != theirs)[0]:
         assert abs(slow_separation(a[i], b[i])) < 1e-9
@@ -248,13 +276,15 @@ def test_rt_path_equals_plain_test_fcl_and_touching_cases() -> None:
         moved = OBB(a.center + (s * scale)[:, None] * u, b.rotation, b.half_extents)
         fast = obb_module.sat_overlap_rt(*_rt_inputs(a, moved))
         np.testing.assert_array_equal(fast, obb_overlap(a, moved))
+        if scale != 1.0:
+            assert_agrees_with_plain_15_axes(fast, a, moved)
         assert fast.all() if expect else not fast.any()
         if scale != 1.0:
             np.testing.assert_array_equal(fast, fcl_collide(a, moved))
 
 
 def test_rt_few_pair_loop_equals_the_vectorised_rt_test() -> None:
-    # sat_overlap_rt answers batches of at most FEW_PAIRS_RT pairs with a Python loop; it must
+    # sat_overlap_rt answers batches of at most FEW_PAIRS pairs with a Python loop; it must
     # agree with the vectorised path exactly: random, parallel-edge and touching pairs.
     from workbench.geometry import obb as obb_module
 
@@ -274,14 +304,14 @@ def test_rt_few_pair_loop_equals_the_vectorised_rt_test() -> None:
     center[n - 600 :] = a.center[n - 600 :] + s[:, None] * u
     b = OBB(center, b.rotation, b.half_extents)
     Rt, ea, eb = _rt_inputs(a, b)
-    assert n > obb_module.FEW_PAIRS_RT
+    assert n > obb_module.FEW_PAIRS
     vectorised = obb_module.sat_overlap_rt(Rt, ea, eb)
     assert 0.2 < vectorised.mean() < 0.8 and vectorised[n - 600 :].all()
     np.testing.assert_array_equal(
         obb_module._sat_rt_few(Rt, ea, eb, obb_module.SAT_EPS), vectorised
     )
     # Through the public entry point in small batches, and with A's half extents broadcast.
-    k = obb_module.FEW_PAIRS_RT
+    k = obb_module.FEW_PAIRS
     for lo in range(0, n, 397):
         sl = slice(lo, lo + k)
         got = obb_module.sat_overlap_rt(Rt[..., sl], ea[:, sl], eb[:, sl])

@@ -9,12 +9,14 @@ from pathlib import Path
 import fcl
 import numpy as np
 import pytest
+from numpy.typing import ArrayLike
 from scipy.spatial.transform import Rotation
 
 from workbench.errors import InputError
 from workbench.geometry import OBB, obb_overlap
 from workbench.geometry.transforms import make_transform, rot_z
 from workbench.sheetmetal import SheetMetalPart
+from workbench.sheetmetal.obbtree import OBBTree
 
 _spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
 _tp = importlib.util.module_from_spec(_spec)
@@ -245,3 +247,116 @@ def test_no_obstacles_and_no_frames(seed_state) -> None:
     empty = tree.collide_frames(cup, np.zeros((0, 4, 4)))
     assert empty.collides.shape == empty.n_obb_tests.shape == (0,)
     assert empty.hits.shape == (0, 3) and empty.tested.shape == (0, 2)
+
+
+def one_box_tree(half: ArrayLike) -> OBBTree:
+    """A tree of one leaf: a box on the grasp frame's axes with half extents `half` [m]."""
+    return OBBTree(
+        0,
+        OBB(np.zeros((1, 3)), np.eye(3)[None], np.asarray(half, float)[None]),
+        ((0,),),
+        np.array([0]),
+        np.array([0]),
+        np.array([0]),
+        np.array([0]),
+        np.zeros(0, dtype=np.int64),
+    )
+
+
+def thin_plate_tree(depth: int) -> OBBTree:
+    """Coplanar plates (half thickness 1e-5 m) on the world axes: `depth` 0 is one leaf, 1 a
+    root over three leaves, 2 a root over a leaf and a node over two leaves."""
+    half = np.array([0.5, 0.5, 1e-5])
+    leaf_x = [0.0] if depth == 0 else [-1.0, 0.0, 1.0]
+    boxes = [(x, half) for x in leaf_x]
+    if depth == 0:
+        return one_box_tree(half)
+    wide = np.array([1.5, 0.5, 1e-5])
+    if depth == 1:  # root; leaves 1, 2, 3
+        boxes = [(0.0, wide)] + boxes
+        flanges = ((0, 1, 2), (0,), (1,), (2,))
+        leaf, level = [-1, 0, 1, 2], [0, 1, 1, 1]
+        start, count, index = [0, 4, 4, 4], [3, 0, 0, 0], [1, 2, 3]
+    else:  # root; leaf 1 (flange 0), node 2 over leaves 3, 4 (flanges 1, 2)
+        boxes = [(0.0, wide), boxes[0], (0.5, np.array([1.0, 0.5, 1e-5]))] + boxes[1:]
+        flanges = ((0, 1, 2), (0,), (1, 2), (1,), (2,))
+        leaf, level = [-1, 0, -1, 1, 2], [0, 1, 1, 2, 2]
+        start, count, index = [0, 2, 2, 4, 4], [2, 0, 2, 0, 0], [1, 2, 3, 4]
+    return OBBTree(
+        0,
+        OBB(np.array([[x, 0, 0] for x, _ in boxes]), np.eye(3), np.array([h for _, h in boxes])),
+        flanges,
+        np.array(leaf),
+        np.array(level),
+        np.array(start),
+        np.array(count),
+        np.array(index),
+    )
+
+
+@pytest.mark.parametrize("depth", [0, 1, 2])
+def test_touching_thin_plates_are_hits_at_every_level(depth: int) -> None:
+    # Thin plates on the world axes against a thin plate obstacle, faces a gap apart along z:
+    # the exact test keeps gaps up to its absolute SAT_EPS term (~1e-12 m here), far more
+    # than a relative slack of the 1e-5 m half thickness; the AABB pre-filter (at the start
+    # nodes and, with >= AABB_FILTER_MIN pairs, at every level below) must keep them too.
+    from workbench.sheetmetal.obbcheck import AABB_FILTER_MIN
+
+    rng = np.random.default_rng(9)
+    tree = thin_plate_tree(depth)
+    leaves = tree.boxes[tree.leaves]
+    obstacle = OBB([0.0, 0, 0], np.eye(3), [0.5, 0.5, 1e-5])
+    n = 8 * AABB_FILTER_MIN
+    flange = rng.integers(0, len(leaves), n)
+    side = rng.choice([-1.0, 1.0], n)
+    for gap, expect in ((0.0, True), (1e-13, True), (5e-13, True), (1e-11, False)):
+        # Frame k puts leaf flange[k] right above or below the obstacle, shifted sideways.
+        shift = np.c_[rng.uniform(-0.3, 0.3, (n, 2)), side * (2e-5 + gap)]
+        T = make_transform(np.eye(3), shift - leaves.center[flange])
+        for one_frame in (False, True):
+            rep = (
+                [tree.collide(obstacle.reshape(1), T[k]) for k in range(n)]
+                if one_frame
+                else tree.collide_frames(obstacle.reshape(1), T)
+            )
+            collides = np.array([r.collides for r in rep]) if one_frame else rep.collides
+            world = leaves.reshape(1, -1).transformed(T[:, None])
+            brute = obb_overlap(world, obstacle.reshape(1, 1))  # (n, leaves)
+            np.testing.assert_array_equal(collides, brute.any(axis=1))
+            touched = brute[np.arange(n), flange]
+            assert touched.all() if expect else not touched.any()
+
+
+@pytest.mark.parametrize(
+    "half_box, half_obstacle",
+    [([0.5, 0.5, 1e-5], [0.5, 0.5, 1e-5]), ([0.3, 1e-6, 0.2], [0.05, 0.05, 0.05])],
+)
+def test_pre_filter_keeps_pairs_at_the_exact_tests_boundary(half_box, half_obstacle) -> None:
+    # Bisect, per frame, the largest offset along a random direction at which the exact test
+    # still says "overlap" (its eps slack fully used), for world-aligned, slightly turned
+    # (near-parallel edges) and random orientations: the batched tree must agree with it.
+    rng = np.random.default_rng(10)
+    tree = one_box_tree(half_box)
+    obstacle = OBB([0.1, -0.2, 0.3], np.eye(3), half_obstacle)
+    n = 1500
+    R = Rotation.random(n, random_state=rng).as_matrix()
+    R[: n // 3] = np.eye(3)
+    tiny = rng.normal(size=(n // 3, 3)) * 10 ** rng.uniform(-12, -4, (n // 3, 1))
+    R[n // 3 : 2 * n // 3] = Rotation.from_rotvec(tiny).as_matrix()
+    u = rng.normal(size=(n, 3))
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    box = tree.boxes[0]
+
+    def overlap(s: np.ndarray) -> np.ndarray:
+        T = make_transform(R, obstacle.center + s[:, None] * u)
+        return obb_overlap(box.transformed(T), obstacle), T
+
+    lo, hi = np.zeros(n), np.full(n, 4.0)
+    for _ in range(70):
+        mid = (lo + hi) / 2
+        ok, _ = overlap(mid)
+        lo, hi = np.where(ok, mid, lo), np.where(ok, hi, mid)
+    for s, expect in ((lo, True), (hi, False)):
+        brute, T = overlap(s)
+        assert brute.all() if expect else not brute.any()
+        np.testing.assert_array_equal(tree.collide_frames(obstacle.reshape(1), T).collides, brute)

@@ -365,9 +365,11 @@ class LBVH:
 
         Rays are ``origins[k] + t * directions[k]`` with t > 0 (any t if `full_line`);
         `directions` is (3,) or (M,3), not necessarily unit. A hit is flagged degenerate when
-        it lies within 1e-9 (barycentric) of a triangle edge or the ray lies in a triangle's
-        plane: parity counts through such hits are not trustworthy (and t of a ray lying in
-        the plane is meaningless).
+        it lies within 1e-9 (barycentric) of a triangle edge, on either side of it, or the
+        ray lies in a triangle's plane: parity counts through such hits are not trustworthy
+        (and t of a ray lying in the plane is meaningless). A ray through an edge shared by
+        two triangles is so either a regular hit of exactly one of them or flagged
+        degenerate: rounding can put it just outside both (barycentrics ~ -1e-16).
         """
         q, t, degen, _ = self.ray_hit_leaves(origins, directions, full_line=full_line)
         return q, t, degen
@@ -379,6 +381,13 @@ class LBVH:
 
         A leaf k is the triangle (a[k], b[k], c[k]) in Morton order.
         """
+        q, t, degen, leaf, _ = self._ray_query(origins, directions, full_line)
+        return q, t, degen, leaf
+
+    def _ray_query(
+        self, origins: ArrayLike, directions: ArrayLike, full_line: bool
+    ) -> tuple[IntArray, FloatArray, NDArray[np.bool_], IntArray, NDArray[np.bool_]]:
+        """Return `ray_hit_leaves` and whether each hit touches the closed triangle (H,)."""
         o = np.asarray(origins, dtype=float)
         if o.ndim != 2 or o.shape[1] != 3 or not np.all(np.isfinite(o)):
             raise InputError(f"origins must be finite with shape (M, 3), got {o.shape}")
@@ -390,7 +399,7 @@ class LBVH:
         t_lo = -np.inf if full_line else 0.0
         child, wlo, whi = self.wide_child, self.wide_lo, self.wide_hi
         q, w = np.arange(len(o)), np.zeros(len(o), dtype=np.int64)
-        out_q, out_t, out_g, out_l = [], [], [], []
+        out_q, out_t, out_g, out_l, out_c = [], [], [], [], []
         while q.size:
             tmin = np.full((len(q), 8), t_lo)
             tmax = np.full((len(q), 8), np.inf)
@@ -407,27 +416,30 @@ class LBVH:
             rows, cols = np.nonzero(hit & (refs <= -2))
             if rows.size:
                 ql, tl = q[rows], -refs[rows, cols] - 2
-                t, ok, degen = self._moller_trumbore(o[ql], dv[ql], tl, full_line)
+                t, ok, degen, touch = self._moller_trumbore(o[ql], dv[ql], tl, full_line)
                 keep = ok | degen
                 out_q.append(ql[keep])
                 out_t.append(t[keep])
                 out_g.append(degen[keep])
                 out_l.append(tl[keep])
+                out_c.append(touch[keep])
             rows, cols = np.nonzero(hit & (refs >= 0))
             q, w = q[rows], refs[rows, cols]
         if not out_q:
             e = np.zeros(0, dtype=np.int64)
-            return e, np.zeros(0), np.zeros(0, dtype=bool), e
+            return e, np.zeros(0), np.zeros(0, dtype=bool), e, np.zeros(0, dtype=bool)
         return (
             np.concatenate(out_q),
             np.concatenate(out_t),
             np.concatenate(out_g),
             np.concatenate(out_l),
+            np.concatenate(out_c),
         )
 
     def _moller_trumbore(
         self, o: FloatArray, d: FloatArray, tri: IntArray, full_line: bool
-    ) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bool_]]:
+    ) -> tuple[FloatArray, NDArray[np.bool_], NDArray[np.bool_], NDArray[np.bool_]]:
+        """Return (t, regular hit, degenerate, touches the closed triangle) per ray-triangle."""
         a = self.a[tri]
         e1, e2 = self.b[tri] - a, self.c[tri] - a
         pv = np.cross(d, e2)
@@ -441,9 +453,17 @@ class LBVH:
         v = np.einsum("ij,ij->i", d, qv) * inv
         t = np.einsum("ij,ij->i", e2, qv) * inv
         w = 1.0 - u - v
-        inside = (u >= 0) & (v >= 0) & (w >= 0) & (full_line | (t > 0))
+        ahead = full_line | (t > 0)
+        inside = (u >= 0) & (v >= 0) & (w >= 0) & ahead
+        # Within 1e-9 of an edge on either side: a ray through an edge shared by two
+        # triangles may round to just outside both, so the band outside must be flagged too
+        # (gated by `inside` it never applied, and such a ray crossed nothing, unflagged).
         near_edge = (
-            (np.minimum(np.minimum(u, v), w) < 1e-9) & (u > -1e-9) & (v > -1e-9) & (w > -1e-9)
+            (np.minimum(np.minimum(u, v), w) < 1e-9)
+            & (u > -1e-9)
+            & (v > -1e-9)
+            & (w > -1e-9)
+            & ahead
         )
         nonzero_area = scale > 0
         # A ray parallel to a non-degenerate triangle's plane and lying in it grazes it.
@@ -455,9 +475,12 @@ class LBVH:
             & (np.abs(np.einsum("ij,ij->i", tv, n)) <= 1e-9 * self.scale * np.maximum(nn, 1e-300))
         )
         area_ok = nn > 1e-14 * self.scale * self.scale
-        hit = inside & ~flat & area_ok
-        degen = (hit & near_edge) | (in_plane & area_ok)
-        return t, hit & ~degen, degen
+        solid = ~flat & area_ok
+        hit = inside & solid
+        degen = (near_edge & solid) | (in_plane & area_ok)
+        # What `ray_crossings` counts: the closed triangle touched (or grazed in its plane).
+        touch = hit | (in_plane & area_ok)
+        return t, hit & ~degen, degen, touch
 
     def ray_crossings(self, origins: ArrayLike, direction: ArrayLike) -> IntArray:
         """Return the number of triangles (M,) each ray ``origins + t*direction``, t > 0, crosses.
@@ -466,5 +489,5 @@ class LBVH:
         can be wrong there); `ray_hits` flags them.
         """
         o = np.asarray(origins, dtype=float)
-        q, _, _ = self.ray_hits(o, direction)
-        return np.bincount(q, minlength=len(o)).astype(np.int64)
+        q, _, _, _, touch = self._ray_query(o, direction, False)
+        return np.bincount(q[touch], minlength=len(o)).astype(np.int64)

@@ -19,8 +19,8 @@ from workbench.errors import InputError
 # false separation from rounding noise (Gottschalk 1996; Ericson, RTCD §4.4.1).
 SAT_EPS = 1e-12
 
-_I1 = np.array([1, 2, 0])
-_I2 = np.array([2, 0, 1])
+# Axis order x, y, z, x, y (see `sat_overlap_rt`).
+_CYC = np.array([0, 1, 2, 0, 1])
 
 
 def _as_float(name: str, value: ArrayLike, tail: tuple[int, ...]) -> NDArray[np.float64]:
@@ -203,22 +203,21 @@ def sat_overlap_t(
     b: NDArray[np.float64],
     eps: float = SAT_EPS,
 ) -> NDArray[np.bool_]:
-    """Return overlap verdicts from component-first arrays: d = cb - ca (3, ...), A[k, i] (3, 3, ...), a (3, ...), B, b."""
-    if d.ndim == 2 and max(x.shape[-1] for x in (d, A, a, B, b)) <= FEW_PAIRS:
-        return _sat_few(d, A, a, B, b, eps)
+    """Return overlap verdicts from component-first arrays: d = cb - ca (3, ...), A[k, i] (3, 3, ...), a (3, ...), B, b.
+
+    Builds `sat_overlap_rt`'s inputs (B and d in A's frame, axes in cyclic order) and runs
+    that test: one 15-axis implementation for the public and the tree's entry points.
+    """
+    shape = np.broadcast_shapes(d.shape[1:], A.shape[2:], a.shape[1:], B.shape[2:], b.shape[1:])
+    Rt = np.empty((5, 6) + shape)
     R = np.einsum("ki...,kj...->ij...", A, B)  # R[i, j] = a_i . b_j
-    t = np.einsum("ki...,k...->i...", A, d)  # centre offset in A's frame
-    absR = np.abs(R) + eps
-    # Axes of A, then axes of B.
-    sep = np.any(np.abs(t) > a + np.einsum("ij...,j...->i...", absR, b), axis=0)
-    tb = np.einsum("i...,ij...->j...", t, R)
-    sep |= np.any(np.abs(tb) > np.einsum("i...,ij...->j...", a, absR) + b, axis=0)
-    # The nine edge-edge axes a_i x b_j.
-    lhs = np.abs(t[_I2][:, None] * R[_I1] - t[_I1][:, None] * R[_I2])
-    ra = a[_I1][:, None] * absR[_I2] + a[_I2][:, None] * absR[_I1]
-    rb = b[_I1][None] * absR[:, _I2] + b[_I2][None] * absR[:, _I1]
-    sep |= np.any(lhs > ra + rb, axis=(0, 1))
-    return ~sep
+    Rt[:, :5] = R[_CYC][:, _CYC]
+    Rt[:, 5] = np.einsum("ki...,k...->i...", A, d)[_CYC]  # centre offset in A's frame
+    n = int(np.prod(shape))
+    flat = (5, n)
+    ac = np.broadcast_to(a[_CYC], (5,) + shape).reshape(flat)
+    bc = np.broadcast_to(b[_CYC], (5,) + shape).reshape(flat)
+    return sat_overlap_rt(Rt.reshape(5, 6, n), ac, bc, eps).reshape(shape)
 
 
 def sat_overlap_rt(
@@ -234,10 +233,10 @@ def sat_overlap_rt(
     Rt[r, c] = a_(r%3) . b_(c%3) for c < 5 and Rt[r, 5] = a_(r%3) . (cb - ca) [m]; `a` and
     `b` (5, P) (or (5, 1)) are the half extents [m] in the same order. The same 15 axes, eps
     and arithmetic as `sat_overlap_t`, in about 30 numpy calls whatever P is; up to
-    `FEW_PAIRS_RT` pairs take a plain Python loop with the same operations in the same order.
+    `FEW_PAIRS` pairs take a plain Python loop with the same operations in the same order.
     """
     n = Rt.shape[-1]
-    if n <= FEW_PAIRS_RT:
+    if n <= FEW_PAIRS:
         return _sat_rt_few(Rt, a, b, eps)
     t = Rt[:, 5]
     aR = np.abs(Rt[:, :5])
@@ -270,7 +269,7 @@ def sat_overlap_rt(
 # At most this many pairs, `sat_overlap_rt` loops in Python floats: the ~30 numpy calls of
 # the vectorised test cost more than a few pairs' arithmetic (a tree's deeper levels and a
 # single frame's root test test a handful of pairs).
-FEW_PAIRS_RT = 6
+FEW_PAIRS = 6
 
 
 def _sat_rt_few(
@@ -313,66 +312,6 @@ def _sat_rt_few(
             or abs(t1 * R01 - t0 * R11) > a0 * Q11 + a1 * Q01 + (b2 * Q20 + b0 * Q22)
             or abs(t1 * R02 - t0 * R12) > a0 * Q12 + a1 * Q02 + (b0 * Q21 + b1 * Q20)
         )
-    return out
-
-
-# Below this many pairs a plain Python loop beats numpy's per-call cost (a tree's deeper
-# levels test a handful of pairs); `_sat_few` and the vectorised test agree exactly.
-FEW_PAIRS = 8
-
-
-def _sat_few(
-    d: NDArray[np.float64],
-    A: NDArray[np.float64],
-    a: NDArray[np.float64],
-    B: NDArray[np.float64],
-    b: NDArray[np.float64],
-    eps: float,
-) -> NDArray[np.bool_]:
-    """Return `sat_overlap_t` for a few (3, P) pairs, one pair at a time in Python floats."""
-    n = max(x.shape[-1] for x in (d, A, a, B, b))  # the batch axis broadcasts, as in numpy
-    d, A, a, B, b = (np.broadcast_to(x, x.shape[:-1] + (n,)) for x in (d, A, a, B, b))
-    out = np.zeros(n, dtype=bool)
-    dl, Al, al, Bl, bl = (
-        d.T.tolist(),
-        A.transpose(2, 0, 1).tolist(),
-        a.T.tolist(),
-        B.transpose(2, 0, 1).tolist(),
-        b.T.tolist(),
-    )
-    for p in range(len(dl)):
-        dp, Ap, ap, Bp, bp = dl[p], Al[p], al[p], Bl[p], bl[p]
-        R = [
-            [Ap[0][i] * Bp[0][j] + Ap[1][i] * Bp[1][j] + Ap[2][i] * Bp[2][j] for j in range(3)]
-            for i in range(3)
-        ]
-        t = [Ap[0][i] * dp[0] + Ap[1][i] * dp[1] + Ap[2][i] * dp[2] for i in range(3)]
-        aR = [[abs(R[i][j]) + eps for j in range(3)] for i in range(3)]
-        if any(
-            abs(t[i]) > ap[i] + aR[i][0] * bp[0] + aR[i][1] * bp[1] + aR[i][2] * bp[2]
-            for i in range(3)
-        ):
-            continue
-        if any(
-            abs(t[0] * R[0][j] + t[1] * R[1][j] + t[2] * R[2][j])
-            > ap[0] * aR[0][j] + ap[1] * aR[1][j] + ap[2] * aR[2][j] + bp[j]
-            for j in range(3)
-        ):
-            continue
-        sep = False
-        for i in range(3):
-            i1, i2 = (i + 1) % 3, (i + 2) % 3
-            for j in range(3):
-                j1, j2 = (j + 1) % 3, (j + 2) % 3
-                lhs = abs(t[i2] * R[i1][j] - t[i1] * R[i2][j])
-                ra = ap[i1] * aR[i2][j] + ap[i2] * aR[i1][j]
-                rb = bp[j1] * aR[i][j2] + bp[j2] * aR[i][j1]
-                if lhs > ra + rb:
-                    sep = True
-                    break
-            if sep:
-                break
-        out[p] = not sep
     return out
 
 

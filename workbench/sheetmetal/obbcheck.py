@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.geometry.obb import OBB, sat_overlap_rt
+from workbench.geometry.obb import OBB, SAT_EPS, sat_overlap_rt
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.obbtree import OBBTree
@@ -112,10 +112,27 @@ class FramesReport:
 # an OBB lies inside its AABB, so this only drops pairs that cannot overlap. For a thin part
 # in a cell of upright fixtures it is far tighter than bounding spheres (the seed transfer's
 # root tests: 1 of 352 pairs left, against 119 for spheres). The filter is worth its own numpy
-# calls only on larger batches; a few pairs go straight to the exact test. AABB half extents
-# are inflated by a relative 1e-9 so rounding never drops a pair the exact test calls touching.
+# calls only on larger batches; a few pairs go straight to the exact test.
+# The filter must never be tighter than the exact test, which widens every projected radius
+# by using |R_ij| + SAT_EPS in place of |R_ij|. The AABB half extents take the same form,
+# sum_j (|B_kj| + SAT_EPS) b_j (`_aabb_half`): for boxes on the world axes (where the AABB
+# is the box and the filter is as tight as it gets) the filter's test along world axis k is
+# then the exact test's face-axis test k with the same slack, and the relative 1e-9 on top
+# covers the different rounding of the two sums. (A relative slack alone dropped touching
+# thin plates: half thickness 1e-5 m gives 1e-14 m, the exact test keeps gaps to ~1e-12 m.)
 AABB_FILTER_MIN = 24
 _AABB_SLACK = 1.0 + 1e-9
+
+
+def _aabb_half(axes: NDArray[np.float64], slack_half: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Return world AABB half extents (3, ...) [m] of boxes with axes[k, j, ...] = B_kj and
+    `slack_half` (3, ...) = half extents * _AABB_SLACK: sum_j (|B_kj| + SAT_EPS) b_j."""
+    box = np.abs(axes)
+    box += SAT_EPS
+    box *= slack_half[None]
+    return box.sum(axis=1)
+
+
 # Axis order x, y, z, x, y: with axes (and half extents) extended so, the rolled indices
 # i + 1, i + 2 (mod 3) of the edge axes are slices (see `sat_overlap_rt`).
 _CYC = np.array([0, 1, 2, 0, 1])
@@ -132,6 +149,7 @@ class NodeArrays:
     levels: list[tuple[NDArray[np.int64], NDArray[np.int64]]]  # depth >= 1: (nodes, parents)
     axes_center: NDArray[np.float64]  # (3, 6N): per node axes x y z x y, then the centre [m]
     half: NDArray[np.float64]  # (5, N) half extents [m], cyclic like the axes
+    slack_half: NDArray[np.float64]  # (3, N) half extents * _AABB_SLACK [m], for the AABBs
 
     @classmethod
     def of(cls, tree: OBBTree) -> NodeArrays:
@@ -157,6 +175,7 @@ class NodeArrays:
             ],
             axes_center=np.ascontiguousarray(ac.transpose(1, 0, 2).reshape(3, 6 * n)),
             half=np.ascontiguousarray(half[:, _CYC].T),
+            slack_half=np.ascontiguousarray(half.T * _AABB_SLACK),
         )
 
 
@@ -187,16 +206,15 @@ class TreeCheck:
         obs[:, :5] = obstacles.rotation.reshape(-1, 3, 3)[:, :, _CYC].transpose(1, 2, 0)
         obs[:, 5] = o_c.T
         oe = np.ascontiguousarray(obstacles.half_extents.reshape(-1, 3)[:, _CYC].T)
-        # World AABB half extents: sum_j |B_kj| b_j, inflated (see _AABB_SLACK).
-        o_box = (np.abs(obs[:, :3]) * (oe[:3] * _AABB_SLACK)).sum(axis=1)  # (3, M)
+        # World AABB half extents: sum_j |B_kj| b_j, widened (see _AABB_SLACK).
+        o_box = _aabb_half(obs[:, :3], oe[:3] * _AABB_SLACK)  # (3, M)
         # Every node box in the world for every frame in one product: W[k, j, f * N + n] as
         # obs, for node n in frame f.
         prod = (T[:, :3, :3].reshape(3 * F, 3) @ nodes.axes_center).reshape(F, 3, N, 6)
         W4 = np.ascontiguousarray(prod.transpose(1, 3, 0, 2))  # (3, 6, F, N)
         W4[:, 5] += T[:, :3, 3].T[:, :, None]
         W = W4.reshape(3, 6, F * N)
-        n_box = (np.abs(W4[:, :3]) * (nodes.half[:3, None] * _AABB_SLACK)).sum(axis=1)
-        n_box = n_box.reshape(3, F * N)
+        n_box = _aabb_half(W4[:, :3], nodes.slack_half[:, None]).reshape(3, F * N)
         hit = np.zeros((F, N, M), dtype=bool)
         flat_hit = hit.reshape(-1)
         # Start nodes against every obstacle: the AABB filter by broadcasting, then the exact
