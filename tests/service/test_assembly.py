@@ -417,6 +417,11 @@ def test_joint_space_planning_refuses_bad_input_naming_the_field(wb):
         a.set_pose("plate_a", "goal", goal)
     with pytest.raises(InputError, match="planner must be one of"):
         a.plan_part("plate_a", "prm")
+    # An option of another planner is named, with the ones this planner takes.
+    with pytest.raises(InputError, match=r"'joint_rrt_connect' has no option dis; .*max_time"):
+        a.plan_part("plate_a", "joint_rrt_connect", dis=0.01)
+    with pytest.raises(InputError, match=r"'ant' has no option max_time; .*step"):
+        a.plan_part("plate_a", "ant", max_time=1.0)
     s1 = a.part("screw_1").goal.copy()
     bad = s1.copy()
     bad[2, 3] -= 0.008  # head pushed into plate B

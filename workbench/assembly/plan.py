@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.assembly.interference import InterferenceChecker
 from workbench.assembly.motion import check_pose, pose_distance
 from workbench.assembly.planners.ant import plan_ant
+from workbench.assembly.planners.common import check_options
 from workbench.assembly.planners.rrt_connect import plan_rrt_connect
 from workbench.errors import CollisionError, InputError
 
@@ -78,10 +79,9 @@ def plan_part_path(
             )
     before = (ch.stats.poses, ch.stats.exact_pairs)
     t1 = time.perf_counter()
-    if planner == "ant":
-        poses, nodes = plan_ant(ch, S, G, **options)  # type: ignore[arg-type]
-    else:
-        poses, nodes = plan_rrt_connect(ch, S, G, **options)  # type: ignore[arg-type]
+    fn = plan_ant if planner == "ant" else plan_rrt_connect
+    check_options(planner, fn, options)
+    poses, nodes = fn(ch, S, G, **options)  # type: ignore[arg-type]
     dt = time.perf_counter() - t1
     length = float(np.sum(pose_distance(poses[:-1], poses[1:], 0.0)))
     return PartPath(

@@ -6,11 +6,27 @@ verdict is the same as with the cell stage in between, and faster (see interfere
 
 from __future__ import annotations
 
+import inspect
+from collections.abc import Callable, Mapping
+from typing import Any
+
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.assembly.interference import InterferenceChecker
 from workbench.assembly.motion import motion_samples
+from workbench.errors import InputError
+
+
+def check_options(planner: str, fn: Callable[..., Any], options: Mapping[str, object]) -> None:
+    """Raise InputError naming the options `fn` (a planner) does not take, and those it does."""
+    sig = inspect.signature(fn).parameters.values()
+    allowed = [p.name for p in sig if p.kind is inspect.Parameter.KEYWORD_ONLY]
+    unknown = sorted(set(options) - set(allowed))
+    if unknown:
+        raise InputError(
+            f"planner {planner!r} has no option {', '.join(unknown)}; it takes {', '.join(allowed)}"
+        )
 
 
 def motion_free(checker: InterferenceChecker, T0: NDArray, T1: NDArray, resolution: float) -> bool:

@@ -35,7 +35,7 @@ from workbench.assembly.contacts import Bodies
 from workbench.assembly.interference import InterferenceChecker
 from workbench.assembly.motion import check_pose, motion_samples
 from workbench.assembly.plan import PartPath
-from workbench.assembly.planners.common import retreat
+from workbench.assembly.planners.common import check_options, retreat
 from workbench.collision.motion_bound import JointLevers
 from workbench.collision.robot_checker import RobotCollisionChecker
 from workbench.collision.shapes import Solid
@@ -475,6 +475,7 @@ def plan_carried_path(
     planners, `common.retreat`), the robot following by IK in the same configuration: a
     random joint-space search would hardly thread the narrow passage of an insertion.
     """
+    check_options("joint_rrt_connect", plan_joint_rrt_connect, options)
     checks0, stats0 = (
         space.checks,
         (space.part_checker.stats.poses, space.part_checker.stats.exact_pairs),
