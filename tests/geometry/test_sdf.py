@@ -303,3 +303,52 @@ def test_every_corner_value_is_the_truncated_exact_distance(band: float) -> None
     trunc = sdf.band + np.sqrt(3) / 2 * sdf.fine_cell_size
     assert len(corners) > 50_000 and np.sum(exact < trunc) > 20_000
     np.testing.assert_allclose(np.abs(values), np.minimum(exact, trunc), rtol=0, atol=1e-7)
+
+
+def _query_twin(sdf: SparseSDF, p: np.ndarray) -> np.ndarray:
+    """Slow twin of `query`: per-point cell lookups by 3-D indexing, the same arithmetic."""
+    g = (p - sdf.origin) / sdf.cell_size
+    ci = np.floor(g).astype(np.int64)
+    lo, hi = sdf.mesh_bounds
+    out = np.linalg.norm(np.maximum(np.maximum(lo - p, p - hi), 0.0), axis=1)
+    s = sdf.subdivisions
+    for n in range(len(p)):
+        c = ci[n]
+        if np.any(c < 0) or np.any(c >= sdf.dims):
+            continue
+        b = sdf.block_index[c[0], c[1], c[2]]
+        if b < 0:
+            out[n] = sdf.far[c[0], c[1], c[2]]
+            continue
+        local = (g[n] - c) * s
+        fi = np.clip(np.floor(local).astype(np.int64), 0, s - 1)
+        t = local - fi
+        acc = 0.0
+        for dx in (0, 1):
+            for dy in (0, 1):
+                for dz in (0, 1):
+                    w = (t[0] if dx else 1.0 - t[0]) * (t[1] if dy else 1.0 - t[1])
+                    w *= t[2] if dz else 1.0 - t[2]
+                    acc += w * float(sdf.values[b, fi[0] + dx, fi[1] + dy, fi[2] + dz])
+        out[n] = acc
+    return out
+
+
+def test_query_equals_its_per_point_twin(scene_sdf) -> None:
+    m, sdf = scene_sdf
+    rng = np.random.default_rng(5)
+    lo, hi = m.bounds
+    fine = sdf.fine_cell_size
+    p = np.concatenate(
+        [
+            rng.uniform(lo, hi, (1500, 3)),  # inside the mesh box: band and far cells
+            m.sample(1000) + rng.normal(0, 0.02, (1000, 3)),  # in the band
+            rng.uniform(lo - 0.3, hi + 0.3, (1000, 3)),  # around, some outside the grid
+            rng.uniform(lo - 5.0, hi + 5.0, (500, 3)),  # mostly outside the grid
+            np.round(rng.uniform(lo, hi, (500, 3)) / fine) * fine,  # on fine corners
+            sdf.origin + rng.integers(-1, sdf.dims.max() + 1, (500, 3)) * sdf.cell_size,  # on faces
+        ]
+    )
+    band = _in_band(sdf, p)
+    assert band.sum() > 1000 and (~band).sum() > 1000
+    np.testing.assert_allclose(sdf.query(p), _query_twin(sdf, p), rtol=0, atol=1e-12)

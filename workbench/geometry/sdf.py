@@ -89,6 +89,10 @@ class SparseSDF:
         self.values: NDArray[np.float32] = np.asarray(arrays["values"], dtype=np.float32)
         self.far: NDArray[np.float32] = np.asarray(arrays["far"], dtype=np.float32)
         self.dims = np.array(self.block_index.shape)
+        # Flat views for the query's gathers (np.take on 1-D beats fancy indexing in 3-4-D).
+        self._block_flat = self.block_index.reshape(-1)
+        self._far_flat = self.far.reshape(-1)
+        self._values_flat = self.values.reshape(-1)
 
     @property
     def fine_cell_size(self) -> float:
@@ -195,29 +199,43 @@ class SparseSDF:
             raise InputError("points contain NaN or inf; give finite coordinates in metres")
         g = (p - self.origin) / self.cell_size
         ci = np.floor(g).astype(np.int64)
-        in_grid = np.all((ci >= 0) & (ci < self.dims), axis=1)
-        d_box = np.maximum(np.maximum(self.mesh_bounds[0] - p, p - self.mesh_bounds[1]), 0.0)
-        out = np.linalg.norm(d_box, axis=1)
-        idx = np.nonzero(in_grid)[0]
-        cg = ci[idx]
-        blk = self.block_index[cg[:, 0], cg[:, 1], cg[:, 2]]
+        # In the grid: one unsigned compare per axis (negative indices wrap to huge values),
+        # on 1-D columns rather than an all(axis=1) reduction over (M, 3).
+        cu = ci.view(np.uint64)
+        d0, d1, d2 = (int(x) for x in self.dims)
+        in_grid = cu[:, 0] < d0
+        in_grid &= cu[:, 1] < d1
+        in_grid &= cu[:, 2] < d2
+        idx = np.flatnonzero(in_grid)
+        out = np.empty(len(p))
+        if idx.size < len(p):  # outside the grid: distance to the mesh AABB (a lower bound)
+            o = np.flatnonzero(~in_grid)
+            po = p[o]
+            d_box = np.maximum(np.maximum(self.mesh_bounds[0] - po, po - self.mesh_bounds[1]), 0.0)
+            out[o] = np.linalg.norm(d_box, axis=1)
+        flat = ((ci[:, 0] * d1 + ci[:, 1]) * d2 + ci[:, 2]).take(idx)
+        blk = self._block_flat.take(flat)
         far = blk < 0
-        out[idx[far]] = self.far[cg[far, 0], cg[far, 1], cg[far, 2]]
-        near = idx[~far]
+        out[idx[far]] = self._far_flat.take(flat[far])
+        near_sel = ~far
+        near = idx[near_sel]
         if near.size:
             s = self.subdivisions
-            local = (g[near] - ci[near]) * s
+            e = s + 1
+            local = np.take(g - ci, near, axis=0) * s
             fi = np.clip(np.floor(local).astype(np.int64), 0, s - 1)
             t = local - fi
-            b = blk[~far]
+            base = ((blk[near_sel].astype(np.int64) * e + fi[:, 0]) * e + fi[:, 1]) * e + fi[:, 2]
+            vals = self._values_flat
             acc = np.zeros(len(near))
+            tx, ty, tz = t[:, 0], t[:, 1], t[:, 2]
             for dx in (0, 1):
-                wx = t[:, 0] if dx else 1.0 - t[:, 0]
+                wx = tx if dx else 1.0 - tx
                 for dy in (0, 1):
-                    wy = t[:, 1] if dy else 1.0 - t[:, 1]
+                    wy = ty if dy else 1.0 - ty
                     for dz in (0, 1):
-                        wz = t[:, 2] if dz else 1.0 - t[:, 2]
-                        val = self.values[b, fi[:, 0] + dx, fi[:, 1] + dy, fi[:, 2] + dz]
+                        wz = tz if dz else 1.0 - tz
+                        val = vals.take(base + ((dx * e + dy) * e + dz))
                         acc += wx * wy * wz * val
             out[near] = acc
         return out
