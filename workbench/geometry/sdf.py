@@ -3,14 +3,17 @@
 Level 1: a coarse grid (cell size h, by default 1/64 of the model's largest extent). A cell
 is marked when a triangle grown by the band width r can touch it: the cell box grown by r
 (a cube, which contains the ball-grown box) overlaps the triangle by the separating-axis
-test. Level 2: each marked cell is split into s^3 fine cells; exact distances at their
+test (only the cells whose centre lies in the triangle's plane slab are tested; the
+others fail its normal axis anyway). Level 2: each marked cell is split into s^3 fine cells; exact distances at their
 corners come from the LBVH, and the sign from ray parity along x and y (both must agree
 and neither may be untrusted, i.e. lie between the ends of a triangle the row grazes;
 otherwise three skewed rays vote). Hits and corners of a row are compared exactly.
 
 Values are truncated at W = r + sqrt(3)/2 * h/s (the band plus half a fine diagonal):
-exact corner distances are only needed up to W, and most come from a triangle-driven pass
-(each triangle visits the corners within 2 fine cells of it); the rest from the LBVH.
+exact corner distances are only needed up to W, and they come from a triangle-driven pass
+(each triangle visits the corners within W of its plane and of its side planes,
+`triangle_raster.band_points`) when that costs less than LBVH queries; else the pass
+goes to 2 fine cells and the rest come from the LBVH.
 
 Query: inside a marked cell the value is trilinear in the fine corners. The truncated field
 is 1-Lipschitz, so the value is within ``max_error = sqrt(3)/2 * h/s`` (half the fine-cell
