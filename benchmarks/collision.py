@@ -115,6 +115,38 @@ def sdf_build() -> None:
         f"  128^3-equivalent field: ours {ours:.2f} s; trimesh.signed_distance at the same {corners} corner values "
         f"~{per_point * corners:.1f} s (extrapolated from 2000 points); ratio {per_point * corners / ours:.1f}x"
     )
+    mz07_cell_field()
+
+
+def mz07_cell_field() -> None:
+    """The field of projects/mz07_cell.json's obstacles as the plans' spheres engine builds it."""
+    from pathlib import Path
+
+    from workbench.service import Workbench
+
+    project = Path(__file__).resolve().parents[1] / "projects" / "mz07_cell.json"
+    parts = []
+    for e in Workbench.open(project).checker.scene.static.values():
+        m = e.mesh.copy()
+        m.apply_transform(e.T)
+        parts.append(m)
+    cell = trimesh.util.concatenate(parts)
+    extent = float(np.ptp(cell.vertices, axis=0).max())
+    band = 0.14  # the engine's band: largest sphere radius + margin
+    for resolution in (32, 48):
+        h = max(extent / resolution, band / 8)  # as CollisionEngine picks the cell size
+        sdf = None
+        best = np.inf
+        for _ in range(3):
+            t = time.perf_counter()
+            sdf = SparseSDF.from_mesh(cell, cell_size=h, subdivisions=4, band=band)
+            best = min(best, time.perf_counter() - t)
+        assert sdf is not None
+        print(
+            f"  MZ07 cell ({len(cell.faces)} triangles: floor, table, boxes), resolution {resolution},"
+            f" band {band} m: {best:.2f} s (best of 3), {sdf.block_count} blocks,"
+            f" {sdf.memory_bytes / 1e6:.1f} MB"
+        )
 
 
 def robot_checks() -> None:

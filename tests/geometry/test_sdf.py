@@ -220,3 +220,135 @@ def test_bad_meshes() -> None:
         SparseSDF.from_mesh(([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]))
     with pytest.raises(InputError, match="trimesh"):
         SparseSDF.from_mesh("box.stl")
+
+
+def _work_cell() -> trimesh.Trimesh:
+    """A cell like projects/mz07_cell.json: a large floor, a table, boxes and a cylinder."""
+    parts = []
+    for size, centre in (
+        ((2.4, 2.4, 0.02), (0.0, 0.0, -0.01)),
+        ((0.5, 0.8, 0.4), (0.6, 0.0, 0.2)),
+        ((0.2, 0.3, 0.25), (0.55, 0.1, 0.525)),
+    ):
+        b = trimesh.creation.box(size)
+        b.apply_translation(centre)
+        parts.append(b)
+    pillar = trimesh.creation.cylinder(radius=0.08, height=1.6, sections=32)
+    pillar.apply_translation((-0.7, 0.6, 0.8))
+    tilted = trimesh.creation.box((0.9, 0.05, 0.6))  # a large oblique face
+    tilted.apply_transform(trimesh.transformations.euler_matrix(0.3, 0.5, 0.7))
+    tilted.apply_translation((-0.3, -0.6, 0.6))
+    return trimesh.util.concatenate([*parts, pillar, tilted])
+
+
+def _marked_brute(tri: np.ndarray, sdf: SparseSDF) -> np.ndarray:
+    """Slow twin of the coarse marking: every cell of each triangle's grown box, SAT-tested."""
+    h, r, origin, dims = sdf.cell_size, sdf.band, sdf.origin, sdf.dims
+    marked = np.zeros(dims, dtype=bool)
+    for t in tri:
+        lo = np.clip(np.floor((t.min(axis=0) - r - origin) / h).astype(int), 0, dims - 1)
+        hi = np.clip(np.floor((t.max(axis=0) + r - origin) / h).astype(int), 0, dims - 1)
+        axes = [np.arange(lo[k], hi[k] + 1) for k in range(3)]
+        cells = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
+        if len(cells) > 8:  # small boxes are marked whole (the field's documented rule)
+            v = np.broadcast_to(t, (len(cells), 3, 3))
+            ok = triangle_box_overlap(
+                v[:, 0], v[:, 1], v[:, 2], origin + (cells + 0.5) * h, h / 2 + r
+            )
+            cells = cells[ok]
+        marked[tuple(cells.T)] = True
+    return marked
+
+
+def _random_mesh(seed: int) -> tuple[np.ndarray, np.ndarray]:
+    rng = np.random.default_rng(seed)
+    big = rng.uniform(-1, 1, (20, 3, 3))  # large triangles in all orientations
+    small = rng.uniform(-1, 1, (300, 1, 3)) + rng.normal(0, 0.05, (300, 3, 3))
+    tri = np.concatenate([big, small])
+    tri[:3, :, 2] = 0.25  # axis-aligned planes, on grid-ish coordinates
+    return tri.reshape(-1, 3), np.arange(len(tri) * 3).reshape(-1, 3)
+
+
+@pytest.mark.parametrize("case", ["cell", "random0", "random1"])
+def test_marked_cells_equal_brute_force_separating_axis_test(case: str) -> None:
+    if case == "cell":
+        m = _work_cell()
+        v, f = np.asarray(m.vertices), np.asarray(m.faces)
+        sdf = SparseSDF.from_mesh((v, f), resolution=24, subdivisions=2, band=0.14)
+    else:
+        v, f = _random_mesh(int(case[-1]))
+        with pytest.warns(UserWarning, match="not watertight"):
+            sdf = SparseSDF.from_mesh((v, f), resolution=20, subdivisions=2, band=0.09)
+    brute = _marked_brute(v[f], sdf)
+    assert brute.sum() > 500
+    np.testing.assert_array_equal(sdf.block_index >= 0, brute)
+
+
+@pytest.mark.parametrize("band", [0.0, 0.14])
+def test_every_corner_value_is_the_truncated_exact_distance(band: float) -> None:
+    """Twin: the LBVH's exact distance at every stored corner, truncated at W (float32).
+
+    Magnitudes only: the sign is the ray-parity pass's (tested above), untouched here.
+    """
+    m = _work_cell()
+    sdf = SparseSDF.from_mesh(m, resolution=24, subdivisions=3, band=band)
+    s = sdf.subdivisions
+    blocks = np.argwhere(sdf.block_index >= 0)
+    order = sdf.block_index[tuple(blocks.T)]
+    e = np.arange(s + 1)
+    offs = np.stack(np.meshgrid(e, e, e, indexing="ij"), axis=-1).reshape(-1, 3)
+    corners = sdf.origin + (blocks[:, None] * s + offs[None]).reshape(-1, 3) * sdf.fine_cell_size
+    values = sdf.values[order].reshape(-1).astype(float)
+    exact = LBVH(m.vertices, m.faces).closest_points(corners)[1]
+    trunc = sdf.band + np.sqrt(3) / 2 * sdf.fine_cell_size
+    assert len(corners) > 50_000 and np.sum(exact < trunc) > 20_000
+    np.testing.assert_allclose(np.abs(values), np.minimum(exact, trunc), rtol=0, atol=1e-7)
+
+
+def _query_twin(sdf: SparseSDF, p: np.ndarray) -> np.ndarray:
+    """Slow twin of `query`: per-point cell lookups by 3-D indexing, the same arithmetic."""
+    g = (p - sdf.origin) / sdf.cell_size
+    ci = np.floor(g).astype(np.int64)
+    lo, hi = sdf.mesh_bounds
+    out = np.linalg.norm(np.maximum(np.maximum(lo - p, p - hi), 0.0), axis=1)
+    s = sdf.subdivisions
+    for n in range(len(p)):
+        c = ci[n]
+        if np.any(c < 0) or np.any(c >= sdf.dims):
+            continue
+        b = sdf.block_index[c[0], c[1], c[2]]
+        if b < 0:
+            out[n] = sdf.far[c[0], c[1], c[2]]
+            continue
+        local = (g[n] - c) * s
+        fi = np.clip(np.floor(local).astype(np.int64), 0, s - 1)
+        t = local - fi
+        acc = 0.0
+        for dx in (0, 1):
+            for dy in (0, 1):
+                for dz in (0, 1):
+                    w = (t[0] if dx else 1.0 - t[0]) * (t[1] if dy else 1.0 - t[1])
+                    w *= t[2] if dz else 1.0 - t[2]
+                    acc += w * float(sdf.values[b, fi[0] + dx, fi[1] + dy, fi[2] + dz])
+        out[n] = acc
+    return out
+
+
+def test_query_equals_its_per_point_twin(scene_sdf) -> None:
+    m, sdf = scene_sdf
+    rng = np.random.default_rng(5)
+    lo, hi = m.bounds
+    fine = sdf.fine_cell_size
+    p = np.concatenate(
+        [
+            rng.uniform(lo, hi, (1500, 3)),  # inside the mesh box: band and far cells
+            m.sample(1000) + rng.normal(0, 0.02, (1000, 3)),  # in the band
+            rng.uniform(lo - 0.3, hi + 0.3, (1000, 3)),  # around, some outside the grid
+            rng.uniform(lo - 5.0, hi + 5.0, (500, 3)),  # mostly outside the grid
+            np.round(rng.uniform(lo, hi, (500, 3)) / fine) * fine,  # on fine corners
+            sdf.origin + rng.integers(-1, sdf.dims.max() + 1, (500, 3)) * sdf.cell_size,  # on faces
+        ]
+    )
+    band = _in_band(sdf, p)
+    assert band.sum() > 1000 and (~band).sum() > 1000
+    np.testing.assert_allclose(sdf.query(p), _query_twin(sdf, p), rtol=0, atol=1e-12)

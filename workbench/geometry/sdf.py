@@ -3,14 +3,17 @@
 Level 1: a coarse grid (cell size h, by default 1/64 of the model's largest extent). A cell
 is marked when a triangle grown by the band width r can touch it: the cell box grown by r
 (a cube, which contains the ball-grown box) overlaps the triangle by the separating-axis
-test. Level 2: each marked cell is split into s^3 fine cells; exact distances at their
+test (only the cells whose centre lies in the triangle's plane slab are tested; the
+others fail its normal axis anyway). Level 2: each marked cell is split into s^3 fine cells; exact distances at their
 corners come from the LBVH, and the sign from ray parity along x and y (both must agree
 and neither may be untrusted, i.e. lie between the ends of a triangle the row grazes;
 otherwise three skewed rays vote). Hits and corners of a row are compared exactly.
 
 Values are truncated at W = r + sqrt(3)/2 * h/s (the band plus half a fine diagonal):
-exact corner distances are only needed up to W, and most come from a triangle-driven pass
-(each triangle visits the corners within 2 fine cells of it); the rest from the LBVH.
+exact corner distances are only needed up to W, and they come from a triangle-driven pass
+(each triangle visits the corners within W of its plane and of its side planes,
+`triangle_raster.band_points`) when that costs less than LBVH queries; else the pass
+goes to 2 fine cells and the rest come from the LBVH.
 
 Query: inside a marked cell the value is trilinear in the fine corners. The truncated field
 is 1-Lipschitz, so the value is within ``max_error = sqrt(3)/2 * h/s`` (half the fine-cell
@@ -43,7 +46,15 @@ from scipy import ndimage
 from workbench.errors import InputError
 from workbench.geometry.distance import point_triangle_distance2_rows
 from workbench.geometry.lbvh import LBVH, check_mesh
-from workbench.geometry.subdivide import split_long_triangles
+from workbench.geometry.triangle_raster import (
+    band_points,
+    plane_slabs,
+    slab_point_counts,
+    slab_points,
+    triangle_box_overlap,
+)
+
+__all__ = ["SparseSDF", "is_watertight", "triangle_box_overlap"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -67,30 +78,6 @@ def is_watertight(vertices: FloatArray, faces: IntArray) -> bool:
     return bool(np.all(counts == 2))
 
 
-def triangle_box_overlap(
-    v0: FloatArray, v1: FloatArray, v2: FloatArray, centre: FloatArray, half: float
-) -> NDArray[np.bool_]:
-    """Return whether triangles (P,3)x3 overlap axis-aligned cubes (centre (P,3), half-size [m]).
-
-    Separating-axis test of Akenine-Moller (2001): the triangle normal and the nine
-    edge x box-axis products (the three box axes are assumed already tested by the caller).
-    """
-    a, b, c = v0 - centre, v1 - centre, v2 - centre
-    n = np.cross(b - a, c - a)
-    sep = np.abs(np.einsum("ij,ij->i", n, a)) > half * np.abs(n).sum(axis=1)
-    for e in (b - a, c - b, a - c):
-        for k in range(3):
-            axis = np.zeros_like(e)  # unit_k x e
-            axis[:, (k + 1) % 3] = -e[:, (k + 2) % 3]
-            axis[:, (k + 2) % 3] = e[:, (k + 1) % 3]
-            pa, pb, pc = (np.einsum("ij,ij->i", axis, x) for x in (a, b, c))
-            r = half * np.abs(axis).sum(axis=1)
-            sep |= (np.minimum(np.minimum(pa, pb), pc) > r) | (
-                np.maximum(np.maximum(pa, pb), pc) < -r
-            )
-    return ~sep
-
-
 class SparseSDF:
     """Two-level sparse signed distance field; build with `SparseSDF.from_mesh`."""
 
@@ -105,6 +92,10 @@ class SparseSDF:
         self.values: NDArray[np.float32] = np.asarray(arrays["values"], dtype=np.float32)
         self.far: NDArray[np.float32] = np.asarray(arrays["far"], dtype=np.float32)
         self.dims = np.array(self.block_index.shape)
+        # Flat views for the query's gathers (np.take on 1-D beats fancy indexing in 3-4-D).
+        self._block_flat = self.block_index.reshape(-1)
+        self._far_flat = self.far.reshape(-1)
+        self._values_flat = self.values.reshape(-1)
 
     @property
     def fine_cell_size(self) -> float:
@@ -211,29 +202,43 @@ class SparseSDF:
             raise InputError("points contain NaN or inf; give finite coordinates in metres")
         g = (p - self.origin) / self.cell_size
         ci = np.floor(g).astype(np.int64)
-        in_grid = np.all((ci >= 0) & (ci < self.dims), axis=1)
-        d_box = np.maximum(np.maximum(self.mesh_bounds[0] - p, p - self.mesh_bounds[1]), 0.0)
-        out = np.linalg.norm(d_box, axis=1)
-        idx = np.nonzero(in_grid)[0]
-        cg = ci[idx]
-        blk = self.block_index[cg[:, 0], cg[:, 1], cg[:, 2]]
+        # In the grid: one unsigned compare per axis (negative indices wrap to huge values),
+        # on 1-D columns rather than an all(axis=1) reduction over (M, 3).
+        cu = ci.view(np.uint64)
+        d0, d1, d2 = (int(x) for x in self.dims)
+        in_grid = cu[:, 0] < d0
+        in_grid &= cu[:, 1] < d1
+        in_grid &= cu[:, 2] < d2
+        idx = np.flatnonzero(in_grid)
+        out = np.empty(len(p))
+        if idx.size < len(p):  # outside the grid: distance to the mesh AABB (a lower bound)
+            o = np.flatnonzero(~in_grid)
+            po = p[o]
+            d_box = np.maximum(np.maximum(self.mesh_bounds[0] - po, po - self.mesh_bounds[1]), 0.0)
+            out[o] = np.linalg.norm(d_box, axis=1)
+        flat = ((ci[:, 0] * d1 + ci[:, 1]) * d2 + ci[:, 2]).take(idx)
+        blk = self._block_flat.take(flat)
         far = blk < 0
-        out[idx[far]] = self.far[cg[far, 0], cg[far, 1], cg[far, 2]]
-        near = idx[~far]
+        out[idx[far]] = self._far_flat.take(flat[far])
+        near_sel = ~far
+        near = idx[near_sel]
         if near.size:
             s = self.subdivisions
-            local = (g[near] - ci[near]) * s
+            e = s + 1
+            local = np.take(g - ci, near, axis=0) * s
             fi = np.clip(np.floor(local).astype(np.int64), 0, s - 1)
             t = local - fi
-            b = blk[~far]
+            base = ((blk[near_sel].astype(np.int64) * e + fi[:, 0]) * e + fi[:, 1]) * e + fi[:, 2]
+            vals = self._values_flat
             acc = np.zeros(len(near))
+            tx, ty, tz = t[:, 0], t[:, 1], t[:, 2]
             for dx in (0, 1):
-                wx = t[:, 0] if dx else 1.0 - t[:, 0]
+                wx = tx if dx else 1.0 - tx
                 for dy in (0, 1):
-                    wy = t[:, 1] if dy else 1.0 - t[:, 1]
+                    wy = ty if dy else 1.0 - ty
                     for dz in (0, 1):
-                        wz = t[:, 2] if dz else 1.0 - t[:, 2]
-                        val = self.values[b, fi[:, 0] + dx, fi[:, 1] + dy, fi[:, 2] + dz]
+                        wz = tz if dz else 1.0 - tz
+                        val = vals.take(base + ((dx * e + dy) * e + dz))
                         acc += wx * wy * wz * val
             out[near] = acc
         return out
@@ -253,6 +258,51 @@ def _unique_keys(key: IntArray, size: int | None) -> tuple[IntArray, IntArray]:
     mark[key] = True
     rank = np.cumsum(mark) - 1
     return np.flatnonzero(mark), rank[key]
+
+
+def _grid_scale(origin: FloatArray, dims: IntArray, step: float) -> float:
+    """Return the largest coordinate magnitude [m] on a grid (for rounding margins)."""
+    return float(np.abs(np.stack([origin, origin + dims * step])).max()) + step
+
+
+def _mark_cells(
+    tri: FloatArray, origin: FloatArray, dims: IntArray, h: float, r: float
+) -> NDArray[np.bool_]:
+    """Return the coarse cells (bool dims) that triangles (T,3,3) grown by r [m] can touch.
+
+    A cell is marked when its box grown by r (a cube of half-size h/2 + r) overlaps the
+    triangle. Triangles whose grown box covers at most 8 cells mark them all (tight
+    enough); the others test, by the separating-axis test, only the cells of that box whose
+    centre lies in the triangle's plane slab (the normal axis of the same test, widened for
+    rounding), so the set equals testing every cell of the box.
+    """
+    marked = np.zeros(dims, dtype=bool)
+    imin = np.clip(np.floor((tri.min(axis=1) - r - origin) / h).astype(np.int64), 0, dims - 1)
+    imax = np.clip(np.floor((tri.max(axis=1) + r - origin) / h).astype(np.int64), 0, dims - 1)
+    span = imax - imin + 1
+    count = span.prod(axis=1)
+    small = np.flatnonzero(count <= 8)
+    if small.size:
+        cnt = count[small]
+        tid = np.repeat(small, cnt)
+        k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+        sp = span[tid]
+        cell = imin[tid] + np.stack(
+            [k // (sp[:, 1] * sp[:, 2]), (k // sp[:, 2]) % sp[:, 1], k % sp[:, 2]], axis=1
+        )
+        marked[cell[:, 0], cell[:, 1], cell[:, 2]] = True
+    big = np.flatnonzero(count > 8)
+    if big.size:
+        half = h / 2 + r
+        tb = tri[big]
+        normal, offset, slab = plane_slabs(tb, half, cube=True, scale=_grid_scale(origin, dims, h))
+        centre0 = origin + 0.5 * h
+        for t, i0, i1, i2 in slab_points(imin[big], imax[big], normal, offset, slab, centre0, h):
+            centre = centre0 + np.stack([i0, i1, i2], axis=1) * h
+            v = tb[t]
+            ok = triangle_box_overlap(v[:, 0], v[:, 1], v[:, 2], centre, half)
+            marked[i0[ok], i1[ok], i2[ok]] = True
+    return marked
 
 
 def _skewed_inside(lbvh: LBVH, points: FloatArray) -> NDArray[np.bool_]:
@@ -317,88 +367,65 @@ def _row_parity(
     return odd, trust_after | trust_before
 
 
-def _pieces(lbvh: LBVH, max_edge: float) -> FloatArray:
-    """Return the mesh's triangles (T', 3, 3), the long ones split to edges <= max_edge [m]."""
-    tri = np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1)
-    edge2 = np.maximum(
-        np.maximum(((lbvh.b - lbvh.a) ** 2).sum(axis=1), ((lbvh.c - lbvh.b) ** 2).sum(axis=1)),
-        ((lbvh.a - lbvh.c) ** 2).sum(axis=1),
-    )
-    long = edge2 > max_edge * max_edge
-    if not long.any():
-        return tri
-    return np.concatenate([tri[~long], split_long_triangles(tri[long], max_edge)])
+def _corner_box(
+    tri: FloatArray, n_fine: IntArray, origin: FloatArray, hf: float, w: float
+) -> tuple[IntArray, IntArray]:
+    """Return the index boxes (lo, hi) (T,3) of the fine corners in triangles' AABBs grown by w."""
+    top = n_fine - 1
+    lo = np.clip(np.ceil((tri.min(axis=1) - w - origin) / hf).astype(np.int64), 0, top)
+    hi = np.clip(np.floor((tri.max(axis=1) + w - origin) / hf).astype(np.int64), 0, top)
+    return lo, hi
 
 
 def _scatter_d2(
-    lbvh: LBVH,
+    tri: FloatArray,
     ukey: IntArray,
     n_fine: IntArray,
     origin: FloatArray,
     hf: float,
     w: float,
-    pieces: FloatArray | None = None,
 ) -> FloatArray:
     """Return squared distances (P,) at corners `ukey` (sorted), exact where <= w**2, else inf.
 
-    Each triangle visits the existing corners within its AABB grown by w. The nearest
-    triangle of a corner at distance d <= w is among them, so the minimum is exact there.
-    Long triangles are first split (same surface) so that no AABB enumerates too many cells.
+    Each triangle (T,3,3) visits the existing corners of its AABB grown by w [m] that
+    `band_points` keeps (within w of its plane and of its side planes); every corner within
+    w is among them, so the minimum over triangles is exact there. Corners that project
+    into the triangle take the plane distance, the rest the point-triangle distance.
     """
-    tri = _pieces(lbvh, 4.0 * hf) if pieces is None else pieces
     best = np.full(len(ukey), np.inf)
-    top = n_fine - 1
-    tlo, thi = tri.min(axis=1), tri.max(axis=1)
-    imin = np.clip(np.ceil((tlo - w - origin) / hf).astype(np.int64), 0, top)
-    imax = np.clip(np.floor((thi + w - origin) / hf).astype(np.int64), 0, top)
-    span = np.maximum(imax - imin + 1, 0)
-    count = span.prod(axis=1)
-    imin0, imin1, imin2 = (np.ascontiguousarray(imin[:, k]) for k in range(3))
-    span2 = np.ascontiguousarray(span[:, 2])
-    span12 = span[:, 1] * span2
+    lo, hi = _corner_box(tri, n_fine, origin, hf, w)
     ta, tb, tc = (np.ascontiguousarray(tri[:, k].T) for k in range(3))
-    blo, bhi = np.ascontiguousarray(tlo.T), np.ascontiguousarray(thi.T)
     # Corner key -> row of ukey: a dense table when the fine grid is small enough (one
     # gather per pair), else a binary search. -1: not a corner of a marked block.
-    dense = int(np.prod(n_fine)) <= max(1 << 22, 4 * len(ukey))
+    dense = int(np.prod(n_fine)) <= max(1 << 23, 8 * len(ukey)) and len(ukey) < 2**31
     if dense:
-        table = np.full(int(np.prod(n_fine)), -1, dtype=np.int64)
-        table[ukey] = np.arange(len(ukey))
-    csum = np.cumsum(count)
-    bounds = np.searchsorted(csum, np.arange(1, csum[-1] // 1_000_000 + 2) * 1_000_000)
-    start = 0
-    for end in np.unique(np.minimum(np.append(bounds + 1, len(tri)), len(tri))):
-        cnt = count[start:end]
-        tid = np.repeat(np.arange(start, end), cnt)
-        k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-        s2, s12 = span2.take(tid), span12.take(tid)
-        rem = k % s12
-        g0 = imin0.take(tid) + k // s12
-        g1 = imin1.take(tid) + rem // s2
-        g2 = imin2.take(tid) + rem % s2
-        p0, p1, p2 = origin[0] + g0 * hf, origin[1] + g1 * hf, origin[2] + g2 * hf
-        # Cheap cut first: the distance to the triangle's box (the enumeration took that
-        # box grown by w as a cube, whose corners lie farther than w) bounds it below.
-        dd = np.zeros(len(tid))
-        for ax, pk in enumerate((p0, p1, p2)):
-            e = np.maximum(np.maximum(blo[ax].take(tid) - pk, pk - bhi[ax].take(tid)), 0.0)
-            dd += e * e
-        near = np.nonzero(dd <= w * w)[0]
-        tid = tid.take(near)
-        key = (g0.take(near) * n_fine[1] + g1.take(near)) * n_fine[2] + g2.take(near)
+        table = np.full(int(np.prod(n_fine)), -1, dtype=np.int32)
+        table[ukey] = np.arange(len(ukey), dtype=np.int32)
+    scale = _grid_scale(origin, n_fine - 1, hf)
+    for tid, g0, g1, g2, d2 in band_points(tri, lo, hi, origin, hf, w, scale):
+        key = (g0 * n_fine[1] + g1) * n_fine[2] + g2
         if dense:
             pos = table.take(key)
         else:
             pos = np.minimum(np.searchsorted(ukey, key), len(ukey) - 1)
             pos[ukey.take(pos) != key] = -1
         hit = np.nonzero(pos >= 0)[0]
-        tid, pos, near = tid.take(hit), pos.take(hit), near.take(hit)
-        p = np.stack([p0.take(near), p1.take(near), p2.take(near)])
-        d2 = point_triangle_distance2_rows(
-            p, np.take(ta, tid, axis=1), np.take(tb, tid, axis=1), np.take(tc, tid, axis=1)
-        )
+        pos, d2 = pos.take(hit), d2.take(hit)
+        todo = np.nonzero(np.isnan(d2))[0]
+        if todo.size:
+            sel = hit.take(todo)
+            t = tid.take(sel)
+            p = np.stack(
+                [
+                    origin[0] + g0.take(sel) * hf,
+                    origin[1] + g1.take(sel) * hf,
+                    origin[2] + g2.take(sel) * hf,
+                ]
+            )
+            d2[todo] = point_triangle_distance2_rows(
+                p, np.take(ta, t, axis=1), np.take(tb, t, axis=1), np.take(tc, t, axis=1)
+            )
         np.minimum.at(best, pos, d2)
-        start = int(end)
     best[best > w * w] = np.inf
     return best
 
@@ -428,33 +455,7 @@ def _build(
     origin = lo - pad
     dims = np.maximum(np.ceil((hi + pad - origin) / h).astype(np.int64), 1)
     progress(0.05, f"marking coarse cells ({dims[0]}x{dims[1]}x{dims[2]})")
-    marked = np.zeros(dims, dtype=bool)
-    tri = np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1)
-    imin = np.clip(np.floor((tri.min(axis=1) - r - origin) / h).astype(np.int64), 0, dims - 1)
-    imax = np.clip(np.floor((tri.max(axis=1) + r - origin) / h).astype(np.int64), 0, dims - 1)
-    span = imax - imin + 1
-    count = span.prod(axis=1)
-    chunk_end = np.searchsorted(
-        np.cumsum(count), np.arange(1, count.sum() // 2_000_000 + 2) * 2_000_000
-    )
-    start = 0
-    for end in np.unique(np.minimum(chunk_end + 1, len(tri))):
-        sl = slice(start, int(end))
-        cnt = count[sl]
-        tid = np.repeat(np.arange(sl.start, sl.stop), cnt)
-        k = np.arange(len(tid)) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-        sp = span[tid]
-        cell = imin[tid] + np.stack(
-            [k // (sp[:, 1] * sp[:, 2]), (k // sp[:, 2]) % sp[:, 1], k % sp[:, 2]], axis=1
-        )
-        big = count[tid] > 8  # small triangles: the grown AABB test is tight enough
-        ok = ~big
-        if np.any(big):
-            centre = origin + (cell[big] + 0.5) * h
-            tb = tri[tid[big]]
-            ok[big] = triangle_box_overlap(tb[:, 0], tb[:, 1], tb[:, 2], centre, h / 2 + r)
-        marked[cell[ok, 0], cell[ok, 1], cell[ok, 2]] = True
-        start = int(end)
+    marked = _mark_cells(np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1), origin, dims, h, r)
     blocks = np.argwhere(marked)
     block_index = np.full(dims, -1, dtype=np.int32)
     block_index[blocks[:, 0], blocks[:, 1], blocks[:, 2]] = np.arange(len(blocks), dtype=np.int32)
@@ -472,16 +473,16 @@ def _build(
     pts = origin + uij * hf
     # Values are truncated at W = r + sqrt(3)/2 hf: exact distances are only needed up to W.
     trunc = r + np.sqrt(3.0) / 2.0 * hf
-    # Triangle-driven pass up to W when that enumerates fewer than ~12 (triangle, corner)
-    # pairs per corner (about the cost of one LBVH query); else to 2 fine cells + LBVH.
-    # Counted on the split pieces the pass enumerates: a large triangle's pieces, each grown
-    # by W, visit far more corners than the triangle's own grown box.
-    pieces = _pieces(lbvh, 4.0 * hf)
-    ext = np.ptp(pieces, axis=1)
-    pairs_full = float(np.prod((ext + 2 * trunc) / hf + 1.0, axis=1).sum())
-    w_s = trunc if pairs_full <= 12.0 * len(pts) else min(trunc, 2.0 * hf)
+    # Triangle-driven pass up to W when that enumerates fewer than ~20 (triangle, corner)
+    # pairs per corner (about the cost of one LBVH query: ~0.1 us a pair, ~3 us a query);
+    # else to 2 fine cells + LBVH. Counted on the plane slabs the pass enumerates.
+    tri = np.stack([lbvh.a, lbvh.b, lbvh.c], axis=1)
+    lo_c, hi_c = _corner_box(tri, n_fine, origin, hf, trunc)
+    n_c, _, half_c = plane_slabs(tri, trunc, cube=False, scale=_grid_scale(origin, dims, h))
+    pairs_full = float(slab_point_counts(lo_c, hi_c, n_c, half_c, hf).sum())
+    w_s = trunc if pairs_full <= 20.0 * len(pts) else min(trunc, 2.0 * hf)
     progress(0.1, f"distances at {len(pts)} fine corners ({len(blocks)} blocks), near triangles")
-    dist = np.sqrt(_scatter_d2(lbvh, ukey, n_fine, origin, hf, w_s, pieces))
+    dist = np.sqrt(_scatter_d2(tri, ukey, n_fine, origin, hf, w_s))
     far_c = np.nonzero(dist > w_s)[0]
     if trunc > w_s and far_c.size:
         step = 65536
