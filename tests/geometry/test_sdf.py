@@ -116,7 +116,24 @@ def test_memory_is_sparse_and_progress_reported(tmp_path) -> None:
     np.testing.assert_array_equal(again.values, sdf.values)
     # Other parameters: another cache entry.
     SparseSDF.from_mesh(m, resolution=22, subdivisions=4, band=0.0, cache_dir=tmp_path)
-    assert len(list(tmp_path.glob("sdf-*.npz"))) == 2
+    entries = sorted(tmp_path.glob("sdf-*.npz"))
+    assert len(entries) == 2
+    # A truncated entry (a crash of another writer, a full disk) is rebuilt, not an error.
+    for e in entries:
+        e.write_bytes(e.read_bytes()[:200])
+    calls.clear()
+    rebuilt = SparseSDF.from_mesh(
+        m,
+        resolution=24,
+        subdivisions=4,
+        band=0.0,
+        cache_dir=tmp_path,
+        progress=lambda f, s: calls.append((f, s)),
+    )
+    assert len(calls) > 1 and not any("cache" in c[1] for c in calls)
+    np.testing.assert_array_equal(rebuilt.values, sdf.values)
+    assert len(list(tmp_path.glob("sdf-*.npz"))) == 2  # overwritten in place, no leftovers
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(e.name for e in entries)
 
 
 def test_open_mesh_warns_and_is_unsigned() -> None:

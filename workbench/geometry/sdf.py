@@ -32,8 +32,6 @@ warning and an unsigned field (all values >= 0).
 
 from __future__ import annotations
 
-import hashlib
-import json
 import warnings
 from collections.abc import Callable
 from pathlib import Path
@@ -46,6 +44,7 @@ from scipy import ndimage
 from workbench.errors import InputError
 from workbench.geometry.distance import point_triangle_distance2_rows
 from workbench.geometry.lbvh import LBVH, check_mesh
+from workbench.geometry.npz_cache import cache_path, load_entry, store_entry
 from workbench.geometry.triangle_raster import (
     band_points,
     plane_slabs,
@@ -60,6 +59,17 @@ FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
 Progress = Callable[[float, str], None]
 _FORMAT = 1
+_ARRAYS = (
+    "band",
+    "block_index",
+    "cell_size",
+    "far",
+    "mesh_bounds",
+    "origin",
+    "signed",
+    "subdivisions",
+    "values",
+)  # what a field is made of
 _SKEWED = np.array([[1.0, 0.0123, 0.0071], [0.0093, 1.0, 0.0137], [0.0111, 0.0059, 1.0]])
 
 
@@ -172,21 +182,15 @@ class SparseSDF:
         params = {"h": h, "s": int(subdivisions), "r": r, "format": _FORMAT}
         path = None
         if cache_dir is not None:
-            digest = hashlib.sha256(
-                v.tobytes() + f.tobytes() + json.dumps(params, sort_keys=True).encode()
-            ).hexdigest()
-            path = Path(cache_dir) / f"sdf-{digest[:24]}.npz"
-            if path.exists():
-                with np.load(path) as data:
-                    if progress:
-                        progress(1.0, f"loaded distance field from cache {path.name}")
-                    return cls({k: data[k] for k in data.files})
+            path = cache_path(cache_dir, "sdf", [v, f], params)
+            cached = load_entry(path, required=_ARRAYS)
+            if cached is not None:
+                if progress:
+                    progress(1.0, f"loaded distance field from cache {path.name}")
+                return cls(cached)
         arrays = _build(v, f, h, int(subdivisions), r, progress or (lambda _f, _m: None))
         if path is not None:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            tmp = path.with_suffix(".tmp.npz")
-            np.savez(tmp, **arrays)
-            tmp.replace(path)
+            store_entry(path, arrays)
         return cls(arrays)
 
     # ------------------------------------------------------------------ query
