@@ -3,8 +3,9 @@
 A triangle lies inside the disc of radius r around its centroid, r its largest
 centroid-to-vertex distance; with square cells of side h >= reach (the largest r over the
 mesh), the centroid of every face containing a point p lies in p's cell or one of its eight
-neighbours. So the faces listed in those nine cells are a complete candidate set, and an
-exact containment test over them locates p.
+neighbours; more precisely in a cell that the square [p - reach, p + reach] meets (on
+average (1 + 2 reach / h)^2 of the nine). So the faces listed in those cells are a complete
+candidate set, and an exact containment test over them locates p.
 
 Built in O(F) without a comparison sort: cell ids fit in 16 bits (at most 65,536 cells;
 cells grow when the chart would need more), where numpy's stable argsort is a radix sort.
@@ -38,6 +39,7 @@ class FaceGrid:
 
     lo: F64
     h: float
+    reach: float
     nx: int
     ny: int
     ptr: I64
@@ -68,17 +70,25 @@ class FaceGrid:
         order = np.argsort(cell.astype(np.uint16), kind="stable").astype(np.int64)
         ptr = np.zeros(nx * ny + 1, dtype=np.int64)
         np.cumsum(counts, out=ptr[1:])
-        return FaceGrid(lo=lo, h=h, nx=nx, ny=ny, ptr=ptr, order=order)
+        return FaceGrid(lo=lo, h=h, reach=reach, nx=nx, ny=ny, ptr=ptr, order=order)
 
     def candidates(self, p: F64) -> tuple[I64, I64]:
-        """Return (owner (K,), face (K,)): for each point p[owner] (Q, 2) [m] the faces of its
-        3 x 3 block of cells, grouped by owner in increasing order."""
+        """Return (owner (K,), face (K,)): for each point p[owner] (Q, 2) [m] the faces of the
+        cells that the square [p - reach, p + reach] meets (at most the 3 x 3 block of cells
+        around p's, as h >= reach), grouped by owner in increasing order."""
         inv = 1.0 / self.h
-        ix = np.floor((p[:, 0] - self.lo[0]) * inv).astype(np.int64)
-        iy = np.floor((p[:, 1] - self.lo[1]) * inv).astype(np.int64)
+        r = self.reach * (1.0 + 1e-7)  # < h: the square stays within the 3 x 3 block
+        pu, pv = p[:, 0] - self.lo[0], p[:, 1] - self.lo[1]
+        ix = np.floor(pu * inv).astype(np.int64)
+        iy = np.floor(pv * inv).astype(np.int64)
+        # Only the cells the square meets: (1 + 2 reach / h)^2 of the 9 on average.
+        ax = np.maximum(np.floor((pu - r) * inv).astype(np.int64), 0)[:, None]
+        bx = np.minimum(np.floor((pu + r) * inv).astype(np.int64), self.nx - 1)[:, None]
+        ay = np.maximum(np.floor((pv - r) * inv).astype(np.int64), 0)[:, None]
+        by = np.minimum(np.floor((pv + r) * inv).astype(np.int64), self.ny - 1)[:, None]
         jx = ix[:, None] + _OFFSETS[:, 0]
         jy = iy[:, None] + _OFFSETS[:, 1]
-        valid = (jx >= 0) & (jx < self.nx) & (jy >= 0) & (jy < self.ny)
+        valid = (jx >= ax) & (jx <= bx) & (jy >= ay) & (jy <= by)
         cell = np.where(valid, jx * self.ny + jy, 0).ravel()
         start = self.ptr[cell]
         cnt = np.where(valid.ravel(), self.ptr[cell + 1] - start, 0)
