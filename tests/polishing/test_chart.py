@@ -157,3 +157,25 @@ def test_grid_and_tree_locators_both_match_brute_force() -> None:
             dataclasses.replace(chart, grid=None),
         ):
             _check_against_brute(variant, p)
+
+
+def test_locate_near_with_hint_columns_matches_brute_force() -> None:
+    # Hints right, wrong, -1, in one or two columns: the answer is the brute force's either way.
+    mesh = make_panel(25, 18)
+    chart = build_chart(mesh)
+    rng = np.random.default_rng(7)
+    lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+    p = rng.uniform(lo - 0.01, hi + 0.01, (3000, 2))
+    ref = _brute_locate(chart.uv, chart.faces, p)
+    right = np.where(ref >= 0, ref, 0)
+    wrong = rng.integers(0, len(chart.faces), len(p))
+    pick = rng.integers(0, 3, len(p))
+    col0 = np.choose(pick, [right, wrong, np.full(len(p), -1)])
+    col1 = np.choose(rng.integers(0, 3, len(p)), [right, wrong, np.full(len(p), -1)])
+    for hint in (col0, np.stack([col0, col1], axis=1)):
+        face, bary = chart.locate_near(p, hint)
+        assert np.array_equal(face < 0, ref < 0)
+        ok = face >= 0
+        back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
+        np.testing.assert_allclose(back, p[ok], atol=1e-14)
+        assert (bary[ok] >= 0).all()

@@ -134,19 +134,28 @@ class SurfaceChart:
 
     def locate_near(self, uv: F64, hint: I64, *, tol: float = 1e-9) -> tuple[I64, F64]:
         """Return (face (N,), bary (N, 3)) of chart points uv (N, 2) as `locate`, trying the
-        faces `hint` (N,) first: points still inside their hint face skip the KD-tree search
-        (the path's points move a fraction of a face between Newton iterations)."""
+        faces `hint` (N,) or (N, k) first, column by column: points inside a hint face skip
+        the search (the path's points move a fraction of a face between Newton iterations).
+        Hint faces < 0 are skipped."""
         p = np.asarray(uv, dtype=float).reshape(-1, 2)
-        h = np.asarray(hint, dtype=np.int64).reshape(-1)
-        hh = np.where(h >= 0, h, 0)
-        u, v, w = self._bary(p[:, 0], p[:, 1], hh)
-        hit = (h >= 0) & (np.minimum(np.minimum(u, v), w) >= -tol)
-        face = np.where(hit, hh, -1)
-        bb = np.clip(np.stack([u, v, w], axis=1), 0.0, None)
-        bary = bb / bb.sum(axis=1, keepdims=True)
-        miss = np.nonzero(~hit)[0]
-        if len(miss):
-            face[miss], bary[miss] = self.locate(p[miss], tol=tol)
+        hints = np.asarray(hint, dtype=np.int64).reshape(len(p), -1)
+        face = np.full(len(p), -1, dtype=np.int64)
+        bary = np.full((len(p), 3), np.nan)
+        todo = np.arange(len(p))
+        for col in range(hints.shape[1]):
+            if not len(todo):
+                break
+            h = hints[todo, col]
+            hh = np.where(h >= 0, h, 0)
+            u, v, w = self._bary(p[todo, 0], p[todo, 1], hh)
+            hit = (h >= 0) & (np.minimum(np.minimum(u, v), w) >= -tol)
+            q = todo[hit]
+            face[q] = hh[hit]
+            bb = np.clip(np.stack([u[hit], v[hit], w[hit]], axis=1), 0.0, None)
+            bary[q] = bb / bb.sum(axis=1, keepdims=True)
+            todo = todo[~hit]
+        if len(todo):
+            face[todo], bary[todo] = self.locate(p[todo], tol=tol)
         return face, bary
 
     def bary_rate(self, face: I64, direction: F64) -> F64:
