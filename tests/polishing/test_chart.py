@@ -149,7 +149,7 @@ def test_grid_and_tree_locators_both_match_brute_force() -> None:
                 chart.boundary + 1e-7 * rng.normal(size=chart.boundary.shape),
             ]
         )
-        cu, cv = chart.centroids[:, 0], chart.centroids[:, 1]
+        cu, cv = chart.centroids
         grid = FaceGrid.build(cu, cv, chart.reach, max_per_cell=10**9)
         assert grid is not None
         for variant in (
