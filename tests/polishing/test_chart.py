@@ -115,3 +115,67 @@ def test_locate_on_an_uneven_mesh_matches_brute_force() -> None:
     ok = face >= 0
     back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
     np.testing.assert_allclose(back, p[ok], atol=1e-14)
+
+
+def _check_against_brute(chart, p: np.ndarray) -> None:
+    face, bary = chart.locate(p)
+    ref = _brute_locate(chart.uv, chart.faces, p)
+    assert np.array_equal(face < 0, ref < 0)
+    ok = face >= 0
+    back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
+    np.testing.assert_allclose(back, p[ok], atol=1e-14)
+    assert (bary[ok] >= 0).all()
+
+
+def test_grid_and_tree_locators_both_match_brute_force() -> None:
+    # The chart picks the centroid grid on an even mesh and the KD-tree on an uneven one;
+    # each locator is checked on both meshes (the other one forced) against the brute force.
+    import dataclasses
+
+    from workbench.polishing.facegrid import FaceGrid
+
+    rng = np.random.default_rng(5)
+    for mesh, grid_expected in ((make_panel(25, 18), True), (_uneven_mesh(), False)):
+        chart = build_chart(mesh)
+        assert (chart.grid is not None) == grid_expected
+        lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+        tri = chart.uv[chart.faces]
+        # Random points, points on edges and at vertices (ties), points just outside the rim.
+        p = np.vstack(
+            [
+                rng.uniform(lo - 0.01, hi + 0.01, (2000, 2)),
+                0.5 * (tri[:300, 0] + tri[:300, 1]),
+                tri[:300, 2],
+                chart.boundary + 1e-7 * rng.normal(size=chart.boundary.shape),
+            ]
+        )
+        cu, cv = chart.centroids
+        grid = FaceGrid.build(cu, cv, chart.reach, max_per_cell=10**9)
+        assert grid is not None
+        for variant in (
+            dataclasses.replace(chart, grid=grid),
+            dataclasses.replace(chart, grid=None),
+        ):
+            _check_against_brute(variant, p)
+
+
+def test_locate_near_with_hint_columns_matches_brute_force() -> None:
+    # Hints right, wrong, -1, in one or two columns: the answer is the brute force's either way.
+    mesh = make_panel(25, 18)
+    chart = build_chart(mesh)
+    rng = np.random.default_rng(7)
+    lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+    p = rng.uniform(lo - 0.01, hi + 0.01, (3000, 2))
+    ref = _brute_locate(chart.uv, chart.faces, p)
+    right = np.where(ref >= 0, ref, 0)
+    wrong = rng.integers(0, len(chart.faces), len(p))
+    pick = rng.integers(0, 3, len(p))
+    col0 = np.choose(pick, [right, wrong, np.full(len(p), -1)])
+    col1 = np.choose(rng.integers(0, 3, len(p)), [right, wrong, np.full(len(p), -1)])
+    for hint in (col0, np.stack([col0, col1], axis=1)):
+        face, bary = chart.locate_near(p, hint)
+        assert np.array_equal(face < 0, ref < 0)
+        ok = face >= 0
+        back = np.einsum("nk,nkj->nj", bary[ok], chart.uv[chart.faces[face[ok]]])
+        np.testing.assert_allclose(back, p[ok], atol=1e-14)
+        assert (bary[ok] >= 0).all()

@@ -8,11 +8,11 @@ from numpy.typing import NDArray
 from shapely.geometry import LineString, Polygon
 
 from workbench.errors import InputError
-from workbench.polishing.bezier import BezierSurface, fit_bezier_triangles
+from workbench.polishing.bezier import BezierSurface
 from workbench.polishing.chart import SurfaceChart, build_chart
 from workbench.polishing.offsets import offset_ring, resample_closed
 from workbench.polishing.stepping import chord_step
-from workbench.polishing.toolpath import ToolPath, check_lengths, with_leads
+from workbench.polishing.toolpath import ToolPath, chart_surface, check_lengths, with_leads
 
 F64 = NDArray[np.float64]
 
@@ -36,7 +36,7 @@ def raster_toolpath(
     """
     check_lengths(mesh, step, spacing)
     chart = chart or build_chart(mesh)
-    surface = surface or fit_bezier_triangles(mesh, vertex_normals=chart.vertex_normals)
+    surface = surface or chart_surface(chart)
     ds = spacing / 8.0  # ring sampling; the path is densified to step/4 before stepping
     boundary = resample_closed(chart.boundary, ds)
     inner, _, _ = offset_ring(chart, boundary, 0.5 * spacing, ds)

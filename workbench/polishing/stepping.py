@@ -104,7 +104,8 @@ def chord_step(
 def _lift_at(
     chart: SurfaceChart, surface: BezierSurface, uv: F64, t: F64, hint: I64
 ) -> tuple[F64, F64, I64, F64, F64]:
-    """Return (X (K,3), dX/dt (K,3), face, bary, normals) at fractional vertex indices t (K,)."""
+    """Return (X (K,3), dX/dt (K,3), face, bary, normals) at fractional vertex indices t (K,);
+    hint (K,) or (K, k): faces to try first (`SurfaceChart.locate_near`)."""
     j = np.minimum(t.astype(np.int64), len(uv) - 2)
     f = (t - j)[:, None]
     duv = uv[j + 1] - uv[j]
@@ -139,7 +140,9 @@ def _chord_step_newton(
     # off by its sagitta between them), with spare points at the end for the chain to grow into.
     t = chord_parameters(pv, step)
     t = np.concatenate([t[t < end], np.full(3, end)])
-    hint = face_v[np.minimum(t.astype(np.int64), m - 2)]
+    # Hints: the faces of the vertices at both ends of each point's polyline segment.
+    j0 = np.minimum(t.astype(np.int64), m - 2)
+    hint = np.stack([face_v[j0], face_v[j0 + 1]], axis=1)
     tol = 1e-9 * step
     for _ in range(max_iter):
         x, dx, face, bary, nrm = _lift_at(chart, surface, uv, t, hint)

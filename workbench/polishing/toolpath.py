@@ -14,7 +14,7 @@ import trimesh
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.polishing.bezier import BezierSurface, fit_bezier_triangles
+from workbench.polishing.bezier import BezierSurface
 from workbench.polishing.chart import SurfaceChart, build_chart
 from workbench.polishing.offsets import offset_ring, resample_closed, ring_area
 from workbench.polishing.stepping import chord_step
@@ -129,6 +129,16 @@ def with_leads(
     )
 
 
+def chart_surface(chart: SurfaceChart) -> BezierSurface:
+    """Return the `BezierSurface` of the chart's mesh fitted with the chart's vertex normals:
+    `fit_bezier_triangles(mesh, vertex_normals=chart.vertex_normals)` without its O(V + F)
+    checks and normalisation (the chart's normals are unit, nonzero at every used vertex:
+    no face folds, so each vertex's area vectors sum to a positive e_n component)."""
+    return BezierSurface(
+        vertices=chart.vertices, faces=chart.faces, vertex_normals=chart.vertex_normals
+    )
+
+
 def spiral_rings(
     chart: SurfaceChart, spacing: float, ds: float, *, max_rings: int = 10000
 ) -> list[tuple[F64, F64]]:
@@ -211,7 +221,7 @@ def spiral_toolpath(
     """
     check_lengths(mesh, step, spacing)
     chart = chart or build_chart(mesh)
-    surface = surface or fit_bezier_triangles(mesh, vertex_normals=chart.vertex_normals)
+    surface = surface or chart_surface(chart)
     ds = spacing / 8.0  # ring sampling; the path is densified to step/4 before stepping
     rings = spiral_rings(chart, spacing, ds)
     if not rings:
