@@ -31,6 +31,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.fcl_checker import CollisionReport
 from workbench.collision.motion_bound import JointLevers
+from workbench.collision.pair_table import PairTable, pair_joints
 from workbench.collision.path_check import PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
 from workbench.errors import InputError
@@ -42,6 +43,10 @@ FloatArray = NDArray[np.float64]
 Mode = Literal["exact", "spheres", "capsules"]
 MODES: tuple[str, ...] = ("exact", "spheres", "capsules")
 Progress = Callable[[float, str], None]
+# Grid step of the pair tables: their bound is at most TABLE_TOL [m] below fcl's distance.
+TABLE_TOL = 0.006
+# A lower bound that says nothing [m] (finite, so chord bounds stay free of inf - inf).
+NO_BOUND = -1e9
 
 
 @dataclass(frozen=True)
@@ -231,6 +236,7 @@ class CollisionEngine:
         self._body_index = idx
         self._pending = np.zeros((0, 4, 4))
         self._placed: set[str] = set()
+        self._tables(idx, np.asarray(robot.limits, float))
         report(1.0, "collision engine ready")
 
     def _groups(self, idx: dict[str, int]) -> None:
@@ -307,6 +313,65 @@ class CollisionEngine:
             )
             for a, b in scene.pairs
         }
+
+    def _tables(self, idx: dict[str, int], limits: FloatArray) -> None:
+        """Set a `PairTable` for every exact pair whose distance depends on one or two joints.
+
+        The fast modes only (the exact mode stays the plain fcl reference). Tables fill lazily
+        and are kept with the engine, so later paths reuse the nodes computed so far.
+        """
+        self.pair_tables: dict[tuple[str, str], PairTable] = {}
+        self._table_cols: list[tuple[int, PairTable]] = []
+        if self.mode == "exact":
+            return
+        for a, b in self.exact.scene.pairs:
+            fa = int(self.body_frame[idx[a]])
+            fb = int(self.body_frame[idx[b]]) if b in idx else None
+            joints = pair_joints(fa, fb)
+            lever = self.pair_lever[(a, b)][joints]
+            if not 1 <= len(joints) <= 2 or not np.all(lever > 0):
+                continue
+            self.pair_tables[(a, b)] = PairTable(
+                joints,
+                limits[joints, 0],
+                limits[joints, 1],
+                lever,
+                self.dof,
+                lambda qn, pair=(a, b): self._node_distances(pair, qn),
+                tol=TABLE_TOL,
+            )
+        pairs = list(self.pair_lever)
+        self._table_cols = [(pairs.index(p), t) for p, t in self.pair_tables.items()]
+
+    def _node_distances(self, pair: tuple[str, str], qs: FloatArray) -> FloatArray:
+        """Return the pair's exact distance [m] at qs (M, dof): 0 when touching or held."""
+        scene = self.exact.scene
+        T = self.body_poses(qs)
+        ia = self._body_index[pair[0]]
+        ib = self._body_index.get(pair[1])
+        out = np.empty(len(qs))
+        for k in range(len(qs)):
+            scene.moving[pair[0]].place(T[k, ia])
+            if ib is not None:
+                scene.moving[pair[1]].place(T[k, ib])
+            out[k] = 0.0 if scene.collides(*pair) else scene.distance(*pair)
+        self._placed = set()  # the path's pending poses must be placed again
+        return out
+
+    def table_bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray:
+        """Return (N, P): pair-table lower bounds [m] of the exact pairs' distances, less the margin.
+
+        qs (N, dof) [rad]; mask (N, P) says which entries are wanted (pairs in `pair_lever`
+        order). Wanted entries of pairs without a table get NO_BOUND (a large negative value:
+        no information); entries not wanted are NaN. Only wanted entries fill table nodes.
+        """
+        out = np.full(mask.shape, np.nan)
+        out[mask] = NO_BOUND
+        for col, table in self._table_cols:
+            rows = np.flatnonzero(mask[:, col])
+            if rows.size:
+                out[rows, col] = table.bound(qs[rows]) - self.margin
+        return out
 
     # -- geometry ---------------------------------------------------------------------
     def cell_mesh(self) -> trimesh.Trimesh | None:

@@ -36,6 +36,10 @@ REFINE = 256
 # An anchor (a configuration with fcl's distance d) serves nearby configurations while its
 # lever bound stays >= RENEW * d.
 RENEW = 0.8
+# Tightening stops once the smallest bound is within this much [m] of an fcl-settled one.
+TIGHT_TOL = 0.001
+# A lower bound that says nothing [m] (finite: chord bounds stay free of inf - inf).
+NO_BOUND = -1e9
 
 
 def _chord_bound(a: FloatArray, b: FloatArray, travel: FloatArray) -> FloatArray:
@@ -68,6 +72,8 @@ class PathOracle(Protocol):
 
     def aabb_gaps(self, poses: FloatArray) -> FloatArray: ...
 
+    def table_bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray: ...
+
     def pair_collides(self, pair: Pair) -> bool: ...
 
     def pair_distance(self, pair: Pair) -> float: ...
@@ -81,6 +87,7 @@ class _Node:
     gmin: FloatArray  # (G,) least item clearance per group [m]
     poses: FloatArray  # (B, 4, 4) world poses of the moving bodies
     gaps: FloatArray  # (P,) bounding-box gaps of the exact pairs, less the margin [m]
+    tab: FloatArray  # (P,) pair-table lower bounds, less the margin [m]; NaN: not looked up
     hits: tuple[Pair, ...] = ()
     dist: dict[tuple[Pair, int], float] = field(default_factory=dict)
 
@@ -124,12 +131,17 @@ class PathCertifier:
         inside = self.o.contained(q)
         T = self.o.poses(q)
         gaps = self.o.aabb_gaps(T)
-        nodes = [_Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i]) for i in range(len(q))]
         # Exact confirmation of what the fast items could not rule out: the pairs of flagged
-        # groups whose bounding boxes touch (apart boxes cannot touch), and the held pairs.
+        # groups whose bounding boxes touch (apart boxes cannot touch) and whose pair table
+        # (a lower bound of the surfaces' distance) does not keep them apart, and the held pairs.
         flagged = ((gmin <= 0.0).astype(np.int64) @ self.group_member > 0) & ~(
             gaps + self.o.margin > 0.0
         )
+        tab = self.o.table_bounds(q, flagged)
+        flagged &= ~(tab + self.o.margin > 0.0)
+        nodes = [
+            _Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i], tab[i]) for i in range(len(q))
+        ]
         for i, j in zip(*np.nonzero(flagged), strict=True):
             node, p = nodes[i], self.pairs[j]
             if self._anchored(node, p) + self.o.margin > 0.0:
@@ -149,6 +161,19 @@ class PathCertifier:
             if self.o.pair_collides(p):
                 node.hits += (p,)
         return nodes
+
+    def _tabs(self, ends: list[_Node], want: NDArray[np.bool_]) -> FloatArray:
+        """Return (W, P) table bounds at the interval ends, looking up the wanted ones not yet known."""
+        tab = np.array([n.tab for n in ends])
+        miss = want & np.isnan(tab)
+        rows = np.flatnonzero(miss.any(axis=1))
+        if rows.size:
+            got = self.o.table_bounds(np.array([ends[k].q for k in rows]), miss[rows])
+            for k, r in enumerate(rows):
+                m = miss[r]
+                ends[r].tab[m] = got[k, m]
+            tab = np.array([n.tab for n in ends])
+        return np.where(np.isnan(tab), NO_BOUND, tab)
 
     def _place(self, node: _Node) -> None:
         if self._placed != id(node):
@@ -256,6 +281,13 @@ class PathCertifier:
             # and the interval's fast items pass.
             fast_fail = np.any(group_fail & ~exact, axis=1)
             pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
+            # Pair tables: lower bounds of the distance at both ends, the same chord bound.
+            want = pairs_in & ~(pair_lo > 0.0)
+            ta = self._tabs([w[0] for w in work], want)
+            tb = self._tabs([w[1] for w in work], want)
+            pair_lo = np.where(
+                want, np.maximum(pair_lo, _chord_bound(ta, tb, ptravel) - ptube), pair_lo
+            )
             pb = np.where(pairs_in, pair_lo, np.inf)
             failed: set[int] = set()
             for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
@@ -337,7 +369,8 @@ class PathCertifier:
         Every interval's group bound is valid. The smallest is settled with fcl distances of
         its group's pairs at the interval's ends; those become anchors, whose lever bounds
         then raise that group's bound on every interval (the larger bound is kept). Stops when
-        the smallest bound left is fcl's, or after `REFINE` rounds.
+        the smallest bound left is fcl's or within `TIGHT_TOL` of the smallest fcl-settled
+        one, or after `REFINE` rounds.
         """
         B = np.array([c[1] for c in cert])
         tight = np.zeros(B.shape, bool)
@@ -348,7 +381,7 @@ class PathCertifier:
         best = np.inf  # the smallest fcl-settled bound so far: rows above it cannot matter
         for _ in range(REFINE):
             k, g = np.unravel_index(int(np.argmin(B)), B.shape)
-            if tight[k, g] or not np.isfinite(B[k, g]):
+            if tight[k, g] or not np.isfinite(B[k, g]) or B[k, g] >= best - TIGHT_TOL:
                 break
             w = cert[k][0]
             rows = np.flatnonzero(B[:, g] < best)

@@ -1,0 +1,110 @@
+"""Conservative distance tables of body pairs that depend on one or two joints.
+
+The distance between two links of a serial chain depends only on the joints between their
+frames (a self pair of frames a < b: joints a+1..b), and a link's distance to the fixed cell
+only on the joints up to its frame. For pairs with one or two such joints (the wrist pairs
+link4–link6, link5–tool, link4–tool, link2–link4; link1 or link2 against the cell) the exact
+distance is a function on a rectangle of at most two joint values. A `PairTable` stores fcl's
+distance at the nodes of a grid over that rectangle (filled lazily, when a query first needs
+a node) and turns it into a lower bound anywhere by the pair's levers (`JointLevers`): along
+a joint step dq the distance changes by at most ``|dq| @ lever``, so with g a grid node
+
+    d(q) >= d(g) - sum_j lever_j * |q_j - g_j|,
+
+and the bound at q is the best of the corners of its grid cell. The grid step of joint j is
+at most ``tol / (k * lever_j)`` (k: the pair's joint count): with c the nearest corner,
+d(c) >= d(q) - lever @ |q - c|, so the bound is at most ``2 * lever @ |q - c| <= tol`` below
+the exact distance. Outside the joint limits the nearest cell's corners are used (still
+valid, looser).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from itertools import product
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import InputError
+
+FloatArray = NDArray[np.float64]
+# Most nodes along one joint: a step below range / MAX_NODES would make a huge, sparse table.
+MAX_NODES = 4096
+
+
+class PairTable:
+    """Lazily filled grid of a pair's exact distance [m] over its joints, read as a lower bound.
+
+    joints (k,) indices into q (k = 1 or 2); lower/upper (k,) [rad] the grid's range (the
+    joint limits); lever (k,) [m/rad] the pair's lever per joint; tol [m]: the grid step
+    makes the bound at most tol below the exact distance within the range.
+    distance(q_nodes (M, dof)) -> (M,) [m] gives the exact distance (0 when touching) at node
+    configurations (joints outside `joints` are 0 there; the distance does not depend on them).
+    """
+
+    def __init__(
+        self,
+        joints: NDArray[np.int64],
+        lower: FloatArray,
+        upper: FloatArray,
+        lever: FloatArray,
+        dof: int,
+        distance: Callable[[FloatArray], FloatArray],
+        *,
+        tol: float = 0.006,
+    ) -> None:
+        self.joints = np.asarray(joints, np.int64).reshape(-1)
+        k = len(self.joints)
+        if k not in (1, 2):
+            raise InputError(f"joints: a pair table covers 1 or 2 joints, got {k}")
+        if not tol > 0:
+            raise InputError(f"tol: {tol} m must be > 0")
+        self.lower = np.asarray(lower, float).reshape(k)
+        upper = np.asarray(upper, float).reshape(k)
+        self.lever = np.asarray(lever, float).reshape(k)
+        if np.any(upper <= self.lower) or np.any(self.lever <= 0):
+            raise InputError("lower/upper/lever: need lower < upper and levers > 0 per joint")
+        span = upper - self.lower
+        step = tol / (k * self.lever)
+        self.count = np.minimum(np.ceil(span / step).astype(np.int64), MAX_NODES - 1) + 1
+        self.step = span / (self.count - 1)
+        self.dof = int(dof)
+        self._distance = distance
+        self.values = np.full(tuple(self.count), np.nan)
+        self.filled = 0  # nodes computed with fcl so far
+
+    def _nodes_q(self, idx: NDArray[np.int64]) -> FloatArray:
+        q = np.zeros((len(idx), self.dof))
+        q[:, self.joints] = self.lower + idx * self.step
+        return q
+
+    def bound(self, qs: FloatArray) -> FloatArray:
+        """Return lower bounds (N,) [m] of the pair's distance at qs (N, dof) [rad]."""
+        qj = np.asarray(qs, float)[:, self.joints]  # (N, k)
+        k = len(self.joints)
+        cell = np.clip(np.floor((qj - self.lower) / self.step), 0, self.count - 2).astype(np.int64)
+        offsets = np.array(list(product((0, 1), repeat=k)), np.int64)  # (C, k)
+        corners = cell[:, None, :] + offsets[None]  # (N, C, k)
+        flat = np.ravel_multi_index(tuple(corners.reshape(-1, k).T), tuple(self.count))
+        vals = self.values.reshape(-1)
+        need = np.unique(flat[np.isnan(vals[flat])])
+        if need.size:
+            idx = np.stack(np.unravel_index(need, tuple(self.count)), axis=1)
+            vals[need] = np.asarray(self._distance(self._nodes_q(idx)), float)
+            self.filled += int(need.size)
+        g = self.lower + corners * self.step  # (N, C, k) node joint values
+        lo = vals[flat].reshape(len(qj), -1) - np.abs(qj[:, None, :] - g) @ self.lever
+        return lo.max(axis=1)
+
+
+def pair_joints(frame_a: int, frame_b: int | None) -> NDArray[np.int64]:
+    """Return the joint indices (0-based) a pair's distance depends on.
+
+    frame_b None: body of frame_a against the fixed cell (joints 1..frame_a); else a self
+    pair (joints min+1..max).
+    """
+    if frame_b is None:
+        return np.arange(0, frame_a, dtype=np.int64)
+    lo, hi = sorted((frame_a, frame_b))
+    return np.arange(lo, hi, dtype=np.int64)
