@@ -20,6 +20,7 @@ segment between samples (0 for a path that is linear between samples).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Literal
@@ -337,7 +338,7 @@ class CollisionEngine:
                 limits[joints, 1],
                 lever,
                 self.dof,
-                lambda qn, pair=(a, b): self._node_distances(pair, qn),
+                functools.partial(self._node_distances, (a, b)),
                 tol=TABLE_TOL,
             )
         pairs = list(self.pair_lever)
