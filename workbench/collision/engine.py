@@ -33,7 +33,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.collision.fcl_checker import CollisionReport
 from workbench.collision.motion_bound import JointLevers
 from workbench.collision.pair_table import PairTable, pair_joints
-from workbench.collision.path_check import PathCertifier
+from workbench.collision.path_check import AccelerationBound, PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
 from workbench.errors import InputError
 from workbench.geometry.lbvh import LBVH
@@ -722,7 +722,7 @@ class CollisionEngine:
         *,
         deviation: ArrayLike | None = None,
         sampler: Callable[[FloatArray], FloatArray] | None = None,
-        acceleration: ArrayLike | None = None,
+        acceleration: ArrayLike | AccelerationBound | None = None,
         max_depth: int = 12,
         budget: int = 5000,
         progress: Progress | None = None,
@@ -732,7 +732,8 @@ class CollisionEngine:
         times (N,) [s] (default 0, 1, 2, ...). Between samples the motion is either the
         straight joint segment, or within deviation (dof,) [rad] of it, or (with `sampler`,
         times -> (M, dof) [rad], the real motion) within ``acceleration * h**2 / 8`` of it,
-        acceleration (dof,) [rad/s^2] bounding |q''|. Intervals that cannot be certified are
+        acceleration (dof,) [rad/s^2] bounding |q''| (or a function (t0, t1) -> (M, dof)
+        bounding it on each interval [t0, t1]). Intervals that cannot be certified are
         bisected up to `max_depth` times (at most `budget` configurations in all). All
         samples go through the fast items at once; what they flag is confirmed exactly, pair
         by pair, so `colliding_indices` equals the dense exact check of every sample.
@@ -744,8 +745,12 @@ class CollisionEngine:
         if t.shape != (n,) or not np.all(np.isfinite(t)):
             raise InputError(f"times: expected {n} finite values [s], got shape {t.shape}")
         dev = np.zeros(self.dof) if deviation is None else np.abs(np.asarray(deviation, float))
-        acc = None if acceleration is None else np.abs(np.asarray(acceleration, float))
-        if dev.shape != (self.dof,) or (acc is not None and acc.shape != (self.dof,)):
+        acc: FloatArray | AccelerationBound | None = None
+        if callable(acceleration):
+            acc = acceleration
+        elif acceleration is not None:
+            acc = np.abs(np.asarray(acceleration, float))
+        if dev.shape != (self.dof,) or (isinstance(acc, np.ndarray) and acc.shape != (self.dof,)):
             raise InputError(f"deviation/acceleration: expected {self.dof} values per joint")
         if sampler is not None and acc is None:
             raise InputError("acceleration: a sampler needs the bound on |q''| [rad/s^2]")
