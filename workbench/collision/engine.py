@@ -46,6 +46,9 @@ MODES: tuple[str, ...] = ("exact", "spheres", "capsules")
 Progress = Callable[[float, str], None]
 # Grid step of the pair tables: their bound is at most TABLE_TOL [m] below fcl's distance.
 TABLE_TOL = 0.006
+# Self pairs whose bounding spheres are farther apart than this [m] skip their sphere pairs
+# in path checks (the bound between bounding spheres is their items' clearance).
+FAR_PAIR = 0.1
 # A lower bound that says nothing [m] (finite, so chord bounds stay free of inf - inf).
 NO_BOUND = -1e9
 
@@ -481,7 +484,11 @@ class CollisionEngine:
         c = np.matmul(T, self._pad_h).swapaxes(-1, -2)  # (N, B, K, 3)
         return c.reshape(len(c), -1, 3)[:, self._slot]
 
-    def _sphere_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+    def _sphere_items(
+        self, qs: FloatArray, *, far: float | None = None
+    ) -> tuple[FloatArray, FloatArray]:
+        """Sphere items; with `far` [m], self pairs whose bodies' bounding spheres are more than
+        `far` apart get that (smaller, still valid) gap for all their sphere pairs."""
         c = self.sphere_centres(qs)
         n = len(c)
         cols, levers = [], []
@@ -491,19 +498,62 @@ class CollisionEngine:
             cols.append(d - self.radii[self.cell_spheres] - self.sdf.max_error)
             levers.append(self.sphere_lever[self.cell_spheres])
         if self.pair_a.size:
-            gap = np.linalg.norm(c[:, self.pair_a] - c[:, self.pair_b], axis=2)
-            cols.append(gap - self.radii[self.pair_a] - self.radii[self.pair_b])
-            levers.append(
-                self._relative(
+            if far is None:
+                gap = np.linalg.norm(c[:, self.pair_a] - c[:, self.pair_b], axis=2)
+                cols.append(gap - self.radii[self.pair_a] - self.radii[self.pair_b])
+            else:
+                cols.append(self._far_pair_gaps(c, far))
+            if not hasattr(self, "_pair_levers"):
+                self._pair_levers = self._relative(
                     self.sphere_body[self.pair_a],
                     self.sphere_body[self.pair_b],
                     self.sphere_lever[self.pair_a],
                     self.sphere_lever[self.pair_b],
                 )
-            )
+            levers.append(self._pair_levers)
         if not cols:
             return np.full((n, 1), np.inf), np.zeros((1, self.dof))
         return np.concatenate(cols, axis=1) - self.margin, np.concatenate(levers)
+
+    def _far_pair_gaps(self, c: FloatArray, far: float) -> FloatArray:
+        """Return sphere-pair gaps (N, pairs) [m]: exact where the bodies are near, else a bound.
+
+        Every sphere of a body lies in the body's bounding sphere (centre: the mean of its
+        sphere centres, which a rigid motion carries along; radius: the farthest sphere's
+        reach), so |cb_a - cb_b| - R_a - R_b bounds every sphere pair's gap from below.
+        """
+        if not hasattr(self, "_bound_r"):
+            nb = len(self.body_names)
+            self._own = [np.flatnonzero(self.sphere_body == b) for b in range(nb)]
+            r = np.zeros(nb)
+            for b, own in enumerate(self._own):
+                if own.size:
+                    mid = self.centres[own].mean(axis=0)
+                    r[b] = float(
+                        np.max(np.linalg.norm(self.centres[own] - mid, axis=1) + self.radii[own])
+                    )
+            self._bound_r = r
+            blocks, start = [], 0
+            for a, b in self.self_pairs:
+                ia, ib = self._body_index[a], self._body_index[b]
+                size = len(self._own[ia]) * len(self._own[ib])
+                blocks.append((start, start + size, ia, ib))
+                start += size
+            self._blocks = blocks
+        mid = {b: c[:, own].mean(axis=1) for b, own in enumerate(self._own) if own.size}
+        out = np.empty((len(c), len(self.pair_a)))
+        for s0, s1, ia, ib in self._blocks:
+            bound = (
+                np.linalg.norm(mid[ia] - mid[ib], axis=1) - self._bound_r[ia] - self._bound_r[ib]
+            )
+            near = np.flatnonzero(bound <= far)
+            out[:, s0:s1] = bound[:, None]
+            if near.size:
+                pa, pb = self.pair_a[s0:s1], self.pair_b[s0:s1]
+                cn = c[near]
+                gap = np.linalg.norm(cn[:, pa] - cn[:, pb], axis=2)
+                out[near, s0:s1] = gap - self.radii[pa] - self.radii[pb]
+        return out
 
     def _capsule_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
         from workbench.geometry.distance import capsule_rectangle_distance, segment_segment_distance
@@ -658,6 +708,10 @@ class CollisionEngine:
         if self.mode == "exact":
             lev = np.stack([self.pair_lever[p] for p in self.exact.scene.pairs])
             return np.full((len(qs), len(lev)), -1.0), lev  # flagged: every pair to fcl
+        if self.mode == "spheres":
+            # Far self pairs by their bodies' bounding spheres: the certifier needs a valid
+            # bound, and one above FAR_PAIR seldom limits an interval.
+            return self._sphere_items(qs, far=FAR_PAIR)
         return self.items(qs)
 
     def poses(self, qs: FloatArray) -> FloatArray:

@@ -378,7 +378,8 @@ class PathCertifier:
 
         Every interval's group bound is valid. The smallest is settled with fcl distances of
         its group's pairs at the interval's ends; those become anchors, whose lever bounds
-        then raise that group's bound on every interval (the larger bound is kept). Stops when
+        then raise that group's bound on every interval (the larger bound is kept); pairs whose
+        box-gap bound on that interval is above the others' fcl bound are not asked. Stops when
         the smallest bound left is fcl's, or after `REFINE` rounds.
         """
         B = np.array([c[1] for c in cert])
@@ -387,22 +388,36 @@ class PathCertifier:
         qb = np.array([c[0][1].q for c in cert])
         dq = np.array([c[3] for c in cert])
         dev = np.array([c[4] for c in cert])
+        ga = np.array([c[0][0].gaps for c in cert])
+        gb = np.array([c[0][1].gaps for c in cert])
         best = np.inf  # the smallest fcl-settled bound so far: rows above it cannot matter
         for _ in range(REFINE):
             k, g = np.unravel_index(int(np.argmin(B)), B.shape)
             if tight[k, g] or not np.isfinite(B[k, g]):
                 break
             w = cert[k][0]
-            rows = np.flatnonzero(B[:, g] < best)
+            rows = np.flatnonzero((B[:, g] < best) | (np.arange(len(B)) == k))
+            kr = int(np.searchsorted(rows, k))
+            cols = self.group_cols[g]
+            # Box-gap bounds of the group's pairs on these rows: a pair whose gap bound on
+            # row k is above the group's fcl bound there cannot be its least; no fcl for it.
+            L = self.plev[cols]
+            gap_lo = _chord_bound(ga[rows][:, cols], gb[rows][:, cols], dq[rows] @ L.T)
+            gap_lo = gap_lo - dev[rows] @ L.T
             lo = np.full(len(rows), np.inf)
-            for pair in self.o.group_pairs[g]:
+            for c in np.argsort(gap_lo[kr], kind="stable"):
+                if gap_lo[kr, c] >= lo[kr]:
+                    lo = np.minimum(lo, gap_lo[:, c])
+                    continue
+                pair = self.pairs[cols[c]]
                 # The interval's ends as anchors (every anchor gives a valid bound).
                 anchor_q = np.stack([w[0].q, w[1].q])
                 anchor_d = np.array([self._lower(w[0], pair, 2), self._lower(w[1], pair, 2)])
-                L = self.o.pair_lever[pair]
-                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ L, axis=1)
-                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ L, axis=1)
-                lo = np.minimum(lo, _chord_bound(da, db, dq[rows] @ L) - dev[rows] @ L)
+                Lp = L[c]
+                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ Lp, axis=1)
+                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ Lp, axis=1)
+                pair_lo = _chord_bound(da, db, dq[rows] @ Lp) - dev[rows] @ Lp
+                lo = np.minimum(lo, np.maximum(pair_lo, gap_lo[:, c]))
             B[rows, g] = np.maximum(B[rows, g], lo)
             tight[k, g] = True
             best = min(best, float(B[k, g]))
