@@ -534,8 +534,8 @@ class CollisionEngine:
                     )
             self._bound_r = r
             blocks, start = [], 0
-            for a, b in self.self_pairs:
-                ia, ib = self._body_index[a], self._body_index[b]
+            for na, nb_ in self.self_pairs:
+                ia, ib = self._body_index[na], self._body_index[nb_]
                 size = len(self._own[ia]) * len(self._own[ib])
                 blocks.append((start, start + size, ia, ib))
                 start += size
