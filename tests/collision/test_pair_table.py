@@ -107,6 +107,12 @@ def test_table_fills_lazily_and_reuses_nodes() -> None:
     assert 0 < first < table.count[0]
     table.bound(q)
     assert table.filled == first and len(calls) == 1  # nothing recomputed
+    # More new nodes than allowed: no information and nothing filled.
+    far = np.zeros((2, 3))
+    far[:, 1] = [0.9, -0.9]
+    assert np.all(table.bound(far, max_new=1) == -np.inf)
+    assert table.filled == first and len(calls) == 1
+    assert np.all(np.isfinite(table.bound(far, max_new=4)))
 
 
 def test_bad_table_input() -> None:

@@ -374,7 +374,10 @@ class CollisionEngine:
         for col, table in self._table_cols:
             rows = np.flatnonzero(mask[:, col])
             if rows.size:
-                out[rows, col] = table.bound(qs[rows]) - self.margin
+                # A table that would need more new nodes (fcl distances) than the queries it
+                # answers costs more than they do: it says nothing this time (not filled).
+                b = table.bound(qs[rows], max_new=rows.size)
+                out[rows, col] = np.maximum(b - self.margin, NO_BOUND)
         return out
 
     # -- geometry ---------------------------------------------------------------------

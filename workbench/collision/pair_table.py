@@ -79,8 +79,12 @@ class PairTable:
         q[:, self.joints] = self.lower + idx * self.step
         return q
 
-    def bound(self, qs: FloatArray) -> FloatArray:
-        """Return lower bounds (N,) [m] of the pair's distance at qs (N, dof) [rad]."""
+    def bound(self, qs: FloatArray, *, max_new: int | None = None) -> FloatArray:
+        """Return lower bounds (N,) [m] of the pair's distance at qs (N, dof) [rad].
+
+        max_new: when the queries need more new nodes than this, none are computed and every
+        bound is -inf (no information): the caller's own exact distances are then cheaper.
+        """
         qj = np.asarray(qs, float)[:, self.joints]  # (N, k)
         k = len(self.joints)
         cell = np.clip(np.floor((qj - self.lower) / self.step), 0, self.count - 2).astype(np.int64)
@@ -89,6 +93,8 @@ class PairTable:
         flat = np.ravel_multi_index(tuple(corners.reshape(-1, k).T), tuple(self.count))
         vals = self.values.reshape(-1)
         need = np.unique(flat[np.isnan(vals[flat])])
+        if max_new is not None and need.size > max_new:
+            return np.full(len(qj), -np.inf)
         if need.size:
             idx = np.stack(np.unravel_index(need, tuple(self.count)), axis=1)
             vals[need] = np.asarray(self._distance(self._nodes_q(idx)), float)
