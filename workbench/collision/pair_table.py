@@ -11,17 +11,16 @@ a joint step dq the distance changes by at most ``|dq| @ lever``, so with g a gr
 
     d(q) >= d(g) - sum_j lever_j * |q_j - g_j|,
 
-and the bound at q is the best of the corners of its grid cell. The grid step of joint j is
-at most ``tol / (k * lever_j)`` (k: the pair's joint count): with c the nearest corner,
-d(c) >= d(q) - lever @ |q - c|, so the bound is at most ``2 * lever @ |q - c| <= tol`` below
-the exact distance. Outside the joint limits the nearest cell's corners are used (still
+and the bound at q uses the nearest node g. The grid step of joint j is at most
+``tol / (k * lever_j)`` (k: the pair's joint count), so |q_j - g_j| <= step_j / 2 and, since
+d(g) >= d(q) - lever @ |q - g| too, the bound is at most ``2 * lever @ |q - g| <= tol`` below
+the exact distance. Outside the joint limits the nearest node on the border is used (still
 valid, looser).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from itertools import product
 
 import numpy as np
 from numpy.typing import NDArray
@@ -86,11 +85,10 @@ class PairTable:
         bound is -inf (no information): the caller's own exact distances are then cheaper.
         """
         qj = np.asarray(qs, float)[:, self.joints]  # (N, k)
-        k = len(self.joints)
-        cell = np.clip(np.floor((qj - self.lower) / self.step), 0, self.count - 2).astype(np.int64)
-        offsets = np.array(list(product((0, 1), repeat=k)), np.int64)  # (C, k)
-        corners = cell[:, None, :] + offsets[None]  # (N, C, k)
-        flat = np.ravel_multi_index(tuple(corners.reshape(-1, k).T), tuple(self.count))
+        # The nearest node only: one node per query (the corners of the cell would give a
+        # slightly tighter bound for up to 2^k nodes each, where paths seldom share them).
+        node = np.clip(np.rint((qj - self.lower) / self.step), 0, self.count - 1).astype(np.int64)
+        flat = np.ravel_multi_index(tuple(node.T), tuple(self.count))
         vals = self.values.reshape(-1)
         need = np.unique(flat[np.isnan(vals[flat])])
         if max_new is not None and need.size > max_new:
@@ -99,9 +97,8 @@ class PairTable:
             idx = np.stack(np.unravel_index(need, tuple(self.count)), axis=1)
             vals[need] = np.asarray(self._distance(self._nodes_q(idx)), float)
             self.filled += int(need.size)
-        g = self.lower + corners * self.step  # (N, C, k) node joint values
-        lo = vals[flat].reshape(len(qj), -1) - np.abs(qj[:, None, :] - g) @ self.lever
-        return lo.max(axis=1)
+        g = self.lower + node * self.step  # (N, k) node joint values
+        return vals[flat] - np.abs(qj - g) @ self.lever
 
 
 def pair_joints(frame_a: int, frame_b: int | None) -> NDArray[np.int64]:
