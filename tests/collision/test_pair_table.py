@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -122,3 +124,38 @@ def test_bad_table_input() -> None:
         PairTable(np.array([0]), np.zeros(1), np.ones(1), np.zeros(1), 6, lambda q: q[:, 0])
     with pytest.raises(InputError, match="tol"):
         PairTable(np.array([0]), np.zeros(1), np.ones(1), np.ones(1), 6, lambda q: q[:, 0], tol=0.0)
+
+
+def test_tables_are_cached_on_disk(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """A new engine on the same cell loads the nodes a path check computed; bounds agree."""
+    wb = Workbench.from_dict(PROJECT)
+    cache = str(tmp_path_factory.mktemp("tables"))
+    first = CollisionEngine(
+        wb.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache
+    )
+    rng = np.random.default_rng(11)
+    lim = wb.robot.limits
+    q = np.clip(
+        rng.uniform(-0.3, 0.3, 6) + np.linspace(0, 1, 40)[:, None] * rng.normal(0, 0.4, 6),
+        lim[:, 0],
+        lim[:, 1],
+    )
+    table = first.pair_tables[("link4", "tool")]
+    b1 = table.bound(q)
+    assert table.filled > 0
+    first.save_tables()
+    files = list(Path(cache).glob("table-*.npz"))
+    assert files
+    again = CollisionEngine(
+        wb.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache
+    )
+    t2 = again.pair_tables[("link4", "tool")]
+    b2 = t2.bound(q)
+    assert t2.filled == 0  # every node came from the file
+    assert np.array_equal(b1, b2)
+    # Another tool is another table (the digest covers the meshes and poses).
+    other = dict(PROJECT, tool={"tcp": {"xyz": [0, 0, 200]}, "size": [60, 80, 170]})
+    wb2 = Workbench.from_dict(other)
+    e3 = CollisionEngine(wb2.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache)
+    e3.pair_tables[("link4", "tool")].bound(q)
+    assert e3.pair_tables[("link4", "tool")].filled > 0

@@ -21,8 +21,10 @@ segment between samples (0 for a path that is linear between samples).
 from __future__ import annotations
 
 import functools
+import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Literal
 
 import fcl
@@ -240,7 +242,7 @@ class CollisionEngine:
         self._body_index = idx
         self._pending = np.zeros((0, 4, 4))
         self._placed: set[str] = set()
-        self._tables(idx, np.asarray(robot.limits, float))
+        self._tables(idx, np.asarray(robot.limits, float), cache_dir)
         report(1.0, "collision engine ready")
 
     def _groups(self, idx: dict[str, int]) -> None:
@@ -318,11 +320,14 @@ class CollisionEngine:
             for a, b in scene.pairs
         }
 
-    def _tables(self, idx: dict[str, int], limits: FloatArray) -> None:
+    def _tables(self, idx: dict[str, int], limits: FloatArray, cache_dir: str | None) -> None:
         """Set a `PairTable` for every exact pair whose distance depends on one or two joints.
 
         The fast modes only (the exact mode stays the plain fcl reference). Tables fill lazily
-        and are kept with the engine, so later paths reuse the nodes computed so far.
+        and are kept with the engine, so later paths reuse the nodes computed so far; with
+        `cache_dir` also on disk (``table-<sha256>.npz``, digest of both meshes, the bodies'
+        poses at probe configurations (kinematics, base, tool), the grid and the margin-free
+        distance definition), written after each path check that computed new nodes.
         """
         self.pair_tables: dict[tuple[str, str], PairTable] = {}
         self._table_cols: list[tuple[int, PairTable]] = []
@@ -335,7 +340,7 @@ class CollisionEngine:
             lever = self.pair_lever[(a, b)][joints]
             if not 1 <= len(joints) <= 2 or not np.all(lever > 0):
                 continue
-            self.pair_tables[(a, b)] = PairTable(
+            table = PairTable(
                 joints,
                 limits[joints, 0],
                 limits[joints, 1],
@@ -344,8 +349,33 @@ class CollisionEngine:
                 functools.partial(self._node_distances, (a, b)),
                 tol=TABLE_TOL,
             )
+            if cache_dir is not None:
+                table.attach(Path(cache_dir) / f"table-{self._table_digest((a, b), table)}.npz")
+            self.pair_tables[(a, b)] = table
         pairs = list(self.pair_lever)
         self._table_cols = [(pairs.index(p), t) for p, t in self.pair_tables.items()]
+
+    def _table_digest(self, pair: tuple[str, str], table: PairTable) -> str:
+        """Return a digest of everything a pair table's values depend on."""
+        scene = self.exact.scene
+        h = hashlib.sha256(b"pair-table-1")
+        probes = np.random.default_rng(0).uniform(-1.0, 1.0, (3, self.dof))
+        T = self.body_poses(probes)
+        for name in pair:
+            e = scene._entry(name)
+            h.update(np.asarray(e.mesh.vertices, float).tobytes())
+            h.update(np.asarray(e.mesh.faces, np.int64).tobytes())
+            h.update(str(e.solid.kind).encode())
+            pose = T[:, self._body_index[name]] if name in self._body_index else e.T
+            h.update(np.ascontiguousarray(pose, float).tobytes())
+        for arr in (table.joints, table.lower, table.step, table.count):
+            h.update(np.ascontiguousarray(arr).tobytes())
+        return h.hexdigest()[:24]
+
+    def save_tables(self) -> None:
+        """Write the pair tables that gained nodes to their cache files (if any)."""
+        for table in self.pair_tables.values():
+            table.save()
 
     def _node_distances(self, pair: tuple[str, str], qs: FloatArray) -> FloatArray:
         """Return the pair's exact distance [m] at qs (M, dof): 0 when touching or held."""
@@ -821,6 +851,7 @@ class CollisionEngine:
             budget=budget,
             progress=progress,
         )
+        self.save_tables()
         hits = sorted(out.sample_hits)
         between = sorted({e[1] for e in out.events})
         base: dict[str, Any] = {

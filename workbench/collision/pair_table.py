@@ -21,6 +21,7 @@ valid, looser).
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
@@ -72,6 +73,35 @@ class PairTable:
         self._distance = distance
         self.values = np.full(tuple(self.count), np.nan)
         self.filled = 0  # nodes computed with fcl so far
+        self.path: Path | None = None
+        self._saved = 0
+
+    def attach(self, path: Path) -> None:
+        """Keep the table's nodes in the file `path` (.npz): load what is there, `save` later.
+
+        The caller names the file by a digest of everything the distances depend on (meshes,
+        kinematics, grid); a file of another grid shape is ignored.
+        """
+        self.path = path
+        if path.exists():
+            try:
+                with np.load(path) as d:
+                    values = np.asarray(d["values"], float)
+            except (OSError, ValueError, KeyError):
+                return  # a damaged entry: computed again and overwritten
+            if values.shape == self.values.shape:
+                self.values = np.where(np.isnan(self.values), values, self.values)
+                self._saved = self.filled
+
+    def save(self) -> None:
+        """Write the nodes to the attached file when new ones were computed (atomic)."""
+        if self.path is None or self.filled == self._saved:
+            return
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = self.path.with_suffix(".tmp.npz")
+        np.savez(tmp, values=self.values)
+        tmp.replace(self.path)  # a crash mid-write never leaves a broken entry
+        self._saved = self.filled
 
     def _nodes_q(self, idx: NDArray[np.int64]) -> FloatArray:
         q = np.zeros((len(idx), self.dof))
