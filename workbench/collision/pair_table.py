@@ -20,6 +20,7 @@ valid, looser).
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -98,7 +99,7 @@ class PairTable:
         if self.path is None or self.filled == self._saved:
             return
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = self.path.with_suffix(".tmp.npz")
+        tmp = self.path.with_suffix(f".tmp{os.getpid()}.npz")  # one per writing process
         np.savez(tmp, values=self.values)
         tmp.replace(self.path)  # a crash mid-write never leaves a broken entry
         self._saved = self.filled
