@@ -461,8 +461,15 @@ class CollisionEngine:
             raise InputError(
                 f"q: expected finite joints of shape (N, {self.dof}) [rad], got {q.shape}"
             )
-        T = self.T_world_base @ self.exact.robot.link_transforms(q)
-        return T[:, self.body_frame]
+        # The path certifier asks for the same configurations' poses several times in a row
+        # (items, containment, bounding boxes): the last answer is kept, read-only.
+        last = getattr(self, "_last_poses", None)
+        if last is not None and last[0].shape == q.shape and np.array_equal(last[0], q):
+            return last[1]
+        T = (self.T_world_base @ self.exact.robot.link_transforms(q))[:, self.body_frame]
+        T.flags.writeable = False
+        self._last_poses = (q.copy(), T)
+        return T
 
     def spheres(self, q: ArrayLike) -> tuple[FloatArray, FloatArray, list[str]]:
         """Return world sphere centres (S,3) [m], radii (S,) [m] and each sphere's body name."""
