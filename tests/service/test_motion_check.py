@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from workbench.motion.validation import acceleration_bound
+from workbench.motion.validation import acceleration_bound, interval_acceleration_bound
 from workbench.service import Workbench
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -95,3 +95,26 @@ def test_acceleration_bound_is_the_trajectory_peak(
     peak = np.abs(acc).max(axis=0)
     assert np.all(peak <= bound + 1e-9)
     assert np.all(bound - peak <= np.abs(traj.piece_j).max(axis=1) * 1e-4 + 1e-9)
+
+
+def test_interval_acceleration_bound_holds_on_every_interval(
+    cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Twin: accelerations sampled every 0.1 ms within each interval stay below its bound."""
+    monkeypatch.setenv("WORKBENCH_CACHE", str(cache))
+    wb = Workbench.open(EXAMPLE)
+    traj = wb.plan_motion().trajectory
+    ts, _, _, acc = traj.sample(1e-4)
+    rng = np.random.default_rng(3)
+    t0 = rng.uniform(0.0, traj.duration, 400)
+    t1 = np.minimum(t0 + rng.uniform(0.0, 0.3, 400), traj.duration)
+    t0[:5], t1[:5] = 0.0, traj.duration  # whole trajectory: the global bound
+    bound = interval_acceleration_bound(traj)(t0, t1)
+    for k in range(len(t0)):
+        inside = (ts >= t0[k]) & (ts <= t1[k])
+        if inside.any():
+            assert np.all(np.abs(acc[inside]).max(axis=0) <= bound[k] + 1e-9), k
+    assert np.allclose(bound[:5], acceleration_bound(traj))
+    # Not vacuous: far below the whole trajectory's bound on most short intervals.
+    short = (t1 - t0) < 0.05
+    assert np.median(bound[short].sum(axis=1) / acceleration_bound(traj).sum()) < 0.9

@@ -20,8 +20,11 @@ segment between samples (0 for a path that is linear between samples).
 
 from __future__ import annotations
 
+import functools
+import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Literal
 
 import fcl
@@ -31,7 +34,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.fcl_checker import CollisionReport
 from workbench.collision.motion_bound import JointLevers
-from workbench.collision.path_check import PathCertifier
+from workbench.collision.pair_table import PairTable, pair_joints
+from workbench.collision.path_check import AccelerationBound, PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
 from workbench.errors import InputError
 from workbench.geometry.lbvh import LBVH
@@ -42,6 +46,13 @@ FloatArray = NDArray[np.float64]
 Mode = Literal["exact", "spheres", "capsules"]
 MODES: tuple[str, ...] = ("exact", "spheres", "capsules")
 Progress = Callable[[float, str], None]
+# Grid step of the pair tables: their bound is at most TABLE_TOL [m] below fcl's distance.
+TABLE_TOL = 0.006
+# Self pairs whose bounding spheres are farther apart than this [m] skip their sphere pairs
+# in path checks (the bound between bounding spheres is their items' clearance).
+FAR_PAIR = 0.1
+# A lower bound that says nothing [m] (finite, so chord bounds stay free of inf - inf).
+NO_BOUND = -1e9
 
 
 @dataclass(frozen=True)
@@ -231,6 +242,7 @@ class CollisionEngine:
         self._body_index = idx
         self._pending = np.zeros((0, 4, 4))
         self._placed: set[str] = set()
+        self._tables(idx, np.asarray(robot.limits, float), cache_dir)
         report(1.0, "collision engine ready")
 
     def _groups(self, idx: dict[str, int]) -> None:
@@ -308,6 +320,96 @@ class CollisionEngine:
             for a, b in scene.pairs
         }
 
+    def _tables(self, idx: dict[str, int], limits: FloatArray, cache_dir: str | None) -> None:
+        """Set a `PairTable` for every exact pair whose distance depends on one or two joints.
+
+        The fast modes only (the exact mode stays the plain fcl reference). Tables fill lazily
+        and are kept with the engine, so later paths reuse the nodes computed so far; with
+        `cache_dir` also on disk (``table-<sha256>.npz``, digest of both meshes, the bodies'
+        poses at probe configurations (kinematics, base, tool), the grid and the margin-free
+        distance definition), written after each path check that computed new nodes.
+        """
+        self.pair_tables: dict[tuple[str, str], PairTable] = {}
+        self._table_cols: list[tuple[int, PairTable]] = []
+        if self.mode == "exact":
+            return
+        for a, b in self.exact.scene.pairs:
+            fa = int(self.body_frame[idx[a]])
+            fb = int(self.body_frame[idx[b]]) if b in idx else None
+            joints = pair_joints(fa, fb)
+            lever = self.pair_lever[(a, b)][joints]
+            if not 1 <= len(joints) <= 2 or not np.all(lever > 0):
+                continue
+            table = PairTable(
+                joints,
+                limits[joints, 0],
+                limits[joints, 1],
+                lever,
+                self.dof,
+                functools.partial(self._node_distances, (a, b)),
+                tol=TABLE_TOL,
+            )
+            if cache_dir is not None:
+                table.attach(Path(cache_dir) / f"table-{self._table_digest((a, b), table)}.npz")
+            self.pair_tables[(a, b)] = table
+        pairs = list(self.pair_lever)
+        self._table_cols = [(pairs.index(p), t) for p, t in self.pair_tables.items()]
+
+    def _table_digest(self, pair: tuple[str, str], table: PairTable) -> str:
+        """Return a digest of everything a pair table's values depend on."""
+        scene = self.exact.scene
+        h = hashlib.sha256(b"pair-table-1")
+        probes = np.random.default_rng(0).uniform(-1.0, 1.0, (3, self.dof))
+        T = self.body_poses(probes)
+        for name in pair:
+            e = scene._entry(name)
+            h.update(np.asarray(e.mesh.vertices, float).tobytes())
+            h.update(np.asarray(e.mesh.faces, np.int64).tobytes())
+            h.update(str(e.solid.kind).encode())
+            pose = T[:, self._body_index[name]] if name in self._body_index else e.T
+            h.update(np.ascontiguousarray(pose, float).tobytes())
+        for arr in (table.joints, table.lower, table.step, table.count):
+            h.update(np.ascontiguousarray(arr).tobytes())
+        return h.hexdigest()[:24]
+
+    def save_tables(self) -> None:
+        """Write the pair tables that gained nodes to their cache files (if any)."""
+        for table in self.pair_tables.values():
+            table.save()
+
+    def _node_distances(self, pair: tuple[str, str], qs: FloatArray) -> FloatArray:
+        """Return the pair's exact distance [m] at qs (M, dof): 0 when touching or held."""
+        scene = self.exact.scene
+        T = self.body_poses(qs)
+        ia = self._body_index[pair[0]]
+        ib = self._body_index.get(pair[1])
+        out = np.empty(len(qs))
+        for k in range(len(qs)):
+            scene.moving[pair[0]].place(T[k, ia])
+            if ib is not None:
+                scene.moving[pair[1]].place(T[k, ib])
+            out[k] = 0.0 if scene.collides(*pair) else scene.distance(*pair)
+        self._placed = set()  # the path's pending poses must be placed again
+        return out
+
+    def table_bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray:
+        """Return (N, P): pair-table lower bounds [m] of the exact pairs' distances, less the margin.
+
+        qs (N, dof) [rad]; mask (N, P) says which entries are wanted (pairs in `pair_lever`
+        order). Wanted entries of pairs without a table get NO_BOUND (a large negative value:
+        no information); entries not wanted are NaN. Only wanted entries fill table nodes.
+        """
+        out = np.full(mask.shape, np.nan)
+        out[mask] = NO_BOUND
+        for col, table in self._table_cols:
+            rows = np.flatnonzero(mask[:, col])
+            if rows.size:
+                # A table that would need more new nodes (fcl distances) than the queries it
+                # answers costs more than they do: it says nothing this time (not filled).
+                b = table.bound(qs[rows], max_new=rows.size)
+                out[rows, col] = np.maximum(b - self.margin, NO_BOUND)
+        return out
+
     # -- geometry ---------------------------------------------------------------------
     def cell_mesh(self) -> trimesh.Trimesh | None:
         """Return the checked obstacles as one world mesh [m] (None for an empty cell)."""
@@ -359,8 +461,15 @@ class CollisionEngine:
             raise InputError(
                 f"q: expected finite joints of shape (N, {self.dof}) [rad], got {q.shape}"
             )
-        T = self.T_world_base @ self.exact.robot.link_transforms(q)
-        return T[:, self.body_frame]
+        # The path certifier asks for the same configurations' poses several times in a row
+        # (items, containment, bounding boxes): the last answer is kept, read-only.
+        last = getattr(self, "_last_poses", None)
+        if last is not None and last[0].shape == q.shape and np.array_equal(last[0], q):
+            return last[1]
+        T = (self.T_world_base @ self.exact.robot.link_transforms(q))[:, self.body_frame]
+        T.flags.writeable = False
+        self._last_poses = (q.copy(), T)
+        return T
 
     def spheres(self, q: ArrayLike) -> tuple[FloatArray, FloatArray, list[str]]:
         """Return world sphere centres (S,3) [m], radii (S,) [m] and each sphere's body name."""
@@ -415,7 +524,11 @@ class CollisionEngine:
         c = np.matmul(T, self._pad_h).swapaxes(-1, -2)  # (N, B, K, 3)
         return c.reshape(len(c), -1, 3)[:, self._slot]
 
-    def _sphere_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
+    def _sphere_items(
+        self, qs: FloatArray, *, far: float | None = None
+    ) -> tuple[FloatArray, FloatArray]:
+        """Sphere items; with `far` [m], self pairs whose bodies' bounding spheres are more than
+        `far` apart get that (smaller, still valid) gap for all their sphere pairs."""
         c = self.sphere_centres(qs)
         n = len(c)
         cols, levers = [], []
@@ -425,19 +538,62 @@ class CollisionEngine:
             cols.append(d - self.radii[self.cell_spheres] - self.sdf.max_error)
             levers.append(self.sphere_lever[self.cell_spheres])
         if self.pair_a.size:
-            gap = np.linalg.norm(c[:, self.pair_a] - c[:, self.pair_b], axis=2)
-            cols.append(gap - self.radii[self.pair_a] - self.radii[self.pair_b])
-            levers.append(
-                self._relative(
+            if far is None:
+                gap = np.linalg.norm(c[:, self.pair_a] - c[:, self.pair_b], axis=2)
+                cols.append(gap - self.radii[self.pair_a] - self.radii[self.pair_b])
+            else:
+                cols.append(self._far_pair_gaps(c, far))
+            if not hasattr(self, "_pair_levers"):
+                self._pair_levers = self._relative(
                     self.sphere_body[self.pair_a],
                     self.sphere_body[self.pair_b],
                     self.sphere_lever[self.pair_a],
                     self.sphere_lever[self.pair_b],
                 )
-            )
+            levers.append(self._pair_levers)
         if not cols:
             return np.full((n, 1), np.inf), np.zeros((1, self.dof))
         return np.concatenate(cols, axis=1) - self.margin, np.concatenate(levers)
+
+    def _far_pair_gaps(self, c: FloatArray, far: float) -> FloatArray:
+        """Return sphere-pair gaps (N, pairs) [m]: exact where the bodies are near, else a bound.
+
+        Every sphere of a body lies in the body's bounding sphere (centre: the mean of its
+        sphere centres, which a rigid motion carries along; radius: the farthest sphere's
+        reach), so |cb_a - cb_b| - R_a - R_b bounds every sphere pair's gap from below.
+        """
+        if not hasattr(self, "_bound_r"):
+            nb = len(self.body_names)
+            self._own = [np.flatnonzero(self.sphere_body == b) for b in range(nb)]
+            r = np.zeros(nb)
+            for b, own in enumerate(self._own):
+                if own.size:
+                    mid = self.centres[own].mean(axis=0)
+                    r[b] = float(
+                        np.max(np.linalg.norm(self.centres[own] - mid, axis=1) + self.radii[own])
+                    )
+            self._bound_r = r
+            blocks, start = [], 0
+            for na, nb_ in self.self_pairs:
+                ia, ib = self._body_index[na], self._body_index[nb_]
+                size = len(self._own[ia]) * len(self._own[ib])
+                blocks.append((start, start + size, ia, ib))
+                start += size
+            self._blocks = blocks
+        mid = {b: c[:, own].mean(axis=1) for b, own in enumerate(self._own) if own.size}
+        out = np.empty((len(c), len(self.pair_a)))
+        for s0, s1, ia, ib in self._blocks:
+            bound = (
+                np.linalg.norm(mid[ia] - mid[ib], axis=1) - self._bound_r[ia] - self._bound_r[ib]
+            )
+            near = np.flatnonzero(bound <= far)
+            out[:, s0:s1] = bound[:, None]
+            if near.size:
+                pa, pb = self.pair_a[s0:s1], self.pair_b[s0:s1]
+                cn = c[near]
+                gap = np.linalg.norm(cn[:, pa] - cn[:, pb], axis=2)
+                out[near, s0:s1] = gap - self.radii[pa] - self.radii[pb]
+        return out
 
     def _capsule_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
         from workbench.geometry.distance import capsule_rectangle_distance, segment_segment_distance
@@ -592,6 +748,10 @@ class CollisionEngine:
         if self.mode == "exact":
             lev = np.stack([self.pair_lever[p] for p in self.exact.scene.pairs])
             return np.full((len(qs), len(lev)), -1.0), lev  # flagged: every pair to fcl
+        if self.mode == "spheres":
+            # Far self pairs by their bodies' bounding spheres: the certifier needs a valid
+            # bound, and one above FAR_PAIR seldom limits an interval.
+            return self._sphere_items(qs, far=FAR_PAIR)
         return self.items(qs)
 
     def poses(self, qs: FloatArray) -> FloatArray:
@@ -656,7 +816,7 @@ class CollisionEngine:
         *,
         deviation: ArrayLike | None = None,
         sampler: Callable[[FloatArray], FloatArray] | None = None,
-        acceleration: ArrayLike | None = None,
+        acceleration: ArrayLike | AccelerationBound | None = None,
         max_depth: int = 12,
         budget: int = 5000,
         progress: Progress | None = None,
@@ -666,7 +826,8 @@ class CollisionEngine:
         times (N,) [s] (default 0, 1, 2, ...). Between samples the motion is either the
         straight joint segment, or within deviation (dof,) [rad] of it, or (with `sampler`,
         times -> (M, dof) [rad], the real motion) within ``acceleration * h**2 / 8`` of it,
-        acceleration (dof,) [rad/s^2] bounding |q''|. Intervals that cannot be certified are
+        acceleration (dof,) [rad/s^2] bounding |q''| (or a function (t0, t1) -> (M, dof)
+        bounding it on each interval [t0, t1]). Intervals that cannot be certified are
         bisected up to `max_depth` times (at most `budget` configurations in all). All
         samples go through the fast items at once; what they flag is confirmed exactly, pair
         by pair, so `colliding_indices` equals the dense exact check of every sample.
@@ -678,8 +839,12 @@ class CollisionEngine:
         if t.shape != (n,) or not np.all(np.isfinite(t)):
             raise InputError(f"times: expected {n} finite values [s], got shape {t.shape}")
         dev = np.zeros(self.dof) if deviation is None else np.abs(np.asarray(deviation, float))
-        acc = None if acceleration is None else np.abs(np.asarray(acceleration, float))
-        if dev.shape != (self.dof,) or (acc is not None and acc.shape != (self.dof,)):
+        acc: FloatArray | AccelerationBound | None = None
+        if callable(acceleration):
+            acc = acceleration
+        elif acceleration is not None:
+            acc = np.abs(np.asarray(acceleration, float))
+        if dev.shape != (self.dof,) or (isinstance(acc, np.ndarray) and acc.shape != (self.dof,)):
             raise InputError(f"deviation/acceleration: expected {self.dof} values per joint")
         if sampler is not None and acc is None:
             raise InputError("acceleration: a sampler needs the bound on |q''| [rad/s^2]")
@@ -693,6 +858,7 @@ class CollisionEngine:
             budget=budget,
             progress=progress,
         )
+        self.save_tables()
         hits = sorted(out.sample_hits)
         between = sorted({e[1] for e in out.events})
         base: dict[str, Any] = {

@@ -28,6 +28,8 @@ from numpy.typing import NDArray
 FloatArray = NDArray[np.float64]
 Pair = tuple[str, str]
 Sampler = Callable[[FloatArray], FloatArray]
+# (t0 (M,), t1 (M,)) [s] -> (M, dof) [rad/s^2]: a bound of |q''| over each interval.
+AccelerationBound = Callable[[FloatArray, FloatArray], FloatArray]
 # From this bisection depth on, a group whose fast items keep failing is settled with exact
 # distances (one fcl distance per pair) rather than more midpoints.
 PROMOTE_DEPTH = 1
@@ -36,6 +38,8 @@ REFINE = 256
 # An anchor (a configuration with fcl's distance d) serves nearby configurations while its
 # lever bound stays >= RENEW * d.
 RENEW = 0.8
+# A lower bound that says nothing [m] (finite: chord bounds stay free of inf - inf).
+NO_BOUND = -1e9
 
 
 def _chord_bound(a: FloatArray, b: FloatArray, travel: FloatArray) -> FloatArray:
@@ -68,6 +72,8 @@ class PathOracle(Protocol):
 
     def aabb_gaps(self, poses: FloatArray) -> FloatArray: ...
 
+    def table_bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray: ...
+
     def pair_collides(self, pair: Pair) -> bool: ...
 
     def pair_distance(self, pair: Pair) -> float: ...
@@ -77,10 +83,11 @@ class PathOracle(Protocol):
 class _Node:
     t: float
     q: FloatArray
-    clr: FloatArray  # (I,) item clearances [m]
+    clr: FloatArray  # (G,) least item clearance per group [m] (the between-samples items)
     gmin: FloatArray  # (G,) least item clearance per group [m]
     poses: FloatArray  # (B, 4, 4) world poses of the moving bodies
     gaps: FloatArray  # (P,) bounding-box gaps of the exact pairs, less the margin [m]
+    tab: FloatArray  # (P,) pair-table lower bounds, less the margin [m]; NaN: not looked up
     hits: tuple[Pair, ...] = ()
     dist: dict[tuple[Pair, int], float] = field(default_factory=dict)
 
@@ -119,17 +126,27 @@ class PathCertifier:
             self.group_member[g, cols] = 1
 
     def _nodes(self, t: FloatArray, q: FloatArray) -> list[_Node]:
-        clr, self.lev = self.o.path_items(q)
+        clr, lev = self.o.path_items(q)
         gmin = np.minimum.reduceat(clr, self.o.group_start, axis=1)
+        # One item per group between samples: its least clearance with the largest lever of its
+        # items (each item changes by at most |dq| @ its lever, so their minimum by at most
+        # |dq| @ the largest). A little looser than item by item, and (G,) rather than (I,)
+        # columns (about 1000 sphere pairs of the self pairs on the MZ07).
+        self.lev = np.maximum.reduceat(lev, self.o.group_start, axis=0)
         inside = self.o.contained(q)
         T = self.o.poses(q)
         gaps = self.o.aabb_gaps(T)
-        nodes = [_Node(float(t[i]), q[i], clr[i], gmin[i], T[i], gaps[i]) for i in range(len(q))]
         # Exact confirmation of what the fast items could not rule out: the pairs of flagged
-        # groups whose bounding boxes touch (apart boxes cannot touch), and the held pairs.
+        # groups whose bounding boxes touch (apart boxes cannot touch) and whose pair table
+        # (a lower bound of the surfaces' distance) does not keep them apart, and the held pairs.
         flagged = ((gmin <= 0.0).astype(np.int64) @ self.group_member > 0) & ~(
             gaps + self.o.margin > 0.0
         )
+        tab = self.o.table_bounds(q, flagged)
+        flagged &= ~(tab + self.o.margin > 0.0)
+        nodes = [
+            _Node(float(t[i]), q[i], gmin[i], gmin[i], T[i], gaps[i], tab[i]) for i in range(len(q))
+        ]
         for i, j in zip(*np.nonzero(flagged), strict=True):
             node, p = nodes[i], self.pairs[j]
             if self._anchored(node, p) + self.o.margin > 0.0:
@@ -149,6 +166,19 @@ class PathCertifier:
             if self.o.pair_collides(p):
                 node.hits += (p,)
         return nodes
+
+    def _tabs(self, ends: list[_Node], want: NDArray[np.bool_]) -> FloatArray:
+        """Return (W, P) table bounds at the interval ends, looking up the wanted ones not yet known."""
+        tab = np.array([n.tab for n in ends])
+        miss = want & np.isnan(tab)
+        rows = np.flatnonzero(miss.any(axis=1))
+        if rows.size:
+            got = self.o.table_bounds(np.array([ends[k].q for k in rows]), miss[rows])
+            for k, r in enumerate(rows):
+                m = miss[r]
+                ends[r].tab[m] = got[k, m]
+            tab = np.array([n.tab for n in ends])
+        return np.where(np.isnan(tab), NO_BOUND, tab)
 
     def _place(self, node: _Node) -> None:
         if self._placed != id(node):
@@ -198,7 +228,7 @@ class PathCertifier:
         t: FloatArray,
         *,
         sampler: Sampler | None,
-        acceleration: FloatArray | None,
+        acceleration: FloatArray | AccelerationBound | None,
         deviation: FloatArray,
         max_depth: int,
         budget: int,
@@ -208,7 +238,9 @@ class PathCertifier:
 
         sampler(times) -> q gives the real motion at bisection midpoints; with `acceleration`
         (dof,) [rad/s^2] bounding |q''| the deviation from the chord of an interval of length
-        h is ``acceleration * h**2 / 8``. Without a sampler, midpoints lie on the chord and
+        h is ``acceleration * h**2 / 8``; `acceleration` may also be a function
+        (t0, t1) -> (M, dof) bounding |q''| on each interval (tighter where the motion is
+        smooth than one bound for the whole path). Without a sampler, midpoints lie on the chord and
         `deviation` (dof,) [rad] is used for every interval.
         """
         report = progress or (lambda _f, _m: None)
@@ -235,13 +267,16 @@ class PathCertifier:
             b = np.array([w[1].clr for w in work])
             dq = np.array([np.abs(w[1].q - w[0].q) for w in work])
             h = np.array([w[1].t - w[0].t for w in work])
-            if acceleration is not None:
+            if callable(acceleration):
+                t0 = np.array([w[0].t for w in work])
+                acc = np.abs(np.asarray(acceleration(t0, t0 + h), float))
+                dev = acc * (h[:, None] ** 2) / 8.0
+            elif acceleration is not None:
                 dev = acceleration[None] * (h[:, None] ** 2) / 8.0
             else:
                 dev = np.broadcast_to(deviation, dq.shape)
             travel, tube = dq @ lev.T, dev @ lev.T
-            item_lo = _chord_bound(a, b, travel) - tube
-            group_lo = np.minimum.reduceat(item_lo, self.o.group_start, axis=1)
+            group_lo = _chord_bound(a, b, travel) - tube
             group_fail = ~(group_lo > 0.0)
             ga = np.array([w[0].gmin for w in work])
             gb = np.array([w[1].gmin for w in work])
@@ -256,6 +291,13 @@ class PathCertifier:
             # and the interval's fast items pass.
             fast_fail = np.any(group_fail & ~exact, axis=1)
             pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
+            # Pair tables: lower bounds of the distance at both ends, the same chord bound.
+            want = pairs_in & ~(pair_lo > 0.0)
+            ta = self._tabs([w[0] for w in work], want)
+            tb = self._tabs([w[1] for w in work], want)
+            pair_lo = np.where(
+                want, np.maximum(pair_lo, _chord_bound(ta, tb, ptravel) - ptube), pair_lo
+            )
             pb = np.where(pairs_in, pair_lo, np.inf)
             failed: set[int] = set()
             for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
@@ -336,7 +378,8 @@ class PathCertifier:
 
         Every interval's group bound is valid. The smallest is settled with fcl distances of
         its group's pairs at the interval's ends; those become anchors, whose lever bounds
-        then raise that group's bound on every interval (the larger bound is kept). Stops when
+        then raise that group's bound on every interval (the larger bound is kept); pairs whose
+        box-gap bound on that interval is above the others' fcl bound are not asked. Stops when
         the smallest bound left is fcl's, or after `REFINE` rounds.
         """
         B = np.array([c[1] for c in cert])
@@ -345,22 +388,36 @@ class PathCertifier:
         qb = np.array([c[0][1].q for c in cert])
         dq = np.array([c[3] for c in cert])
         dev = np.array([c[4] for c in cert])
+        ga = np.array([c[0][0].gaps for c in cert])
+        gb = np.array([c[0][1].gaps for c in cert])
         best = np.inf  # the smallest fcl-settled bound so far: rows above it cannot matter
         for _ in range(REFINE):
             k, g = np.unravel_index(int(np.argmin(B)), B.shape)
             if tight[k, g] or not np.isfinite(B[k, g]):
                 break
             w = cert[k][0]
-            rows = np.flatnonzero(B[:, g] < best)
+            rows = np.flatnonzero((B[:, g] < best) | (np.arange(len(B)) == k))
+            kr = int(np.searchsorted(rows, k))
+            cols = self.group_cols[g]
+            # Box-gap bounds of the group's pairs on these rows: a pair whose gap bound on
+            # row k is above the group's fcl bound there cannot be its least; no fcl for it.
+            L = self.plev[cols]
+            gap_lo = _chord_bound(ga[rows][:, cols], gb[rows][:, cols], dq[rows] @ L.T)
+            gap_lo = gap_lo - dev[rows] @ L.T
             lo = np.full(len(rows), np.inf)
-            for pair in self.o.group_pairs[g]:
+            for c in np.argsort(gap_lo[kr], kind="stable"):
+                if gap_lo[kr, c] >= lo[kr]:
+                    lo = np.minimum(lo, gap_lo[:, c])
+                    continue
+                pair = self.pairs[cols[c]]
                 # The interval's ends as anchors (every anchor gives a valid bound).
                 anchor_q = np.stack([w[0].q, w[1].q])
                 anchor_d = np.array([self._lower(w[0], pair, 2), self._lower(w[1], pair, 2)])
-                L = self.o.pair_lever[pair]
-                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ L, axis=1)
-                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ L, axis=1)
-                lo = np.minimum(lo, _chord_bound(da, db, dq[rows] @ L) - dev[rows] @ L)
+                Lp = L[c]
+                da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ Lp, axis=1)
+                db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ Lp, axis=1)
+                pair_lo = _chord_bound(da, db, dq[rows] @ Lp) - dev[rows] @ Lp
+                lo = np.minimum(lo, np.maximum(pair_lo, gap_lo[:, c]))
             B[rows, g] = np.maximum(B[rows, g], lo)
             tight[k, g] = True
             best = min(best, float(B[k, g]))

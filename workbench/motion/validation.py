@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -127,6 +128,10 @@ def validate_samples(
     return ValidationReport(tuple(found), worst, n)
 
 
+AccelerationBound = Callable[[NDArray[np.float64], NDArray[np.float64]], NDArray[np.float64]]
+"""bound(t0 (M,), t1 (M,)) -> (M, dof): max |q''| [rad/s^2] over each interval [t0, t1]."""
+
+
 def _piece_bounds(trajectory: Trajectory) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Return the start and end times [s] of every joint's constant-jerk pieces, (dof, P) each."""
     start = trajectory.piece_start
@@ -144,6 +149,40 @@ def acceleration_bound(trajectory: Trajectory) -> NDArray[np.float64]:
     length = np.clip(end - start, 0.0, None)
     a0, jerk = trajectory.piece_a, trajectory.piece_j
     return np.maximum(np.abs(a0), np.abs(a0 + jerk * length)).max(axis=1)
+
+
+def interval_acceleration_bound(
+    trajectory: Trajectory,
+) -> AccelerationBound:
+    """Return bound(t0, t1) -> (M, dof): max |q''| [rad/s^2] over each interval [t0_m, t1_m], exactly.
+
+    The acceleration is linear within each constant-jerk piece, so its largest magnitude on an
+    interval is at the interval's ends or at a piece boundary inside it (both one-sided values
+    there). Far below the whole trajectory's bound where the motion runs at constant feed.
+    """
+    start, end = _piece_bounds(trajectory)
+    dof, count = start.shape
+    length = np.clip(end - start, 0.0, None)
+    a0, jerk = trajectory.piece_a, trajectory.piece_j
+    # Largest one-sided |a| at each piece's start (its own start, the previous piece's end).
+    at_start = np.abs(a0).copy()
+    at_start[:, 1:] = np.maximum(at_start[:, 1:], np.abs(a0 + jerk * length)[:, :-1])
+    at_start = np.concatenate([at_start, np.zeros((dof, 1))], axis=1)  # sentinel for reduceat
+
+    def bound(t0: NDArray[np.float64], t1: NDArray[np.float64]) -> NDArray[np.float64]:
+        lo = np.minimum(t0, t1)
+        hi = np.maximum(t0, t1)
+        out = np.maximum(np.abs(trajectory.at(lo)[2]), np.abs(trajectory.at(hi)[2]))
+        for j in range(dof):
+            i0 = np.searchsorted(start[j], lo, side="right")  # first boundary after lo
+            i1 = np.searchsorted(start[j], hi, side="right")  # boundaries up to hi
+            i0c = np.minimum(i0, count)
+            idx = np.stack([i0c, np.maximum(i1, i0c)], axis=1).reshape(-1)
+            inner = np.maximum.reduceat(at_start[j], idx)[::2]
+            out[:, j] = np.where(i1 > i0, np.maximum(out[:, j], inner), out[:, j])
+        return out
+
+    return bound
 
 
 def critical_times(trajectory: Trajectory) -> NDArray[np.float64]:

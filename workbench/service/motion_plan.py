@@ -22,7 +22,7 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
-from workbench.motion.validation import acceleration_bound
+from workbench.motion.validation import AccelerationBound, interval_acceleration_bound
 from workbench.project.models import ProgramSpec
 from workbench.service.convert import DEG, MM, pose_to_matrix
 from workbench.service.robot_setup import RobotSetup
@@ -212,7 +212,8 @@ def check_trajectory(
     """Return the collision report of a trajectory sampled at `times` [s] as q (N, dof) [rad].
 
     Fast mode: the shared spheres engine (`shared_engine`), bisecting between samples on the
-    real motion (`trajectory.at`) with the exact acceleration bound. Fallback: every sample
+    real motion (`trajectory.at`) with the exact acceleration bound of each interval
+    (`interval_acceleration_bound`). Fallback: every sample
     checked exactly with python-fcl, nothing certified between them (`fallback` says why).
     """
     return check_motion(
@@ -220,7 +221,7 @@ def check_trajectory(
         q,
         checker,
         sampler=lambda t: trajectory.at(t)[0],
-        acceleration=acceleration_bound(trajectory),
+        acceleration=interval_acceleration_bound(trajectory),
         progress=progress,
     )
 
@@ -231,13 +232,14 @@ def check_motion(
     checker: RobotCollisionChecker,
     *,
     sampler: Callable[[NDArray[np.float64]], NDArray[np.float64]],
-    acceleration: NDArray[np.float64],
+    acceleration: NDArray[np.float64] | AccelerationBound,
     progress: Progress | None = None,
 ) -> EnginePathReport:
     """Return the collision report of a motion sampled at `times` [s] as q (N, dof) [rad].
 
     sampler(times (M,) [s]) -> (M, dof) [rad] gives the real motion between samples;
-    acceleration (dof,) [rad/s^2] bounds |q''| over it (the motion must be C1: the chord
+    acceleration (dof,) [rad/s^2] bounds |q''| over it, or bound(t0, t1) -> (M, dof) bounds it
+    over each interval (the motion must be C1: the chord
     deviation bound ``acceleration * h**2 / 8`` needs a continuous velocity). Fast mode and
     fallback as in `check_trajectory`.
     """
