@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import sys
+import threading
+
 import numpy as np
 import pytest
 import trimesh
@@ -158,3 +161,47 @@ def test_control_points_asked_for_in_pieces_equal_a_fresh_computation() -> None:
     np.testing.assert_array_equal(
         surface.control_points, fresh._compute_control_points(np.arange(len(mesh.faces)))
     )
+
+
+def test_control_points_asked_for_from_many_threads_at_once_equal_a_fresh_computation() -> None:
+    # viser runs callbacks on several threads: concurrent first requests for overlapping faces
+    # of one fit must neither take the same cache rows nor grow from a stale store. Twin: the
+    # control points computed from scratch for every face, single-threaded. Without the lock
+    # most rounds here returned wrong rows (or raised IndexError) on CPython 3.11.
+    mesh = make_panel(60, 45)
+    want = fit_bezier_triangles(mesh)._compute_control_points(np.arange(len(mesh.faces)))
+    n_threads, n_rounds = 8, 30
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)  # switch threads often: more interleavings per round
+    try:
+        for rnd in range(n_rounds):
+            surface = fit_bezier_triangles(mesh)
+            start = threading.Barrier(n_threads)
+            results: list[tuple[np.ndarray, np.ndarray]] = []
+            errors: list[BaseException] = []
+
+            def ask(seed: int, surface=surface, start=start, results=results, errors=errors):
+                rng = np.random.default_rng(seed)
+                start.wait()
+                try:
+                    for _ in range(6):
+                        f = rng.integers(0, len(mesh.faces), int(rng.integers(1, 400)))
+                        results.append((f, surface.control_points_of(f)))
+                except BaseException as exc:  # noqa: BLE001 - reported in the main thread
+                    errors.append(exc)
+
+            threads = [
+                threading.Thread(target=ask, args=(1000 * rnd + i,)) for i in range(n_threads)
+            ]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            assert not errors, f"round {rnd}: {errors[0]!r}"
+            assert len(results) == 6 * n_threads
+            for f, got in results:
+                np.testing.assert_array_equal(got, want[f], err_msg=f"round {rnd}")
+            # and the cache is left consistent for later single-threaded use
+            np.testing.assert_array_equal(surface.control_points, want)
+    finally:
+        sys.setswitchinterval(interval)

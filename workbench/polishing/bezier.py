@@ -21,7 +21,8 @@ edge curve exactly (C0).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import threading
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
@@ -44,6 +45,7 @@ class BezierSurface:
     vertices: F64
     faces: NDArray[np.int64]
     vertex_normals: F64
+    _cache: dict[str, Any] = field(init=False, repr=False, compare=False)
 
     @property
     def n_faces(self) -> int:
@@ -55,36 +57,50 @@ class BezierSurface:
         """Return the control points (F, 6, 3) [m] of every patch."""
         return self.control_points_of(np.arange(self.n_faces))
 
-    @cached_property
-    def _cache(self) -> dict[str, Any]:
+    def __post_init__(self) -> None:
         # Filled as patches are asked for: planning evaluates the same faces several times
         # (Newton iterations). Rows are stored compactly in the order computed (row[f], -1
         # for none), so a path over a large mesh touches memory for its own faces only.
-        return {
+        # Made here, not lazily, so concurrent first callers (viser callback threads) cannot
+        # each make their own; the lock makes growing and filling one step (below).
+        cache = {
             "row": np.full(self.n_faces, -1, dtype=np.int64),
             "cp": np.empty((0, 6, 3)),
             "used": 0,
+            "lock": threading.Lock(),
         }
+        object.__setattr__(self, "_cache", cache)
 
     def control_points_of(self, face: ArrayLike) -> F64:
-        """Return the control points (..., 6, 3) [m] of patches `face` (...)."""
+        """Return the control points (..., 6, 3) [m] of patches `face` (...). Thread-safe."""
         f = np.asarray(face, dtype=np.int64)
         flat = f.ravel()
         cache = self._cache
         row = cache["row"]
-        need = flat[row[flat] < 0]
-        if len(need):
-            need = np.unique(need)
-            start = int(cache["used"])
-            store = cache["cp"]
-            if start + len(need) > len(store):  # grow by doubling: amortised O(1) per row
-                grown = np.empty((max(2 * len(store), start + len(need), 64), 6, 3))
-                grown[:start] = store[:start]
-                cache["cp"] = store = grown
-            store[start : start + len(need)] = self._compute_control_points(need)
-            row[need] = np.arange(start, start + len(need))
-            cache["used"] = start + len(need)
-        return cache["cp"][row[flat]].reshape(f.shape + (6, 3))
+        idx = row[flat]
+        if len(flat[idx < 0]):  # (faster than .any() on the short arrays of single points)
+            # Two fills at once would take the same free rows (or grow from a stale store) and
+            # overwrite each other's control points; under the lock, faces filled meanwhile by
+            # another thread are looked up again and not recomputed.
+            with cache["lock"]:
+                idx = row[flat]
+                need = flat[idx < 0]
+                if len(need):
+                    need = np.unique(need)
+                    start = int(cache["used"])
+                    store = cache["cp"]
+                    if start + len(need) > len(store):  # grow by doubling: amortised O(1)
+                        grown = np.empty((max(2 * len(store), start + len(need), 64), 6, 3))
+                        grown[:start] = store[:start]
+                        cache["cp"] = store = grown
+                    store[start : start + len(need)] = self._compute_control_points(need)
+                    # Rows are published only after they are written, so a lock-free reader
+                    # that sees row[f] >= 0 finds its control points in any later store.
+                    row[need] = np.arange(start, start + len(need))
+                    cache["used"] = start + len(need)
+                    idx = row[flat]
+        # Stores only grow by copying every written row, so rows idx < used are in any store.
+        return cache["cp"][idx].reshape(f.shape + (6, 3))
 
     def _compute_control_points(self, face: NDArray[np.int64]) -> F64:
         tri = self.faces[face]

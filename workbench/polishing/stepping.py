@@ -5,11 +5,14 @@ the last is `step` (seed 004, Fig. 4).
 
 The chain of chord equations |X(t_k) - X(t_{k-1})| = S (X the lifted polyline, t a
 fractional vertex index) is solved for all points at once by Newton's method: linearised,
-α_k δ_k - β_k δ_{k-1} = S - c_k with α_k = e_k·X'(t_k), β_k = e_k·X'(t_{k-1}) (e_k the unit
-chord) is a first-order linear recurrence, δ_k = H_k Σ_{j<=k} (r_j/α_j)/H_j with
-H_k = Π_{i<=k} β_i/α_i, solved with cumulative products and sums. Only the stepped points
-are lifted (a few iterations), not a dense copy of the path; where that cannot be done
-(a polyline vertex off the mesh, no convergence) the dense walk (`chord_parameters`) runs.
+α_k δ_k - β_k δ_{k-1} = r_k = S - c_k with α_k = e_k·X'(t_k), β_k = e_k·X'(t_{k-1}) (e_k the
+unit chord) is a first-order linear recurrence, δ_k = (β_k/α_k) δ_{k-1} + r_k/α_k, solved
+with cumulative products and sums (`linear_recurrence`), restarted wherever the running
+product Π β_i/α_i would leave [1e-150, 1e150]: a chord perpendicular to the previous
+tangent (β = 0), or many nearly so, would otherwise make it 0 and the step NaN (and the
+path take the dense walk). Only the stepped points are lifted (a few iterations), not a
+dense copy of the path; where that cannot be done (a polyline vertex off the mesh, no
+convergence) the dense walk (`chord_parameters`) runs.
 """
 
 from __future__ import annotations
@@ -85,6 +88,35 @@ def densify(uv: F64, ds: float) -> F64:
     delta = np.repeat(np.diff(uv, axis=0) / k[:, None], k, axis=0)
     i = (np.arange(k.sum()) - np.repeat(np.cumsum(k) - k, k))[:, None]
     return np.vstack([start + i * delta, uv[-1:]])
+
+
+def linear_recurrence(a: F64, b: F64, *, window: int = 4096) -> F64:
+    """Return x (n,) with x_0 = b_0 and x_k = a_k x_{k-1} + b_k, for a, b (n,).
+
+    Vectorised by segments: from a start s, x_k = c_k (Σ_{s<=j<=k} b_j/c_j + a_s x_{s-1}) with
+    c_k = Π_{s<i<=k} a_i. A segment ends before the first c outside [1e-150, 1e150] (a zero
+    or tiny a_k, or a product drifting away) and the next starts there, so no c is 0, inf or
+    subnormal (tests: equal to the plain loop to 1e-12 of the terms' magnitudes). At most
+    `window` terms per segment bound the work to O(n) even when every a_k is tiny.
+    """
+    n = len(a)
+    x = np.empty(n)
+    s, carry = 0, 0.0  # carry: x_{s-1}
+    while s < n:
+        w = min(n, s + window)
+        c = np.empty(w - s)
+        c[0] = 1.0
+        with np.errstate(over="ignore", under="ignore"):  # cut off below, never used
+            np.cumprod(a[s + 1 : w], out=c[1:])
+        m = np.abs(c)
+        if m.min() > 1e-150 and m.max() < 1e150:  # the usual case: one segment (NaN fails)
+            e = w
+        else:  # the first c out of range (NaN too); never c[0]
+            e = s + int(np.flatnonzero(~((m > 1e-150) & (m < 1e150)))[0])
+            c = c[: e - s]
+        x[s:e] = c * (np.cumsum(b[s:e] / c) + a[s] * carry)
+        s, carry = e, float(x[e - 1])
+    return x
 
 
 def chord_step(
@@ -169,8 +201,7 @@ def _chord_step_newton(
         beta = np.sum(e[:q] * dx[:q], axis=1)
         if not (alpha > 0).all():
             return None
-        cum = np.cumprod(beta / alpha)
-        delta = cum * np.cumsum((r[:q] / alpha) / cum)
+        delta = linear_recurrence(beta / alpha, r[:q] / alpha)
         if not np.isfinite(delta).all():
             return None
         t[1 : q + 1] = np.minimum(t[1 : q + 1] + delta, end)
