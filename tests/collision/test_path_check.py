@@ -173,3 +173,35 @@ def test_obstacle_wholly_inside_a_link_is_found(tmp_path_factory: pytest.TempPat
     assert held[2]  # the batched containment test sees it
     rep = eng.check_path(qs)
     assert list(rep.colliding_indices) == dense and 2 in dense
+
+
+def test_a_new_node_is_always_placed_even_where_a_dropped_one_was():
+    """The certifier must re-place poses for every new node: a dropped node's id() is reused."""
+    from types import SimpleNamespace
+
+    from workbench.collision.path_check import PathCertifier, _Node
+
+    placed: list[np.ndarray] = []
+    oracle = SimpleNamespace(
+        place=lambda poses: placed.append(poses),
+        pair_lever={("a", "b"): np.ones(1)},
+        group_pairs=[[("a", "b")]],
+    )
+    cert = PathCertifier(oracle)  # type: ignore[arg-type]
+
+    def node(value: float) -> _Node:
+        z = np.zeros(1)
+        return _Node(0.0, z, z, z, np.full((1, 4, 4), value), z, z)
+
+    # With an id() check the dropped node's address comes back for the next node (CPython) and
+    # that node's poses are never placed; holding the node itself keeps it alive instead.
+    for k in range(200):
+        a = node(float(k))
+        cert._place(a)
+        del a  # as the certifier drops a settled node; CPython reuses its address at once
+        b = node(float(k) + 0.5)
+        cert._place(b)
+        assert placed[-1] is b.poses, f"round {k}: the new node's poses were never placed"
+        cert._place(b)  # the same node again: no second placement
+        assert len(placed) == 2 * (k + 1)
+        del b

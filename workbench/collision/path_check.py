@@ -109,7 +109,9 @@ class PathCertifier:
 
     def __init__(self, oracle: PathOracle) -> None:
         self.o = oracle
-        self._placed: int | None = None
+        # The node whose poses the exact checker holds, kept by reference: an id() would be
+        # reused by a new node once the placed one is dropped, and its poses never placed.
+        self._placed: _Node | None = None
         self.exact_pairs = 0
         # Per pair, configurations with an exact distance: the distance at any q is at least
         # d - |q - q_anchor| @ lever (the lever bound along the straight joint segment).
@@ -181,9 +183,9 @@ class PathCertifier:
         return np.where(np.isnan(tab), NO_BOUND, tab)
 
     def _place(self, node: _Node) -> None:
-        if self._placed != id(node):
+        if self._placed is not node:
             self.o.place(node.poses)
-            self._placed = id(node)
+            self._placed = node
 
     def _anchored(self, node: _Node, pair: Pair) -> float:
         """Return the anchors' bound at node where it keeps RENEW of the anchor's distance, else -inf.
