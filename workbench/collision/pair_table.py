@@ -106,7 +106,7 @@ class PairTable:
         """
         if self.path is None or self.filled == self._saved:
             return
-        store_entry(self.path, {"values": self.values, "format": np.int64(_FORMAT)})
+        store_entry(self.path, {"values": self.values, "format": np.asarray(_FORMAT, np.int64)})
         self._saved = self.filled
 
     def _nodes_q(self, idx: NDArray[np.int64]) -> FloatArray:
