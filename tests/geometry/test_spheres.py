@@ -10,6 +10,7 @@ from workbench.errors import InputError, MeshError
 from workbench.geometry.spheres import (
     SphereSet,
     _contain_triangles,
+    _holds,
     _tighten,
     fit_spheres,
 )
@@ -175,6 +176,25 @@ def test_containment_is_exact_far_from_the_origin(offset: float, tmp_path) -> No
     assert _contains_exactly(s, _dense_samples(tri))
     # The margin stays negligible against the part (0.1 m): far parts fit as tightly.
     assert s.radii.max() < 0.1
+
+
+def test_coarse_to_fine_check_agrees_with_every_piece_brute_force() -> None:
+    """`_holds` (the check on load) against the fit's pieces, all checked by direct norms."""
+    m = _link()
+    tri = np.asarray(m.vertices)[m.faces]
+    s = fit_spheres(m, 5, seed=2, iterations=10)
+    split = 0.02
+    pieces = split_long_triangles(tri, split)
+    radii = _contain_triangles(pieces, s.centres, 0.4)
+    assert _holds(tri, s.centres, radii, split) and _pieces_held(pieces, s.centres, radii)
+    rng = np.random.default_rng(5)
+    seen = set()
+    for _ in range(40):
+        r = radii * rng.uniform(0.97, 1.0, len(radii)) ** rng.integers(0, 2, len(radii))
+        want = _pieces_held(pieces, s.centres, r)
+        assert _holds(tri, s.centres, r, split) == want
+        seen.add(want)
+    assert seen == {True, False}  # both outcomes exercised
 
 
 def _entry_data(entry) -> dict[str, np.ndarray]:

@@ -116,11 +116,25 @@ def _need(tri: FloatArray, centres: FloatArray) -> FloatArray:
     return np.sqrt(need2)
 
 
-def _holds(pieces: FloatArray, centres: FloatArray, radii: FloatArray) -> bool:
-    """Return whether every piece (T,3,3) lies in one sphere (its three vertices), exactly."""
-    if len(centres) == 0:
-        return len(pieces) == 0
-    return bool(np.all(np.any(_need(pieces, centres) <= radii[None], axis=1)))
+def _holds(tri: FloatArray, centres: FloatArray, radii: FloatArray, split: float) -> bool:
+    """Return whether every piece of the fit's split of `tri` (T,3,3) lies in one sphere.
+
+    The fit splits every triangle with an edge over `split` [m] 1 -> 4 (`split_long_triangles`)
+    and puts each piece in one sphere. Checked here coarse to fine: a triangle held by one
+    sphere holds all its pieces, so only the others are split (the same midpoints), one
+    round at a time. Whatever the fit guarantees passes; a piece no sphere holds at the
+    fit's length, or more than _PIECE_LIMIT open pieces, fails. Exact: direct differences.
+    """
+    for _ in range(_SPLIT_ROUNDS + 1):
+        if len(tri) and len(centres):
+            tri = tri[~np.any(_need(tri, centres) <= radii[None], axis=1)]
+        if len(tri) == 0:
+            return True
+        edge = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
+        if np.any(edge <= split) or 4 * len(tri) > _PIECE_LIMIT:
+            return False  # not split further by the fit, or a damaged entry's split
+        tri = split_long_triangles(tri, split, rounds=1)
+    return False
 
 
 def _assign(need: FloatArray) -> tuple[FloatArray, NDArray[np.int64]]:
@@ -287,14 +301,14 @@ def _checked_entry(
         or not split > 0
     ):
         return None
-    pieces = split_long_triangles(v[f], split, limit=_PIECE_LIMIT)
-    if not _holds(pieces, centres, radii):
+    if not _holds(v[f], centres, radii, split):
         return None
     return SphereSet(centres, radii, *(float(d[k]) for k in _SCALARS))
 
 
-# Most triangle pieces the fit splits the mesh into (and the check on load).
+# Most triangle pieces the fit splits the mesh into (and the check on load), most rounds.
 _PIECE_LIMIT = 200_000
+_SPLIT_ROUNDS = 30  # split_long_triangles' default
 _SCALARS = ("coverage", "union_volume", "mesh_volume", "volume_overshoot")
 
 
@@ -349,7 +363,7 @@ def _fit(
     r_swarm = _decode(centres[None], cover)[0]
     # Long thin triangles (a cylinder's sides) would force huge spheres: split them first.
     split = 0.35 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale
-    pieces = split_long_triangles(tri, split, limit=_PIECE_LIMIT)
+    pieces = split_long_triangles(tri, split, limit=_PIECE_LIMIT, rounds=_SPLIT_ROUNDS)
     centres, radii = _tighten(pieces, centres)
     radii = _outward(radii, scale, pieces)
     keep = radii > 2 * _outward(np.zeros(1), scale, pieces)[0]  # more than the margin alone
