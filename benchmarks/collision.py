@@ -241,6 +241,22 @@ def sphere_fits() -> None:
             s = fit_spheres(m, k)
             row += f"       {s.volume_overshoot:9.2f}  {time.perf_counter() - t:6.2f}"
         print(row)
+    # A cache hit re-checks containment (split + one _need) before it trusts the entry.
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as cache:
+        t = time.perf_counter()
+        for m in meshes:
+            fit_spheres(m, 6, cache_dir=cache)
+        fit_s = time.perf_counter() - t
+        t = time.perf_counter()
+        for m in meshes:
+            fit_spheres(m, 6, cache_dir=cache)
+        hit_s = time.perf_counter() - t
+    print(
+        f"  k=6, 7 links: fit and store {fit_s:6.2f} s, cache hit (load + containment check)"
+        f" {hit_s:6.3f} s   ratio {fit_s / hit_s:6.1f}x"
+    )
 
 
 def plan_checks() -> None:

@@ -159,3 +159,46 @@ def test_tables_are_cached_on_disk(tmp_path_factory: pytest.TempPathFactory) -> 
     e3 = CollisionEngine(wb2.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache)
     e3.pair_tables[("link4", "tool")].bound(q)
     assert e3.pair_tables[("link4", "tool")].filled > 0
+
+
+def _small_table() -> tuple[PairTable, list[int]]:
+    calls: list[int] = []
+
+    def distance(qn: np.ndarray) -> np.ndarray:
+        calls.append(len(qn))
+        return 1.0 + 0.1 * np.sin(qn[:, 1])
+
+    table = PairTable(
+        np.array([1]), np.array([-1.0]), np.array([1.0]), np.array([0.1]), 3, distance, tol=0.01
+    )
+    return table, calls
+
+
+def test_truncated_or_old_table_entry_is_recomputed_and_overwritten(tmp_path: Path) -> None:
+    """A damaged entry (a crash of another writer, a full disk) is a miss, never an error."""
+    q = np.zeros((5, 3))
+    q[:, 1] = np.linspace(-0.2, 0.2, 5)
+    entry = tmp_path / "table-x.npz"
+    first, _ = _small_table()
+    first.attach(entry)
+    b = first.bound(q)
+    first.save()
+    assert sorted(p.name for p in tmp_path.iterdir()) == [entry.name]  # no temp files left
+    entry.write_bytes(entry.read_bytes()[:200])
+    again, calls = _small_table()
+    again.attach(entry)  # old code: zipfile.BadZipFile here
+    assert again.filled == 0
+    np.testing.assert_array_equal(again.bound(q), b)
+    assert again.filled == first.filled and len(calls) == 1  # computed again
+    again.save()
+    third, calls = _small_table()
+    third.attach(entry)
+    np.testing.assert_array_equal(third.bound(q), b)
+    assert third.filled == 0 and not calls  # the overwritten entry is read
+    assert sorted(p.name for p in tmp_path.iterdir()) == [entry.name]
+    # An entry of the previous version (no format field) is ignored, not misread.
+    np.savez(entry, values=np.zeros(third.values.shape))
+    old, calls = _small_table()
+    old.attach(entry)
+    np.testing.assert_array_equal(old.bound(q), b)
+    assert old.filled > 0 and calls

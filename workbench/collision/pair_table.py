@@ -20,7 +20,6 @@ valid, looser).
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -28,10 +27,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
+from workbench.geometry.npz_cache import load_entry, store_entry
 
 FloatArray = NDArray[np.float64]
 # Most nodes along one joint: a step below range / MAX_NODES would make a huge, sparse table.
 MAX_NODES = 4096
+# Stored in every cache entry; bump when the entry changes (2: npz_cache, format field), so
+# entries of older versions are ignored rather than misread.
+_FORMAT = 2
 
 
 class PairTable:
@@ -84,24 +87,26 @@ class PairTable:
         kinematics, grid); a file of another grid shape is ignored.
         """
         self.path = path
-        if path.exists():
-            try:
-                with np.load(path) as d:
-                    values = np.asarray(d["values"], float)
-            except (OSError, ValueError, KeyError):
-                return  # a damaged entry: computed again and overwritten
-            if values.shape == self.values.shape:
-                self.values = np.where(np.isnan(self.values), values, self.values)
-                self._saved = self.filled
+        d = load_entry(path, required=("values", "format"))
+        fmt = None if d is None else d["format"]
+        if d is None or fmt is None or fmt.shape != () or fmt.dtype.kind not in "iu":
+            return  # none or unreadable: computed again and overwritten
+        if int(fmt) != _FORMAT:
+            return  # another version: computed again and overwritten
+        values = np.asarray(d["values"], float)
+        if values.shape == self.values.shape:
+            self.values = np.where(np.isnan(self.values), values, self.values)
+            self._saved = self.filled
 
     def save(self) -> None:
-        """Write the nodes to the attached file when new ones were computed (atomic)."""
+        """Write the nodes to the attached file when new ones were computed (atomic).
+
+        `store_entry` writes a temporary file of a unique name and renames it over the
+        entry: processes filling the same table never rename each other's half-written file.
+        """
         if self.path is None or self.filled == self._saved:
             return
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = self.path.with_suffix(f".tmp{os.getpid()}.npz")  # one per writing process
-        np.savez(tmp, values=self.values)
-        tmp.replace(self.path)  # a crash mid-write never leaves a broken entry
+        store_entry(self.path, {"values": self.values, "format": np.asarray(_FORMAT, np.int64)})
         self._saved = self.filled
 
     def _nodes_q(self, idx: NDArray[np.int64]) -> FloatArray:

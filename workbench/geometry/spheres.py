@@ -7,15 +7,14 @@ construction) and the objective is the total sphere volume (small overshoot).
 
 After the swarm, containment is made exact, not sampled: every triangle is assigned to a
 sphere that contains its three vertices (a ball is convex, so it then contains the whole
-triangle) and radii are inflated to the farthest assigned vertex. The union of spheres thus
+triangle) and radii are inflated to the farthest assigned vertex, distances taken as direct
+differences (exact far from the origin too) and rounded outwards. The union of spheres thus
 contains the whole surface. It need not contain a closed mesh's interior far from the
 surface (an obstacle entirely inside a link, never touching its surface, is not caught).
 """
 
 from __future__ import annotations
 
-import hashlib
-import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -25,11 +24,14 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.lbvh import check_mesh
+from workbench.geometry.npz_cache import cache_path, load_entry, store_entry
 from workbench.geometry.sdf import is_watertight
 from workbench.geometry.subdivide import split_long_triangles
 
 FloatArray = NDArray[np.float64]
-_FORMAT = 2  # bump when the fit changes: cached fits of older versions are not reused
+# Bump when the fit or the entry changes: entries of older versions are not reused.
+# 3: npz_cache key (shapes and dtypes), split length stored for the check on load.
+_FORMAT = 3
 
 
 @dataclass(frozen=True)
@@ -87,18 +89,52 @@ def _contain_triangles(tri: FloatArray, centres: FloatArray, scale: float) -> Fl
     """Return radii (k,) such that each triangle lies in one sphere (all three vertices in it)."""
     need = _need(tri, centres)
     radii, _ = _assign(need)
-    return radii * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
+    return _outward(radii, scale, tri)
+
+
+def _outward(radii: FloatArray, scale: float, pts: FloatArray) -> FloatArray:
+    """Return radii rounded outwards: relative, mesh-size and coordinate-magnitude margins.
+
+    The last term covers the rounding of coordinates themselves far from the origin (a
+    split midpoint or a surface point of a part 1000 m out is only known to ~1e-13 m).
+    """
+    mag = float(np.max(np.abs(pts))) if pts.size else 0.0
+    return radii * (1.0 + 1e-12) + 1e-12 * scale + 8 * np.finfo(float).eps * mag
 
 
 def _need(tri: FloatArray, centres: FloatArray) -> FloatArray:
-    """Return (T, k): the farthest vertex of each triangle from each centre [m]."""
-    c2 = np.sum(centres**2, axis=1)[None]
-    need2 = np.zeros((len(tri), len(centres)))
-    for i in range(3):
-        p = tri[:, i]
-        d2 = np.sum(p**2, axis=1)[:, None] - 2 * p @ centres.T + c2
-        np.maximum(need2, d2, out=need2)
-    return np.sqrt(np.maximum(need2, 0.0))
+    """Return (T, k): the farthest vertex of each triangle from each centre [m].
+
+    Direct differences, one centre at a time (k is small): the expanded quadratic form
+    |p|^2 - 2 p.c + |c|^2 loses ~|p|^2 * eps, which far from the origin (1.6e-10 m at
+    100 m for a 0.1 m part) exceeds the outward margin.
+    """
+    need2 = np.empty((len(tri), len(centres)))
+    for j in range(len(centres)):
+        d = tri - centres[j]
+        np.max(np.einsum("tvd,tvd->tv", d, d), axis=1, out=need2[:, j])
+    return np.sqrt(need2)
+
+
+def _holds(tri: FloatArray, centres: FloatArray, radii: FloatArray, split: float) -> bool:
+    """Return whether every piece of the fit's split of `tri` (T,3,3) lies in one sphere.
+
+    The fit splits every triangle with an edge over `split` [m] 1 -> 4 (`split_long_triangles`)
+    and puts each piece in one sphere. Checked here coarse to fine: a triangle held by one
+    sphere holds all its pieces, so only the others are split (the same midpoints), one
+    round at a time. Whatever the fit guarantees passes; a piece no sphere holds at the
+    fit's length, or more than _PIECE_LIMIT open pieces, fails. Exact: direct differences.
+    """
+    for _ in range(_SPLIT_ROUNDS + 1):
+        if len(tri) and len(centres):
+            tri = tri[~np.any(_need(tri, centres) <= radii[None], axis=1)]
+        if len(tri) == 0:
+            return True
+        edge = np.linalg.norm(tri - np.roll(tri, 1, axis=1), axis=2).max(axis=1)
+        if np.any(edge <= split) or 4 * len(tri) > _PIECE_LIMIT:
+            return False  # not split further by the fit, or a damaged entry's split
+        tri = split_long_triangles(tri, split, rounds=1)
+    return False
 
 
 def _assign(need: FloatArray) -> tuple[FloatArray, NDArray[np.int64]]:
@@ -196,7 +232,9 @@ def fit_spheres(
 
     iterations/particles: PSO budget. samples: surface points the swarm must cover (besides
     vertices). Every triangle is contained exactly afterwards. cache_dir: reuse/store the fit
-    there as ``spheres-<sha256 of mesh and parameters>.npz``. Raises InputError for
+    there as ``spheres-<sha256 of mesh and parameters>.npz`` (`npz_cache`); a stored fit is
+    used only after the same exact containment check the fit makes, else (and for an
+    unreadable entry) it is fitted again and overwritten. Raises InputError for
     count <= 0, MeshError for an empty mesh.
     """
     if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
@@ -213,25 +251,64 @@ def fit_spheres(
         raise InputError(
             f"iterations >= 0, particles >= 1, samples >= 0 required; got {iterations}, {particles}, {samples}"
         )
-    path = None
-    if cache_dir is not None:
-        params = [count, seed, iterations, particles, samples, _FORMAT]
-        digest = hashlib.sha256(
-            v.tobytes() + f.astype(np.int64).tobytes() + json.dumps(params).encode()
-        ).hexdigest()
-        path = Path(cache_dir) / f"spheres-{digest[:24]}.npz"
-        if path.exists():
-            with np.load(path) as d:
-                return SphereSet(d["centres"], d["radii"], *(float(d[k]) for k in _SCALARS))
-    s = _fit(v, f, count, seed, iterations, particles, samples)
-    if path is not None:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(".tmp.npz")
-        np.savez(tmp, centres=s.centres, radii=s.radii, **{k: getattr(s, k) for k in _SCALARS})
-        tmp.replace(path)  # atomic: a crash mid-write never leaves a broken cache entry
+    if cache_dir is None:
+        return _fit(v, f, count, seed, iterations, particles, samples)[0]
+    params = {
+        "count": int(count),
+        "seed": int(seed),
+        "iterations": int(iterations),
+        "particles": int(particles),
+        "samples": int(samples),
+        "format": _FORMAT,
+    }
+    path = cache_path(cache_dir, "spheres", [v, f.astype(np.int64)], params)
+    d = load_entry(path, required=("centres", "radii", "split", *_SCALARS))
+    if d is not None:
+        loaded = _checked_entry(v, f, d)
+        if loaded is not None:
+            return loaded
+    # No entry, an unreadable one, or one whose spheres do not hold the mesh: fit again.
+    s, split = _fit(v, f, count, seed, iterations, particles, samples)
+    store_entry(
+        path,
+        {
+            "centres": s.centres,
+            "radii": s.radii,
+            "split": np.asarray(split, float),
+            **{k: np.asarray(getattr(s, k), float) for k in _SCALARS},
+        },
+    )
     return s
 
 
+def _checked_entry(
+    v: FloatArray, f: NDArray[np.int64], d: dict[str, NDArray[Any]]
+) -> SphereSet | None:
+    """Return the cached spheres if they hold every triangle piece as the fit made sure, else None.
+
+    The conservative collision bounds rest on these spheres: an entry edited, damaged or
+    written by another fit is checked exactly as `_fit` guarantees containment (each piece
+    of the same split in one sphere, direct differences), at the cost of one `_need`.
+    """
+    centres, radii = np.asarray(d["centres"], float), np.asarray(d["radii"], float)
+    split = float(d["split"])
+    if (
+        centres.ndim != 2
+        or centres.shape[1:] != (3,)
+        or radii.shape != (len(centres),)
+        or not np.all(np.isfinite(centres))
+        or not np.all(np.isfinite(radii))
+        or not split > 0
+    ):
+        return None
+    if not _holds(v[f], centres, radii, split):
+        return None
+    return SphereSet(centres, radii, *(float(d[k]) for k in _SCALARS))
+
+
+# Most triangle pieces the fit splits the mesh into (and the check on load), most rounds.
+_PIECE_LIMIT = 200_000
+_SPLIT_ROUNDS = 30  # split_long_triangles' default
 _SCALARS = ("coverage", "union_volume", "mesh_volume", "volume_overshoot")
 
 
@@ -243,7 +320,8 @@ def _fit(
     iterations: int,
     particles: int,
     samples: int,
-) -> SphereSet:
+) -> tuple[SphereSet, float]:
+    """Return the fit and the edge length its triangles were split to [m]."""
     rng = np.random.default_rng(seed)
     tri = v[f]
     scale = float(np.ptp(v, axis=0).max()) or 1.0
@@ -284,14 +362,11 @@ def _fit(
     centres = pbest[g]
     r_swarm = _decode(centres[None], cover)[0]
     # Long thin triangles (a cylinder's sides) would force huge spheres: split them first.
-    pieces = split_long_triangles(
-        tri,
-        0.35 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale,
-        limit=200_000,
-    )
+    split = 0.35 * float(np.median(r_swarm[r_swarm > 0])) if np.any(r_swarm > 0) else scale
+    pieces = split_long_triangles(tri, split, limit=_PIECE_LIMIT, rounds=_SPLIT_ROUNDS)
     centres, radii = _tighten(pieces, centres)
-    radii = radii * (1.0 + 1e-12) + 1e-12 * scale  # outward rounding margin
-    keep = radii > 1e-12 * scale * 2
+    radii = _outward(radii, scale, pieces)
+    keep = radii > 2 * _outward(np.zeros(1), scale, pieces)[0]  # more than the margin alone
     if not np.all(keep):  # spheres left with no triangle: drop them
         centres, radii = centres[keep], radii[keep]
     checks = np.concatenate([v[np.unique(f)], _surface_samples(tri, 10 * max(samples, 100), rng)])
@@ -309,6 +384,7 @@ def _fit(
     union_volume = float(np.prod(bhi - blo) * in_union.mean())
     closed = is_watertight(v, f) and mesh_volume > 1e-12 * scale**3
     overshoot = (union_volume - mesh_volume) / mesh_volume if closed else float("nan")
-    return SphereSet(
+    sphere_set = SphereSet(
         centres, radii, float(inside.mean()), union_volume, mesh_volume, float(overshoot)
     )
+    return sphere_set, split
