@@ -134,8 +134,11 @@ class ConservativeChecker:
         radius R). The distance d is 1-Lipschitz and the field is within max_error of it
         (a lower bound of it outside the band), so d(c) - r >= sdf(cb) - max_error - R for
         each sphere (c, r) of the link: the link's spheres are only looked up where that
-        bound does not clear the margin. No contact is missed; `clearance` is then a lower
-        bound for the links settled by their bounding sphere.
+        bound does not clear the margin. No contact is missed, and the true clearance is still
+        at least ``clearance - max_error``. It is not a bound of the full check, though: the
+        field is only within max_error of d and not 1-Lipschitz itself, so a settled link's
+        sdf(cb) - R can exceed its spheres' min sdf(c) - r by up to 2 * max_error, and a
+        sphere the full check flags can be cleared by its link's bounding sphere.
         """
         c = self._placed(q)
         n, nl, k = c.shape[:3]
