@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from workbench.collision.engine import CollisionEngine
+from workbench.collision.path_check import PathCertifier
 from workbench.service import Workbench
 
 PROJECT = {
@@ -59,6 +60,16 @@ def _paths(wb: Workbench, count: int, samples: int, seed: int) -> list[np.ndarra
     return out
 
 
+def _sweeps(count: int, seed: int) -> list[np.ndarray]:
+    """Sweeps of joint 1 whose two samples are beside the block and whose motion goes through it."""
+    rng = np.random.default_rng(seed)
+    return [
+        np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
+        + rng.normal(0, 0.04, 6)
+        for _ in range(count)
+    ]
+
+
 def _dense(wb: Workbench, qs: np.ndarray) -> list[tuple[tuple[str, str], ...]]:
     return [wb.checker.check(q, distance=False).colliding for q in qs]
 
@@ -87,14 +98,7 @@ def test_no_misses_between_samples_and_no_false_hits(
 ) -> None:
     """Twin: the dense exact check on the path resampled 8x finer (straight joint segments)."""
     free = between = 0
-    rng = np.random.default_rng(1)
-    # Sweeps of joint 1 whose two samples are beside the block and whose motion goes through it.
-    sweeps = [
-        np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
-        + rng.normal(0, 0.04, 6)
-        for _ in range(6)
-    ]
-    for qs in _paths(wb, 24, 6, seed=1) + sweeps:
+    for qs in _paths(wb, 24, 6, seed=1) + _sweeps(6, seed=1):
         rep = engine.check_path(qs)
         fine = np.concatenate(
             [np.linspace(a, b, 9)[:-1] for a, b in zip(qs[:-1], qs[1:], strict=True)] + [qs[-1:]]
@@ -125,11 +129,30 @@ def test_free_path_clearance_is_a_lower_bound_of_fcl(
 
 
 def test_exact_mode_gives_the_same_sample_verdicts(wb: Workbench, engine: CollisionEngine) -> None:
+    """Same sample verdicts; an interval where exact mode finds a contact (a bisection midpoint
+    fcl confirms) is one the spheres mode reports too: colliding or not certified."""
     exact = CollisionEngine(wb.checker, "exact")
-    for qs in _paths(wb, 6, 8, seed=2):
+    certifier = PathCertifier(exact)
+    exact_hits = 0
+    for qs in _paths(wb, 6, 8, seed=2) + _sweeps(3, seed=2):
         a, b = engine.check_path(qs), exact.check_path(qs)
         assert a.colliding_indices == b.colliding_indices
-        assert a.collision_free == b.collision_free or not (a.certified and b.certified)
+        out = certifier.run(
+            qs,
+            np.arange(len(qs), dtype=float),
+            sampler=None,
+            acceleration=None,
+            deviation=np.zeros(exact.dof),
+            max_depth=12,
+            budget=5000,
+        )
+        hit_intervals = {e[1] for e in out.events if e[3]}  # midpoints fcl found colliding
+        assert hit_intervals <= set(b.between_indices)
+        assert hit_intervals <= set(a.between_indices), "spheres mode certified a contact"
+        if hit_intervals:
+            assert not a.collision_free
+        exact_hits += len(hit_intervals)
+    assert exact_hits > 0  # the sweeps do cross the block between samples
 
 
 def test_obstacle_wholly_inside_a_link_is_found(tmp_path_factory: pytest.TempPathFactory) -> None:
