@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from workbench.collision.engine import CollisionEngine
+from workbench.collision.path_check import PathCertifier
 from workbench.service import Workbench
 
 PROJECT = {
@@ -30,6 +31,10 @@ PROJECT = {
         ]
     },
 }
+
+
+# The thinnest obstacle of PROJECT [m]: the post's diameter (the block is 300 mm).
+THIN = 0.12
 
 
 @pytest.fixture(scope="module")
@@ -59,6 +64,32 @@ def _paths(wb: Workbench, count: int, samples: int, seed: int) -> list[np.ndarra
     return out
 
 
+def _fine(engine: CollisionEngine, qs: np.ndarray, step: float) -> np.ndarray:
+    """Return the straight joint segments through qs resampled so that no point of any body
+    moves more than `step` [m] between samples (at least 8 per segment).
+
+    A body point moves at most |dq| @ lever along a joint step dq (`JointLevers`, independent
+    of the configuration), so a contact reaching deeper than step / 2 into an obstacle holds
+    at the resample nearest to it.
+    """
+    lever = engine.body_lever.max(axis=0)  # (dof,) [m/rad], every body
+    parts = []
+    for a, b in zip(qs[:-1], qs[1:], strict=True):
+        m = max(8, int(np.ceil(np.abs(b - a) @ lever / step)))
+        parts.append(np.linspace(a, b, m + 1)[:-1])
+    return np.concatenate([*parts, qs[-1:]])
+
+
+def _sweeps(count: int, seed: int) -> list[np.ndarray]:
+    """Sweeps of joint 1 whose two samples are beside the block and whose motion goes through it."""
+    rng = np.random.default_rng(seed)
+    return [
+        np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
+        + rng.normal(0, 0.04, 6)
+        for _ in range(count)
+    ]
+
+
 def _dense(wb: Workbench, qs: np.ndarray) -> list[tuple[tuple[str, str], ...]]:
     return [wb.checker.check(q, distance=False).colliding for q in qs]
 
@@ -85,20 +116,15 @@ def test_sample_verdicts_equal_the_dense_exact_check(
 def test_no_misses_between_samples_and_no_false_hits(
     wb: Workbench, engine: CollisionEngine
 ) -> None:
-    """Twin: the dense exact check on the path resampled 8x finer (straight joint segments)."""
+    """Twin: the dense exact check on the straight joint segments resampled to `_fine`'s step.
+
+    No body point moves more than THIN / 4 between twin samples, so the twin sees every contact
+    that reaches deeper than THIN / 8 into an obstacle, e.g. any crossing of the post's middle.
+    """
     free = between = 0
-    rng = np.random.default_rng(1)
-    # Sweeps of joint 1 whose two samples are beside the block and whose motion goes through it.
-    sweeps = [
-        np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
-        + rng.normal(0, 0.04, 6)
-        for _ in range(6)
-    ]
-    for qs in _paths(wb, 24, 6, seed=1) + sweeps:
+    for qs in _paths(wb, 24, 6, seed=1) + _sweeps(6, seed=1):
         rep = engine.check_path(qs)
-        fine = np.concatenate(
-            [np.linspace(a, b, 9)[:-1] for a, b in zip(qs[:-1], qs[1:], strict=True)] + [qs[-1:]]
-        )
+        fine = _fine(engine, qs, THIN / 4)
         dense_fine = [bool(c) for c in _dense(wb, fine)]
         if any(dense_fine):
             assert not rep.collision_free, "a contact between samples was missed"
@@ -125,11 +151,30 @@ def test_free_path_clearance_is_a_lower_bound_of_fcl(
 
 
 def test_exact_mode_gives_the_same_sample_verdicts(wb: Workbench, engine: CollisionEngine) -> None:
+    """Same sample verdicts; an interval where exact mode finds a contact (a bisection midpoint
+    fcl confirms) is one the spheres mode reports too: colliding or not certified."""
     exact = CollisionEngine(wb.checker, "exact")
-    for qs in _paths(wb, 6, 8, seed=2):
+    certifier = PathCertifier(exact)
+    exact_hits = 0
+    for qs in _paths(wb, 6, 8, seed=2) + _sweeps(3, seed=2):
         a, b = engine.check_path(qs), exact.check_path(qs)
         assert a.colliding_indices == b.colliding_indices
-        assert a.collision_free == b.collision_free or not (a.certified and b.certified)
+        out = certifier.run(
+            qs,
+            np.arange(len(qs), dtype=float),
+            sampler=None,
+            acceleration=None,
+            deviation=np.zeros(exact.dof),
+            max_depth=12,
+            budget=5000,
+        )
+        hit_intervals = {e[1] for e in out.events if e[3]}  # midpoints fcl found colliding
+        assert hit_intervals <= set(b.between_indices)
+        assert hit_intervals <= set(a.between_indices), "spheres mode certified a contact"
+        if hit_intervals:
+            assert not a.collision_free
+        exact_hits += len(hit_intervals)
+    assert exact_hits > 0  # the sweeps do cross the block between samples
 
 
 def test_obstacle_wholly_inside_a_link_is_found(tmp_path_factory: pytest.TempPathFactory) -> None:
@@ -205,3 +250,84 @@ def test_a_new_node_is_always_placed_even_where_a_dropped_one_was():
         cert._place(b)  # the same node again: no second placement
         assert len(placed) == 2 * (k + 1)
         del b
+
+
+def _contacts(wb: Workbench, q: np.ndarray) -> np.ndarray:
+    return np.array([wb.checker.check(x, distance=False).in_collision for x in q])
+
+
+def _dense_times(traj, t0: float, t1: float, step: float, lever: np.ndarray) -> np.ndarray:
+    """Times in [t0, t1] [s] spaced so no body point moves more than `step` [m] between them.
+
+    A point moves at most h * sup|q'| @ lever in time h; sup|q'| <= the largest |q'| sampled
+    every 0.1 ms plus the acceleration bound times half that spacing.
+    """
+    from workbench.motion.validation import acceleration_bound
+
+    _, _, qd, _ = traj.sample(1e-4)
+    speed = (np.abs(qd).max(axis=0) + acceleration_bound(traj) * 0.5e-4) @ lever  # [m/s]
+    count = int(np.ceil((t1 - t0) * speed / step)) + 1
+    return np.linspace(t0, t1, max(count, 2))
+
+
+def test_a_planned_trajectory_is_checked_on_its_real_motion(
+    monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory
+) -> None:
+    """Twin: the exact check of `trajectory.at()` dense enough that no body point moves more
+    than a quarter of the thinnest obstacle between twin samples; a free report never hides
+    a contact. A 20 mm plate across the tool's path between two (0.2 s apart) samples must be
+    found between them on the real motion (sampler + acceleration bound), not the chord."""
+    import json
+    from pathlib import Path
+
+    from workbench.service.motion_plan import check_trajectory
+
+    monkeypatch.setenv("WORKBENCH_CACHE", str(tmp_path_factory.mktemp("plan")))
+    example = Path(__file__).resolve().parents[2] / "projects" / "mz07_cell.json"
+    data = json.loads(example.read_text())
+    wb = Workbench.from_dict(data)
+    plan = wb.plan_motion()
+    traj, rep = plan.trajectory, plan.collision_report
+    lever = CollisionEngine(wb.checker, "exact").body_lever.max(axis=0)
+    # The free plan: every body point within 5 mm (a quarter of the 20 mm floor, the thinnest
+    # obstacle) of a twin sample over the whole motion.
+    assert rep.collision_free and rep.fallback is None, rep.message
+    ts = _dense_times(traj, 0.0, traj.duration, 0.005, lever)
+    assert not np.any(_contacts(wb, traj.at(ts)[0])), "a free report missed a contact"
+
+    # Coarse samples (every 20th: 0.2 s) and a thin plate across the TCP's path halfway
+    # between two of them, where the plate touches neither sample.
+    k_step = 20
+    t_c = plan.times[::k_step]
+    tcp = (wb.checker.T_world_base @ wb.robot.fk(traj.at(t_c)[0]))[:, :3, 3]
+    order = np.argsort(-np.linalg.norm(np.diff(tcp, axis=0), axis=1))  # fastest first
+    found = None
+    for k in order[:6]:
+        tm = (t_c[k] + t_c[k + 1]) / 2
+        qm, qdm, _ = traj.at([tm])
+        T = wb.checker.T_world_base @ wb.robot.fk(qm)[0]
+        tip = T[:3, :3] @ np.array([0.0, 0.0, 0.15]) + T[:3, 3]  # the TCP (tool tip)
+        axis = int(np.argmax(np.abs(np.diff(tcp[k : k + 2], axis=0)[0])))
+        size = [120.0, 120.0, 120.0]
+        size[axis] = 20.0
+        plate = {"name": "plate", "shape": "box", "size": size, "pose": {"xyz": list(tip * 1e3)}}
+        trial = Workbench.from_dict(
+            {**data, "cell": {"objects": [*data["cell"]["objects"], plate]}}
+        )
+        if not np.any(_contacts(trial, traj.at(t_c)[0])):
+            found = (int(k), trial)
+            break
+    assert found is not None, "no interval whose samples both clear the plate"
+    k, trial = found
+    t_in = _dense_times(traj, t_c[k], t_c[k + 1], 0.005, lever)
+    dense = _contacts(trial, traj.at(t_in)[0])
+    assert dense.any()  # the construction: the motion crosses the plate between the samples
+    # (the straight chord between the samples need not; the check must follow the real motion)
+    got = check_trajectory(traj, t_c, traj.at(t_c)[0], trial.checker)
+    assert got.fallback is None and got.mode == "spheres"
+    assert got.colliding_indices == ()
+    assert not got.collision_free, "a free report missed the plate between samples"
+    assert k in got.between_indices
+    assert got.first_time is not None and t_c[k] <= got.first_time <= t_c[k + 1]
+    assert got.obstacle in ("plate", None)  # the plate, or an interval left uncertified
+    print(f"\ntwin: {len(ts)} + {len(t_in)} configurations; interval {k}: {got.message}")

@@ -23,6 +23,7 @@ from typing import Any, Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.collision.padded_spheres import PaddedSpheres
 from workbench.errors import InputError
 from workbench.geometry.sdf import SparseSDF
 from workbench.geometry.spheres import fit_spheres
@@ -89,22 +90,16 @@ class ConservativeChecker:
         self.centres: FloatArray = np.concatenate(centres)
         self.radii: FloatArray = np.concatenate(radii)
         self.sphere_link: NDArray[np.int64] = np.concatenate(owner)
-        # The same spheres padded per link, (L, K, 3) and (L, K): one small einsum places all
-        # of them without gathering a (N, S, 4, 4) copy of the link frames. Padding spheres
-        # sit at the link origin with radius -inf (clearance +inf: never the worst).
-        k = max(len(r) for r in radii)
-        self._pad_c = np.zeros((len(chosen), k, 3))
-        self._pad_r = np.full((len(chosen), k), -np.inf)
-        self._valid = np.zeros((len(chosen), k), bool)
-        for j, (c, r) in enumerate(zip(centres, radii, strict=True)):
-            self._pad_c[j, : len(r)], self._pad_r[j, : len(r)], self._valid[j, : len(r)] = (
-                c,
-                r,
-                True,
-            )
+        # The same spheres padded per link (L, K): one batched matmul places all of them.
+        self._pad = PaddedSpheres(
+            self.centres,
+            self.radii,
+            np.repeat(np.arange(len(chosen)), [len(r) for r in radii]),
+            len(chosen),
+        )
+        self._pad_c, self._pad_r, self._valid = self._pad.centres, self._pad.radii, self._pad.valid
+        k = self._pad_r.shape[1]
         self._pad_link = np.repeat(np.array(chosen), k)
-        self._pad_h = np.concatenate([self._pad_c, np.ones((len(chosen), k, 1))], axis=2)
-        self._pad_h = np.ascontiguousarray(self._pad_h.transpose(0, 2, 1))
         # Per link a bounding sphere of its spheres: centre = mean of the sphere centres (as
         # weights (L, K, 1) on the padded centres), radius = farthest sphere surface.
         self._bound_w = (self._valid / self._valid.sum(axis=1, keepdims=True))[..., None]
@@ -126,14 +121,11 @@ class ConservativeChecker:
         qa = np.atleast_2d(np.asarray(q, dtype=float))
         if qa.ndim != 2 or qa.shape[1] != self.robot.dof:
             raise InputError(f"q must have shape (N, {self.robot.dof}) [rad], got {np.shape(q)}")
-        T = self.robot.link_transforms(qa)[:, self.links, :3, :]  # (N, L, 3, 4)
-        # Homogeneous centres (L, 4, K): one batched matmul (BLAS) instead of an einsum.
-        return np.matmul(T, self._pad_h).swapaxes(-1, -2)
+        return self._pad.place(self.robot.link_transforms(qa)[:, self.links, :3, :])
 
     def sphere_centres(self, q: ArrayLike) -> FloatArray:
         """Return world sphere centres (N, S, 3) [m] for configurations q (N, dof) [rad]."""
-        c = self._placed(q)
-        return c[:, self._valid]
+        return self._pad.unpad(self._placed(q))
 
     def check(self, q: ArrayLike, *, early_exit: bool = False) -> ConservativeReport:
         """Return the report for configurations q (N, dof) [rad]; never misses a contact.
@@ -142,8 +134,11 @@ class ConservativeChecker:
         radius R). The distance d is 1-Lipschitz and the field is within max_error of it
         (a lower bound of it outside the band), so d(c) - r >= sdf(cb) - max_error - R for
         each sphere (c, r) of the link: the link's spheres are only looked up where that
-        bound does not clear the margin. No contact is missed; `clearance` is then a lower
-        bound for the links settled by their bounding sphere.
+        bound does not clear the margin. No contact is missed, and the true clearance is still
+        at least ``clearance - max_error``. It is not a bound of the full check, though: the
+        field is only within max_error of d and not 1-Lipschitz itself, so a settled link's
+        sdf(cb) - R can exceed its spheres' min sdf(c) - r by up to 2 * max_error, and a
+        sphere the full check flags can be cleared by its link's bounding sphere.
         """
         c = self._placed(q)
         n, nl, k = c.shape[:3]

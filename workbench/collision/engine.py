@@ -34,6 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.fcl_checker import CollisionReport
 from workbench.collision.motion_bound import JointLevers
+from workbench.collision.padded_spheres import PaddedSpheres
 from workbench.collision.pair_table import PairTable, pair_joints
 from workbench.collision.path_check import AccelerationBound, PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
@@ -306,19 +307,7 @@ class CollisionEngine:
                 self._inside_tests += [(len(self.always_pairs), i, o) for i, o in tests]
                 self.always_pairs.append((a, b))
         self._convex = {n: scene._entry(n).halfspaces for _, _, n in self._inside_tests}
-        self.pair_lever = {
-            (a, b): (
-                self._relative(
-                    np.array([idx[a]]),
-                    np.array([idx[b]]),
-                    self.body_lever[[idx[a]]],
-                    self.body_lever[[idx[b]]],
-                )[0]
-                if b in idx
-                else self.body_lever[idx[a]]
-            )
-            for a, b in scene.pairs
-        }
+        self.pair_lever = {p: self._pair_lever(p, self.body_lever, idx) for p in scene.pairs}
 
     def _tables(self, idx: dict[str, int], limits: FloatArray, cache_dir: str | None) -> None:
         """Set a `PairTable` for every exact pair whose distance depends on one or two joints.
@@ -499,6 +488,20 @@ class CollisionEngine:
         out = np.where(joint > low[:, None], far, 0.0)
         return np.where(same, 0.0, out) + 0.0 * near
 
+    def _pair_lever(
+        self, pair: tuple[str, str], lever: FloatArray, idx: dict[str, int]
+    ) -> FloatArray:
+        """Return the levers (dof,) [m/rad] of an exact pair from per-body levers (B, dof).
+
+        A body against a static obstacle moves with its own levers; two bodies by their
+        relative levers (`_relative`).
+        """
+        ia = idx[pair[0]]
+        if pair[1] not in idx:
+            return lever[ia]
+        ib = idx[pair[1]]
+        return self._relative(np.array([ia]), np.array([ib]), lever[[ia]], lever[[ib]])[0]
+
     # -- clearance items --------------------------------------------------------------
     def items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]:
         """Return clearance lower bounds (N, I) [m] (margin subtracted) and levers (I, dof)."""
@@ -510,19 +513,11 @@ class CollisionEngine:
 
     def sphere_centres(self, qs: ArrayLike) -> FloatArray:
         """Return world sphere centres (N, S, 3) [m] at qs (N, dof) [rad] (spheres mode)."""
-        if not hasattr(self, "_pad_h"):
-            # Centres padded per body, homogeneous (B, 4, K): one batched matmul places all.
-            nb, k = len(self.body_names), int(np.bincount(self.sphere_body).max())
-            pad = np.zeros((nb, 4, k))
-            slot = np.zeros(len(self.radii), np.int64)
-            for b in range(nb):
-                own = np.flatnonzero(self.sphere_body == b)
-                pad[b, :3, : len(own)], pad[b, 3, : len(own)] = self.centres[own].T, 1.0
-                slot[own] = b * k + np.arange(len(own))
-            self._pad_h, self._slot = pad, slot
-        T = self.body_poses(qs)[:, :, :3, :]  # (N, B, 3, 4)
-        c = np.matmul(T, self._pad_h).swapaxes(-1, -2)  # (N, B, K, 3)
-        return c.reshape(len(c), -1, 3)[:, self._slot]
+        if not hasattr(self, "_padded"):
+            self._padded = PaddedSpheres(
+                self.centres, self.radii, self.sphere_body, len(self.body_names)
+            )
+        return self._padded.unpad(self._padded.place(self.body_poses(qs)))
 
     def _sphere_items(
         self, qs: FloatArray, *, far: float | None = None
@@ -626,11 +621,7 @@ class CollisionEngine:
             ia, ib = idx[sa], idx[sb]
             d = segment_segment_distance(p[:, ia, 0], p[:, ia, 1], p[:, ib, 0], p[:, ib, 1])
             cols.append(d - self.cap_radius[ia] - self.cap_radius[ib])
-            levers.append(
-                self._relative(
-                    np.array([ia]), np.array([ib]), self.cap_lever[[ia]], self.cap_lever[[ib]]
-                )[0]
-            )
+            levers.append(self._pair_lever((sa, sb), self.cap_lever, idx))
         if not cols:
             return np.full((n, 1), np.inf), np.zeros((1, self.dof))
         return np.stack(cols, axis=1) - self.margin, np.stack(levers)
@@ -652,19 +643,7 @@ class CollisionEngine:
                     out[k, m] = 0.0
                 else:
                     out[k, m] = max(fcl.distance(ea.obj, eb.obj, dreq, fcl.DistanceResult()), 0.0)
-        levers = np.stack(
-            [
-                self._relative(
-                    np.array([idx[a]]),
-                    np.array([idx[b]]),
-                    self.body_lever[[idx[a]]],
-                    self.body_lever[[idx[b]]],
-                )[0]
-                if b in idx
-                else self.body_lever[idx[a]]
-                for a, b in scene.pairs
-            ]
-        )
+        levers = np.stack([self._pair_lever(p, self.body_lever, idx) for p in scene.pairs])
         return out - self.margin, levers
 
     def exact_twin(self) -> CollisionEngine:
