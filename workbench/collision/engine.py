@@ -21,7 +21,6 @@ segment between samples (0 for a path that is linear between samples).
 from __future__ import annotations
 
 import functools
-import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -40,6 +39,7 @@ from workbench.collision.path_check import AccelerationBound, PathCertifier
 from workbench.collision.robot_checker import PathReport, RobotCollisionChecker
 from workbench.errors import InputError
 from workbench.geometry.lbvh import LBVH
+from workbench.geometry.npz_cache import cache_path
 from workbench.geometry.sdf import SparseSDF
 from workbench.geometry.spheres import fit_spheres
 
@@ -119,7 +119,7 @@ class EnginePathReport(PathReport):
             )
         if self.collision_free:
             return (
-                f"collision-free, including between samples, with clearance"
+                f"collision-free, including between samples, with clearance of at least"
                 f" {self.clearance * 1e3:.1f} mm ({self.samples} samples,"
                 f" {self.evaluated} configurations checked, {self.mode})"
             )
@@ -339,27 +339,26 @@ class CollisionEngine:
                 tol=TABLE_TOL,
             )
             if cache_dir is not None:
-                table.attach(Path(cache_dir) / f"table-{self._table_digest((a, b), table)}.npz")
+                table.attach(self._table_path(cache_dir, (a, b), table))
             self.pair_tables[(a, b)] = table
         pairs = list(self.pair_lever)
         self._table_cols = [(pairs.index(p), t) for p, t in self.pair_tables.items()]
 
-    def _table_digest(self, pair: tuple[str, str], table: PairTable) -> str:
-        """Return a digest of everything a pair table's values depend on."""
+    def _table_path(self, cache_dir: str | Path, pair: tuple[str, str], table: PairTable) -> Path:
+        """Return the cache entry of a pair table, keyed by everything its values depend on."""
         scene = self.exact.scene
-        h = hashlib.sha256(b"pair-table-1")
         probes = np.random.default_rng(0).uniform(-1.0, 1.0, (3, self.dof))
         T = self.body_poses(probes)
+        inputs: list[NDArray] = []
+        kinds = []
         for name in pair:
             e = scene._entry(name)
-            h.update(np.asarray(e.mesh.vertices, float).tobytes())
-            h.update(np.asarray(e.mesh.faces, np.int64).tobytes())
-            h.update(str(e.solid.kind).encode())
             pose = T[:, self._body_index[name]] if name in self._body_index else e.T
-            h.update(np.ascontiguousarray(pose, float).tobytes())
-        for arr in (table.joints, table.lower, table.step, table.count):
-            h.update(np.ascontiguousarray(arr).tobytes())
-        return h.hexdigest()[:24]
+            inputs += [np.asarray(e.mesh.vertices, float), np.asarray(e.mesh.faces, np.int64)]
+            inputs.append(np.asarray(pose, float))
+            kinds.append(str(e.solid.kind))
+        inputs += [table.joints, table.lower, table.step, table.count]
+        return cache_path(cache_dir, "table", inputs, {"kinds": kinds, "format": 2})
 
     def save_tables(self) -> None:
         """Write the pair tables that gained nodes to their cache files (if any)."""
