@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import tempfile
 import zipfile
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
+
+from workbench.atomic_file import atomic_write
 
 __all__ = ["cache_path", "load_entry", "store_entry"]
 
@@ -59,14 +59,4 @@ def load_entry(path: Path, required: Iterable[str] = ()) -> dict[str, NDArray] |
 
 def store_entry(path: Path, arrays: Mapping[str, NDArray]) -> None:
     """Write `arrays` to `path` atomically (unique temporary file, fsync, rename)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            np.savez(fh, **dict(arrays))  # type: ignore[arg-type]
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    atomic_write(path, lambda fh: np.savez(fh, **dict(arrays)), binary=True)  # type: ignore[arg-type]
