@@ -118,3 +118,20 @@ def test_interval_acceleration_bound_holds_on_every_interval(
     # Not vacuous: far below the whole trajectory's bound on most short intervals.
     short = (t1 - t0) < 0.05
     assert np.median(bound[short].sum(axis=1) / acceleration_bound(traj).sum()) < 0.9
+
+
+def test_the_chord_slack_covers_the_jumps_where_pieces_meet(
+    cache: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The a·h²/8 chord bound needs a C1 motion; the pieces' rounding jumps stay in PIECE_JUMP."""
+    from workbench.collision.path_check import PIECE_JUMP
+
+    monkeypatch.setenv("WORKBENCH_CACHE", str(cache))
+    traj = Workbench.open(EXAMPLE).plan_motion().trajectory
+    starts = np.unique(
+        traj.piece_start[(traj.piece_start > 0) & (traj.piece_start < traj.duration)]
+    )
+    before = traj.at(np.nextafter(starts, -np.inf))[0]
+    after = traj.at(starts)[0]
+    jump = np.abs(after - before).max()
+    assert jump <= PIECE_JUMP

@@ -30,6 +30,9 @@ Pair = tuple[str, str]
 Sampler = Callable[[FloatArray], FloatArray]
 # (t0 (M,), t1 (M,)) [s] -> (M, dof) [rad/s^2]: a bound of |q''| over each interval.
 AccelerationBound = Callable[[FloatArray, FloatArray], FloatArray]
+#: Slack [rad] added to the chord deviation a·h²/8: that bound holds for a C1 motion, and a
+#: timed trajectory's pieces meet with position jumps of up to ~7e-9 rad (ruckig's rounding).
+PIECE_JUMP = 1e-7
 # From this bisection depth on, a group whose fast items keep failing is settled with exact
 # distances (one fcl distance per pair) rather than more midpoints.
 PROMOTE_DEPTH = 1
@@ -272,9 +275,9 @@ class PathCertifier:
             if callable(acceleration):
                 t0 = np.array([w[0].t for w in work])
                 acc = np.abs(np.asarray(acceleration(t0, t0 + h), float))
-                dev = acc * (h[:, None] ** 2) / 8.0
+                dev = acc * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
             elif acceleration is not None:
-                dev = acceleration[None] * (h[:, None] ** 2) / 8.0
+                dev = acceleration[None] * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
             else:
                 dev = np.broadcast_to(deviation, dq.shape)
             travel, tube = dq @ lev.T, dev @ lev.T
