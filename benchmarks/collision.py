@@ -260,7 +260,13 @@ def sphere_fits() -> None:
 
 
 def plan_checks() -> None:
-    """Workbench.plan_motion on projects/mz07_cell.json (then the polishing plan): dense vs fast."""
+    """Plans of two example projects, dense exact check of every sample against the fast mode."""
+    plan_check("mz07_cell.json", "Workbench.plan_motion", lambda wb: wb.plan_motion())
+    plan_check("polishing_cell.json", "polishing plan", lambda wb: wb.polishing.plan_motion())
+
+
+def plan_check(name: str, title: str, run) -> None:  # type: ignore[no-untyped-def]
+    """One project's plan `run(wb)`: cold, new session, fast vs dense (plan and check alone)."""
     import tempfile
     from pathlib import Path
 
@@ -268,20 +274,20 @@ def plan_checks() -> None:
     from workbench.service import Workbench
     from workbench.service.motion_plan import check_trajectory
 
-    project = Path(__file__).resolve().parents[1] / "projects" / "mz07_cell.json"
+    project = Path(__file__).resolve().parents[1] / "projects" / name
     shared = ce.shared_engine
     with tempfile.TemporaryDirectory() as tmp:
         ce.default_cache_dir = lambda: Path(tmp) / "sdf"  # type: ignore[assignment]
         t = time.perf_counter()
-        cold = Workbench.open(project).plan_motion()
+        cold = run(Workbench.open(project))
         cold_s = time.perf_counter() - t
         wb = Workbench.open(project)  # a new session: spheres and field from the disk cache
         t = time.perf_counter()
-        plan = wb.plan_motion()
+        plan = run(wb)
         warm_s = time.perf_counter() - t
-        fast = _best_of(lambda: wb.plan_motion())
+        fast = _best_of(lambda: run(wb))
         ce.shared_engine = lambda *a, **k: (None, "benchmark: the dense exact check")  # type: ignore[assignment]
-        dense = _best_of(lambda: wb.plan_motion())
+        dense = _best_of(lambda: run(wb))
         ce.shared_engine = shared  # type: ignore[assignment]
         q, times = plan.positions, plan.times
         exact_s = _best_of(lambda: wb.checker.check_path(q))
@@ -290,7 +296,8 @@ def plan_checks() -> None:
     ref = wb.checker.check_path(q)
     assert rep.colliding_indices == ref.colliding_indices
     print(
-        f"Workbench.plan_motion, projects/mz07_cell.json ({len(q)} samples every 10 ms; best of 3)"
+        f"{title}, projects/{name} ({len(q)} samples every"
+        f" {(times[1] - times[0]) * 1e3:.0f} ms; best of 3)"
     )
     print(f"  dense exact check of every sample (before)      {dense:7.3f} s")
     print(
@@ -305,55 +312,6 @@ def plan_checks() -> None:
     )
     print(f"  report: {rep.message}")
     print(f"  (cold plan: {cold.collision_report.message})")
-    polishing_plan_checks()
-
-
-def polishing_plan_checks() -> None:
-    """The polishing plan (projects/polishing_cell.json): dense exact samples vs the fast mode."""
-    import tempfile
-    from pathlib import Path
-
-    import workbench.service.collision_engine as ce
-    from workbench.service import Workbench
-    from workbench.service.motion_plan import check_trajectory
-
-    project = Path(__file__).resolve().parents[1] / "projects" / "polishing_cell.json"
-    shared = ce.shared_engine
-    with tempfile.TemporaryDirectory() as tmp:
-        ce.default_cache_dir = lambda: Path(tmp) / "sdf"  # type: ignore[assignment]
-        t = time.perf_counter()
-        Workbench.open(project).polishing.plan_motion()
-        cold_s = time.perf_counter() - t
-        wb = Workbench.open(project)  # a new session: spheres and field from the disk cache
-        t = time.perf_counter()
-        plan = wb.polishing.plan_motion()
-        warm_s = time.perf_counter() - t
-        fast = _best_of(lambda: wb.polishing.plan_motion())
-        ce.shared_engine = lambda *a, **k: (None, "benchmark: the dense exact check")  # type: ignore[assignment]
-        dense = _best_of(lambda: wb.polishing.plan_motion())
-        ce.shared_engine = shared  # type: ignore[assignment]
-        q, times = plan.positions, plan.times
-        exact_s = _best_of(lambda: wb.checker.check_path(q))
-        check_s = _best_of(lambda: check_trajectory(plan.trajectory, times, q, wb.checker))
-    rep = plan.collision_report
-    ref = wb.checker.check_path(q)
-    assert rep.colliding_indices == ref.colliding_indices
-    print(
-        f"polishing plan, projects/polishing_cell.json ({len(q)} samples every"
-        f" {(times[1] - times[0]) * 1e3:.0f} ms; best of 3)"
-    )
-    print(f"  dense exact check of every sample               {dense:7.3f} s")
-    print(
-        f"  fast mode, engine in memory                      {fast:7.3f} s   ratio {dense / fast:5.2f}x"
-    )
-    print(f"  fast mode, new session (spheres+field from cache) {warm_s:6.3f} s")
-    print(f"  fast mode, cold (fits spheres, builds the field) {cold_s:7.3f} s")
-    print(
-        f"  the check alone: dense exact {exact_s * 1e3:7.1f} ms, fast {check_s * 1e3:7.1f} ms"
-        f" (ratio {exact_s / check_s:4.2f}x); {rep.flagged_samples} of {len(q)} samples flagged,"
-        f" {rep.exact_pairs} exact pair tests, {rep.evaluated} configurations"
-    )
-    print(f"  report: {rep.message}")
 
 
 def main() -> None:
