@@ -4,27 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from block_cell import block_cell
 
 from workbench.collision.engine import CollisionEngine
 from workbench.collision.motion_bound import JointLevers
 from workbench.errors import InputError
 from workbench.service import Workbench
 
-PROJECT = {
-    "schema_version": 1,
-    "robot": {"preset": "mz07"},
-    "tool": {"tcp": {"xyz": [0, 0, 150]}, "size": [60, 80, 120]},
-    "cell": {
-        "objects": [
-            {
-                "name": "block",
-                "shape": "box",
-                "size": [300, 400, 300],
-                "pose": {"xyz": [600, 0, 300]},
-            }
-        ]
-    },
-}
+PROJECT = block_cell()
 Q_FREE = np.zeros(6)
 Q_HIT = np.array([0.0, -0.69, 0.691, 0.0, 0.0, 0.0])  # the tool 50 mm deep in the block
 

@@ -6,27 +6,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from block_cell import block_cell
 
 from workbench.collision.engine import TABLE_TOL, CollisionEngine
 from workbench.collision.pair_table import PairTable, pair_joints
 from workbench.errors import InputError
 from workbench.service import Workbench
 
-PROJECT = {
-    "schema_version": 1,
-    "robot": {"preset": "mz07"},
-    "tool": {"tcp": {"xyz": [0, 0, 150]}, "size": [60, 80, 120]},
-    "cell": {
-        "objects": [
-            {
-                "name": "block",
-                "shape": "box",
-                "size": [300, 400, 300],
-                "pose": {"xyz": [600, 0, 300]},
-            }
-        ]
-    },
-}
+PROJECT = block_cell()
 
 
 @pytest.fixture(scope="module")

@@ -4,33 +4,21 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from block_cell import block_cell
 
 from workbench.collision.engine import CollisionEngine
 from workbench.collision.path_check import PathCertifier
 from workbench.service import Workbench
 
-PROJECT = {
-    "schema_version": 1,
-    "robot": {"preset": "mz07"},
-    "tool": {"tcp": {"xyz": [0, 0, 150]}, "size": [60, 80, 120]},
-    "cell": {
-        "objects": [
-            {
-                "name": "block",
-                "shape": "box",
-                "size": [300, 400, 300],
-                "pose": {"xyz": [600, 0, 300]},
-            },
-            {
-                "name": "post",
-                "shape": "cylinder",
-                "radius": 60,
-                "height": 900,
-                "pose": {"xyz": [0, -550, 450]},
-            },
-        ]
-    },
-}
+PROJECT = block_cell(
+    {
+        "name": "post",
+        "shape": "cylinder",
+        "radius": 60,
+        "height": 900,
+        "pose": {"xyz": [0, -550, 450]},
+    }
+)
 
 
 # The thinnest obstacle of PROJECT [m]: the post's diameter (the block is 300 mm).

@@ -7,26 +7,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from block_cell import block_cell
 
 from workbench.errors import InputError, WorkbenchError
 from workbench.service import Workbench
 from workbench.service.collision_engine import CollisionService
 
-PROJECT = {
-    "schema_version": 1,
-    "robot": {"preset": "mz07"},
-    "tool": {"tcp": {"xyz": [0, 0, 150]}, "size": [60, 80, 120]},
-    "cell": {
-        "objects": [
-            {
-                "name": "block",
-                "shape": "box",
-                "size": [300, 400, 300],
-                "pose": {"xyz": [600, 0, 300]},
-            }
-        ]
-    },
-}
+PROJECT = block_cell()
 Q_HIT = np.array([0.0, -0.69, 0.691, 0.0, 0.0, 0.0])
 
 
