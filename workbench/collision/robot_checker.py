@@ -88,6 +88,9 @@ class RobotCollisionChecker:
         )
         self_pairs = [p for p in candidates if frozenset(p) not in touching]
         self.scene = CollisionScene(moving, list(cell), self_pairs=self_pairs, ignore=ignore)
+        # Fast engines built on this checker, per policy key (`plan_check.engine`), or the
+        # error their build raised; they go with the checker (a new project, a new checker).
+        self.engines: dict[tuple[str, int, int, str], object] = {}
 
     def _poses(self, q: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
         Ts = self.T_world_base @ self.robot.link_transforms(np.asarray(q, float))

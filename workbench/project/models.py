@@ -12,6 +12,7 @@ from pydantic import Field, model_validator
 
 from workbench.project.assembly import AssemblySpec
 from workbench.project.bending import BendingSpec
+from workbench.project.collision import CollisionSpec
 from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
 from workbench.project.polishing import PolishingSpec
 
@@ -165,3 +166,4 @@ class Project(StrictModel):
     bending: BendingSpec | None = None
     assembly: AssemblySpec | None = None
     polishing: PolishingSpec | None = None
+    collision: CollisionSpec | None = None  # plan collision policy; absent: spheres + SDF

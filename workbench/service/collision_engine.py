@@ -3,87 +3,25 @@
 from __future__ import annotations
 
 import os
-import weakref
 from collections.abc import Callable
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.collision import RobotCollisionChecker
+from workbench.collision import CollisionPolicy, default_cache_dir, plan_check
 from workbench.collision.engine import MODES, CollisionEngine, ConfigCheck, EnginePathReport
-from workbench.errors import InputError, WorkbenchError
+from workbench.collision.plan_check import POLICY_MODES, RESOLUTION, SPHERES_PER_LINK
+from workbench.errors import InputError
+from workbench.project.collision import CollisionSpec
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
 
 Progress = Callable[[float, str], None]
-# Parameters of the spheres engine that plans and the GUI share (fits and fields are cached).
-SPHERES_PER_LINK = 6
-RESOLUTION = 32
-# One engine (or the reason there is none) per exact checker and parameters; a checker is
-# replaced with its project, which drops its engines.
-_ENGINES: weakref.WeakKeyDictionary[
-    RobotCollisionChecker, dict[tuple[int, int, str], CollisionEngine | str]
-] = weakref.WeakKeyDictionary()
-
-
-def default_cache_dir() -> Path:
-    """Return where distance fields are cached (~/.cache/workbench/sdf, or $WORKBENCH_CACHE/sdf)."""
-    root = os.environ.get("WORKBENCH_CACHE")
-    return (Path(root) if root else Path.home() / ".cache" / "workbench") / "sdf"
-
-
-def shared_engine(
-    checker: RobotCollisionChecker,
-    *,
-    spheres_per_link: int = SPHERES_PER_LINK,
-    resolution: int = RESOLUTION,
-    cache_dir: str | os.PathLike[str] | None = None,
-    progress: Progress | None = None,
-) -> tuple[CollisionEngine | None, str | None]:
-    """Return (the spheres engine of `checker`, None), or (None, why the fast mode cannot apply).
-
-    Built on first use (sphere fits and the cell's field are cached on disk under
-    `cache_dir`, default `default_cache_dir()`), then kept for the checker. The fast mode does
-    not apply when the engine cannot be built (e.g. a joint that is not revolute) or when the
-    cell's mesh is not watertight (its field is unsigned: a link wholly inside an obstacle
-    would not be seen).
-    """
-    cache = str(Path(cache_dir) if cache_dir is not None else default_cache_dir())
-    key = (int(spheres_per_link), int(resolution), cache)
-    per = _ENGINES.setdefault(checker, {})
-    open_meshes = [
-        name for name, e in checker.scene.static.items() if e.solid.kind == "mesh" and not e.closed
-    ]
-    if open_meshes and key not in per:
-        per[key] = (
-            f"obstacle {open_meshes[0]!r} is not watertight, so the cell's distance field would"
-            " have no inside"
-        )
-    if key not in per:
-        try:
-            eng = CollisionEngine(
-                checker,
-                "spheres",
-                spheres_per_link=int(spheres_per_link),
-                resolution=int(resolution),
-                cache_dir=cache,
-                progress=progress,
-            )
-        except WorkbenchError as exc:
-            per[key] = f"the spheres engine could not be built ({exc})"
-        else:
-            per[key] = (
-                "the cell's merged mesh is not watertight, so its distance field has no inside"
-                if eng.sdf is not None and not eng.sdf.signed
-                else eng
-            )
-    elif progress is not None:
-        progress(1.0, "collision engine ready")
-    found = per[key]
-    return (None, found) if isinstance(found, str) else (found, None)
+__all__ = ["RESOLUTION", "SPHERES_PER_LINK", "CollisionService", "default_cache_dir"]
 
 
 class CollisionService:
@@ -98,48 +36,68 @@ class CollisionService:
         self,
         wb: Workbench,
         *,
-        spheres_per_link: int = SPHERES_PER_LINK,
-        resolution: int = RESOLUTION,
+        spheres_per_link: int | None = None,
+        resolution: int | None = None,
         cache_dir: str | os.PathLike[str] | None = None,
     ) -> None:
         self.wb = wb
-        self.spheres_per_link = spheres_per_link
-        self.resolution = resolution
-        self.cache_dir = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-        self._engines: dict[str, CollisionEngine] = {}
+        self._spheres_per_link = spheres_per_link
+        self._resolution = resolution
+        self._cache_dir = Path(cache_dir) if cache_dir is not None else None
 
-    def engine(self, mode: str = "spheres", *, progress: Progress | None = None) -> CollisionEngine:
-        """Return the engine of `mode`, building it on first use."""
+    def policy(self, mode: str = "spheres") -> CollisionPolicy:
+        """Return the project's collision policy with `mode` and this service's parameters."""
         if mode not in MODES:
             raise InputError(f"mode: {mode!r} is not one of {', '.join(MODES)}")
-        if mode == "spheres" and mode not in self._engines:
-            eng, _ = shared_engine(
-                self.wb.checker,
-                spheres_per_link=self.spheres_per_link,
-                resolution=self.resolution,
-                cache_dir=self.cache_dir,
-                progress=progress,
-            )
-            if eng is not None:  # shared with the motion plans
-                self._engines[mode] = eng
-                return eng
-        if mode not in self._engines:
-            self._engines[mode] = CollisionEngine(
-                self.wb.checker,
-                mode,
-                spheres_per_link=self.spheres_per_link,
-                resolution=self.resolution,
-                cache_dir=str(self.cache_dir),
-                progress=progress,
-            )
-        elif progress is not None:
-            progress(1.0, "collision engine ready")
-        return self._engines[mode]
+        base = self.wb.collision_policy
+        return replace(
+            base,
+            mode=mode,  # type: ignore[arg-type]
+            spheres_per_link=(
+                base.spheres_per_link if self._spheres_per_link is None else self._spheres_per_link
+            ),
+            resolution=base.resolution if self._resolution is None else self._resolution,
+            cache_dir=self._cache_dir if self._cache_dir is not None else base.cache_dir,
+        )
+
+    @property
+    def mode(self) -> str:
+        """Return the plan collision mode of the project (``"spheres"``, ``"exact"``, ``"capsules"``)."""
+        return self.wb.collision_policy.mode
+
+    def set_mode(self, mode: str) -> None:
+        """Set the project's plan collision mode (its `collision` section); the next plan uses it.
+
+        Refuses (InputError, nothing changed) a mode not in ``spheres``, ``exact``, ``capsules``.
+        """
+        if mode not in POLICY_MODES:
+            raise InputError(f"collision.mode: {mode!r} is not one of {', '.join(POLICY_MODES)}")
+        current = self.wb.project.collision or CollisionSpec()
+        self.wb.project.collision = current.model_copy(update={"mode": mode})
+
+    @property
+    def spheres_per_link(self) -> int:
+        """Return the spheres engine's spheres per link."""
+        return self.policy().spheres_per_link
+
+    @property
+    def resolution(self) -> int:
+        """Return the spheres engine's coarse SDF resolution."""
+        return self.policy().resolution
+
+    @property
+    def cache_dir(self) -> Path:
+        """Return the engines' cache folder."""
+        return self.policy().cache()
+
+    def engine(self, mode: str = "spheres", *, progress: Progress | None = None) -> CollisionEngine:
+        """Return the engine of `mode`, building it on first use (shared with the plans)."""
+        return plan_check.engine(self.wb.checker, self.policy(mode), progress=progress)
 
     @property
     def built(self) -> bool:
         """Return True once the spheres engine exists (no build is pending)."""
-        return "spheres" in self._engines
+        return isinstance(self.wb.checker.engines.get(self.policy().key()), CollisionEngine)
 
     def check(self, q: ArrayLike | None = None, *, mode: str = "spheres") -> ConfigCheck:
         """Return the check of joints q (dof,) [rad] (default: the current joints)."""

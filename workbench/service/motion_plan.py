@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from workbench.collision import PathReport, RobotCollisionChecker
+from workbench.collision import CollisionPolicy, PathReport, RobotCollisionChecker, plan_check
 from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import invert_transform
@@ -22,7 +22,7 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
-from workbench.motion.validation import AccelerationBound, interval_acceleration_bound
+from workbench.motion.validation import AccelerationBound
 from workbench.project.models import ProgramSpec
 from workbench.service.convert import DEG, MM, pose_to_matrix
 from workbench.service.robot_setup import RobotSetup
@@ -209,20 +209,10 @@ def check_trajectory(
     *,
     progress: Progress | None = None,
 ) -> EnginePathReport:
-    """Return the collision report of a trajectory sampled at `times` [s] as q (N, dof) [rad].
-
-    Fast mode: the shared spheres engine (`shared_engine`), bisecting between samples on the
-    real motion (`trajectory.at`) with the exact acceleration bound of each interval
-    (`interval_acceleration_bound`). Fallback: every sample
-    checked exactly with python-fcl, nothing certified between them (`fallback` says why).
-    """
-    return check_motion(
-        times,
-        q,
-        checker,
-        sampler=lambda t: trajectory.at(t)[0],
-        acceleration=interval_acceleration_bound(trajectory),
-        progress=progress,
+    """Forward to `workbench.collision.check_trajectory` with the default policy (until every
+    caller passes the project's `Workbench.collision_policy`)."""
+    return plan_check.check_trajectory(
+        trajectory, times, q, checker, CollisionPolicy(), progress=progress
     )
 
 
@@ -235,50 +225,16 @@ def check_motion(
     acceleration: NDArray[np.float64] | AccelerationBound,
     progress: Progress | None = None,
 ) -> EnginePathReport:
-    """Return the collision report of a motion sampled at `times` [s] as q (N, dof) [rad].
-
-    sampler(times (M,) [s]) -> (M, dof) [rad] gives the real motion between samples;
-    acceleration (dof,) [rad/s^2] bounds |q''| over it, or bound(t0, t1) -> (M, dof) bounds it
-    over each interval (the motion must be C1: the chord
-    deviation bound ``acceleration * h**2 / 8`` needs a continuous velocity). Fast mode and
-    fallback as in `check_trajectory`.
-    """
-    from workbench.service.collision_engine import shared_engine
-
-    report = progress or (lambda f, m: None)
-    engine, why = shared_engine(checker, progress=lambda f, m: report(0.2 * f, m))
-    if engine is not None:
-        return engine.check_path(
-            q,
-            times,
-            sampler=sampler,
-            acceleration=acceleration,
-            progress=lambda f, m: report(0.2 + 0.8 * f, m),
-        )
-    dense = checker.check_path(q, progress=lambda f, m: report(0.2 + 0.8 * f, m))
-    hits = dense.colliding_indices
-    extra: dict[str, object] = {}
-    if hits:
-        rep = dense.first_report
-        a, b = rep.colliding[0] if rep is not None else (None, None)
-        extra = {
-            "first_time": float(times[hits[0]]),
-            "first_q": q[hits[0]],
-            "link": a,
-            "obstacle": b,
-        }
-    return EnginePathReport(
-        collision_free=dense.collision_free,
-        first_index=dense.first_index,
-        first_report=dense.first_report,
-        min_distance=dense.min_distance,
-        samples=dense.samples,
-        colliding_indices=hits,
-        mode="exact",
-        evaluated=len(q),
-        certified=False,
-        fallback=why,
-        **extra,  # type: ignore[arg-type]
+    """Forward to `workbench.collision.check_motion` with the default policy (until every
+    caller passes the project's `Workbench.collision_policy`)."""
+    return plan_check.check_motion(
+        times,
+        q,
+        checker,
+        CollisionPolicy(),
+        sampler=sampler,
+        acceleration=acceleration,
+        progress=progress,
     )
 
 

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.collision import CollisionReport, RobotCollisionChecker
+from workbench.collision import CollisionPolicy, CollisionReport, RobotCollisionChecker
 from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import branch_name
@@ -252,6 +252,12 @@ class Workbench:
     def checker(self) -> RobotCollisionChecker:
         """Return the exact (python-fcl) robot-versus-cell checker."""
         return self._checker
+
+    @property
+    def collision_policy(self) -> CollisionPolicy:
+        """Return how plans check collisions: the project's `collision` section (default spheres)."""
+        spec = self._project.collision
+        return spec.to_si() if spec is not None else CollisionPolicy()
 
     def collision_status(self, q: ArrayLike | None = None) -> CollisionReport:
         """Return the collision report at `q` (default: current joints, cached)."""
