@@ -94,7 +94,16 @@ def test_angle_conventions_against_scipy():
         np.testing.assert_allclose(wpr_deg(M), R.as_euler("xyz", degrees=True), atol=1e-9)
         rv = R.as_rotvec()
         np.testing.assert_allclose(rotation_vector(M), rv, atol=1e-9)
-    assert rng is not None
+    # Near 0 and near pi, where axis-angle formulas lose precision: the angle is kept and the
+    # vector rebuilds the matrix.
+    axes = rng.normal(size=(50, 3))
+    axes /= np.linalg.norm(axes, axis=1, keepdims=True)
+    angles = np.concatenate([rng.uniform(0, 1e-6, 25), np.pi - rng.uniform(0, 1e-6, 25)])
+    for axis, angle in zip(axes, angles, strict=True):
+        M = Rotation.from_rotvec(axis * angle).as_matrix()
+        rv = rotation_vector(M)
+        assert np.linalg.norm(rv) == pytest.approx(angle, abs=1e-9)
+        np.testing.assert_allclose(Rotation.from_rotvec(rv).as_matrix(), M, atol=1e-12)
     np.testing.assert_allclose(rotation_vector(np.eye(3)), 0.0)
 
 
