@@ -20,7 +20,6 @@ import numpy as np
 from workbench.geometry import OBB, obb_overlap
 from workbench.geometry.transforms import make_transform, rot_z
 from workbench.project.bending import PartSpec
-from workbench.service.bending import part_spec_to_si
 from workbench.sheetmetal import SheetMetalPart
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -29,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 def seed_part() -> SheetMetalPart:
     """Return seed 000's Fig. 7 part from its project file (mm/deg converted as the service does)."""
     data = json.loads((ROOT / "projects" / "parts" / "seed_part.json").read_text())
-    return SheetMetalPart.from_spec(part_spec_to_si(PartSpec.model_validate(data), None))
+    return SheetMetalPart.from_spec(PartSpec.model_validate(data).to_si())
 
 
 def cell() -> tuple[OBB, list[str]]:

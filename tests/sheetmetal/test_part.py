@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -10,7 +11,6 @@ import pytest
 
 from workbench.errors import InputError
 from workbench.project.bending import PartSpec
-from workbench.service.bending import part_spec_to_si
 from workbench.sheetmetal import SheetMetalPart, bend_allowance
 
 SEED = Path(__file__).resolve().parents[2] / "projects" / "parts" / "seed_part.json"
@@ -18,7 +18,7 @@ SEED = Path(__file__).resolve().parents[2] / "projects" / "parts" / "seed_part.j
 
 def seed_spec() -> dict:
     """The seed part converted from mm/deg (file) to SI (model), as the service does it."""
-    return part_spec_to_si(PartSpec.model_validate(json.loads(SEED.read_text())), None)
+    return dataclasses.asdict(PartSpec.model_validate(json.loads(SEED.read_text())).to_si())
 
 
 def rect(w: float, h: float) -> list[list[float]]:

@@ -21,10 +21,9 @@ from workbench.gui.timeline import SECONDS, Motion
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import BendingPlan, DiePlacement
-    from workbench.sheetmetal import OBBTree
+    from workbench.service.bending import BendingPlan, DiePlacement, OBBTree
 
-MM = 1e3  # m -> mm for display
+MM_PER_M = 1e3  # m -> mm for display
 PART_COLOR = (120, 170, 230)
 LEVEL_COLORS = ((40, 160, 60), (240, 150, 20), (150, 60, 200), (20, 150, 190), (200, 200, 40))
 HIT_COLOR = (230, 30, 30)
@@ -70,12 +69,11 @@ class BendingPanel:
         self.animate = g.add_button("Animate folds", icon=viser.Icon.PLAYER_PLAY)
         flanges = tuple(f.name for f in part.flanges)
         self.grasp = g.add_dropdown("Grasp flange", options=flanges, initial_value=svc.grasp_flange)
-        off = svc.grasp_offset() * MM
+        off = svc.grasp_offset() * MM_PER_M
         self.offset_x = g.add_number("Grasp x [mm]", initial_value=round(float(off[0]), 1), step=1)
         self.offset_y = g.add_number("Grasp y [mm]", initial_value=round(float(off[1]), 1), step=1)
         self.levels = []
-        folded = svc.fold(nb)
-        depth = 1 + max(int(folded.obb_tree(f).level.max()) for f in range(len(part.flanges)))
+        depth = svc.tree_depth()
         with g.add_folder("OBB tree levels"):
             for lvl in range(depth):
                 name = "root" if lvl == 0 else ("flanges" if lvl == depth - 1 else f"split {lvl}")
@@ -111,7 +109,8 @@ class BendingPanel:
         self.offset_y.on_update(guarded(s, "Grasp offset")(self._on_grasp_offset))
         self.plan_button.on_click(guarded(s, "Plan bending")(self._on_plan))
         self.part_frame = s.scene.add_frame("/bending/part", show_axes=False)
-        self.nodes.append(self.part_frame)
+        self.grasp_frame = s.scene.add_frame("/bending/part/obb", show_axes=False)
+        self.nodes += [self.part_frame, self.grasp_frame]
         self.mesh: Any = None
         try:
             self.redraw()
@@ -123,7 +122,7 @@ class BendingPanel:
         part = svc.part
         return (
             f"**Part `{svc.part_spec().name}`**: {len(part.flanges)} flanges, {len(part.bends)} "
-            f"bends, t = {part.thickness * MM:g} mm, blank area {part.blank_area() * 1e6:.0f} mm²"
+            f"bends, t = {part.thickness * MM_PER_M:g} mm, blank area {part.blank_area() * 1e6:.0f} mm²"
         )
 
     def remove(self) -> None:
@@ -159,7 +158,7 @@ class BendingPanel:
             nb = len(svc.part.bends)
             step = float(np.clip(self.step.value, 0.0, nb))
             state = svc.fold(step)
-            k = min(int(np.floor(step + 1e-9)), nb - 1)
+            k = svc.bend_on_die(step)
             mesh = state.solid()
             if self.mesh is not None:
                 self.mesh.remove()
@@ -186,15 +185,15 @@ class BendingPanel:
         self.box_nodes.clear()
         tree = self._tree
         assert tree is not None
+        place(self.grasp_frame, T_part_grasp)  # the boxes are given in the tree's (grasp) frame
         for i in range(len(tree.flanges)):
-            T = T_part_grasp @ make_transform(tree.boxes.rotation[i], tree.boxes.center[i])
             h = self.server.scene.add_box(
                 f"/bending/part/obb/n{i}",
                 color=LEVEL_COLORS[int(tree.level[i]) % len(LEVEL_COLORS)],
                 dimensions=tuple(2 * tree.boxes.half_extents[i]),
                 wireframe=True,
             )
-            place(h, T)
+            place(h, make_transform(tree.boxes.rotation[i], tree.boxes.center[i]))
             self.box_nodes.append(h)
         self._show_levels()
 
@@ -241,7 +240,7 @@ class BendingPanel:
     def _on_grasp_flange(self, event: viser.GuiEvent) -> None:
         svc = self.app.wb.bending
         svc.set_grasp(str(self.grasp.value))
-        off = svc.grasp_offset() * MM
+        off = svc.grasp_offset() * MM_PER_M
         self._reset()
         self._set_offset_widgets(off)
 
@@ -257,7 +256,7 @@ class BendingPanel:
         if self._quiet:
             return
         svc = self.app.wb.bending
-        off = np.array([float(self.offset_x.value), float(self.offset_y.value)]) / MM
+        off = np.array([float(self.offset_x.value), float(self.offset_y.value)]) / MM_PER_M
         svc.set_grasp(svc.grasp_flange, off)
         self._reset()
 
@@ -291,12 +290,13 @@ class BendingPanel:
     def _show_plots(self, plan: BendingPlan) -> None:
         for h in self.plots:
             h.remove()
+        cost = self.app.wb.bending.check_cost(plan)  # measured on request, not by the plan
         x = np.arange(1, len(plan.times) + 1, dtype=float)
         fx = uplot.Series(label="frame")
         with self.plot_folder:
             self.plots = [
                 self.server.gui.add_uplot(
-                    data=(x, plan.tree_tests.astype(float), plan.flat_tests.astype(float)),
+                    data=(x, cost.tree_tests.astype(float), cost.flat_tests.astype(float)),
                     series=(
                         fx,
                         uplot.Series(label="tree", stroke="#2ca02c", width=2),
@@ -307,7 +307,7 @@ class BendingPanel:
                     scales=SECONDS,
                 ),
                 self.server.gui.add_uplot(
-                    data=(x, plan.tree_seconds * 1e6, plan.flat_seconds * 1e6),
+                    data=(x, cost.tree_seconds * 1e6, cost.flat_seconds * 1e6),
                     series=(
                         fx,
                         uplot.Series(label="tree [µs]", stroke="#2ca02c", width=2),
@@ -337,8 +337,7 @@ class BendingPanel:
 
         def follow(t: float) -> None:
             place(self.part_frame, svc.part_pose_at(plan, t))
-            f = int(np.argmin(np.abs(plan.times - t)))  # the nearest checked frame
-            rep = plan.part_report.frame(f)
+            rep = plan.part_report.frame(plan.nearest_frame(t))
             self._check = (rep.nodes_tested, rep.nodes_hit)
             self._show_levels()
 

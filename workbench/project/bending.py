@@ -1,19 +1,41 @@
 """The project file's `bending` section: press-brake bending (seed 000): part, bend sequence, grasp, cell.
 
 Millimetres and degrees. The part is given inline (`part`) or as a path to a part JSON
-(`part_file`, e.g. ``parts/seed_part.json``) with the same fields.
+(`part_file`, e.g. ``parts/seed_part.json``) with the same fields. `BendingSpec.to_si`
+returns the section in SI units (`BendingSI`), the only form the service uses.
+
+Two fields hold a bend sequence, with one meaning: the part's `sequence` is the order the
+part comes with (a part file may be shared by projects); the section's `sequence` is this
+project's order and replaces it when given (the API's `set_sequence` writes it). The rule
+both must satisfy is `workbench.sheetmetal.sequence` (every bend exactly once).
 """
 
 from __future__ import annotations
 
+import json
+from dataclasses import dataclass
+from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import AfterValidator, Field, model_validator
+import numpy as np
+from numpy.typing import NDArray
+from pydantic import AfterValidator, Field, ValidationError, model_validator
 
+from workbench.errors import ProjectError
+from workbench.geometry.transforms import xyz_rpy_to_transform
 from workbench.project.common import Pose, Positive, StrictModel, Vec3mm
+from workbench.sheetmetal.die import Die
+from workbench.sheetmetal.grasp import Grasp
+from workbench.sheetmetal.kfactor import MIN_R_OVER_T
+from workbench.sheetmetal.sequence import sequence_problem
+from workbench.sheetmetal.transfer import Transfer
 
-#: Seed 000 Table 1 starts at r/t = 0.5: smaller inner radii are outside the table.
-MIN_R_OVER_T = 0.5
+MM = 1e-3  # m per mm
+DEG = np.pi / 180.0  # rad per deg
+
+
+def _matrix(pose: Pose) -> NDArray[np.float64]:
+    return xyz_rpy_to_transform(np.asarray(pose.xyz) * MM, np.asarray(pose.rpy) * DEG)
 
 
 def _polygon(v: list[list[float]]) -> list[list[float]]:
@@ -37,10 +59,16 @@ def _included(v: float) -> float:
 
 
 def _unique(v: list[str]) -> list[str]:
-    dup = sorted({s for s in v if v.count(s) > 1})
-    if dup:
-        raise ValueError(f"each bend may appear once; repeated {dup}")
+    problem = sequence_problem(v)  # the bends are not known here: repeats only
+    if problem is not None:
+        raise ValueError(problem)
     return v
+
+
+def _check_sequence(seq: list[str], bends: list[str], where: str) -> None:
+    problem = sequence_problem(seq, bends)
+    if problem is not None:
+        raise ValueError(f"{where}: {problem}")
 
 
 class FlangeSpec(StrictModel):
@@ -96,15 +124,65 @@ class PartSpec(StrictModel):
             _check_sequence(self.sequence, [b.name for b in self.bends], "sequence")
         return self
 
-
-def _check_sequence(seq: list[str], bends: list[str], where: str) -> None:
-    missing = [n for n in bends if n not in seq]
-    unknown = [s for s in seq if s not in bends]
-    if missing or unknown:
-        raise ValueError(
-            f"{where}: must name every bend exactly once; missing {missing}, unknown {unknown}"
-            f" (bends are {bends})"
+    def to_si(self, sequence: list[str] | None = None) -> PartSI:
+        """Return the part in SI units; `sequence` (the project's) replaces the part's own."""
+        seq = sequence if sequence is not None else self.sequence
+        return PartSI(
+            name=self.name,
+            thickness=self.thickness * MM,
+            k_factor=self.k_factor,
+            flanges=tuple(FlangeSI(f.name, np.asarray(f.polygon) * MM) for f in self.flanges),
+            bends=tuple(
+                BendSI(
+                    name=b.name,
+                    parent=b.parent,
+                    parent_edge=b.parent_edge,
+                    child=b.child,
+                    child_edge=b.child_edge,
+                    included_angle=b.included_angle * DEG,
+                    inner_radius=b.inner_radius * MM,
+                    direction=b.direction,
+                    k_factor=b.k_factor,
+                )
+                for b in self.bends
+            ),
+            sequence=None if seq is None else tuple(seq),
         )
+
+
+@dataclass(frozen=True, eq=False)
+class FlangeSI:
+    """A flange in SI: its polygon (n, 2) [m]."""
+
+    name: str
+    polygon: NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class BendSI:
+    """A bend in SI: included angle [rad], inner radius [m]."""
+
+    name: str
+    parent: str
+    parent_edge: int
+    child: str
+    child_edge: int
+    included_angle: float
+    inner_radius: float
+    direction: str
+    k_factor: float | None
+
+
+@dataclass(frozen=True, eq=False)
+class PartSI:
+    """The part in SI (m, rad): the plain spec of `SheetMetalPart.from_spec`, as a dataclass."""
+
+    name: str
+    thickness: float
+    k_factor: float | None
+    flanges: tuple[FlangeSI, ...]
+    bends: tuple[BendSI, ...]
+    sequence: tuple[str, ...] | None  # the bend order used: the project's, else the part's
 
 
 class GraspSpec(StrictModel):
@@ -114,6 +192,18 @@ class GraspSpec(StrictModel):
     offset: Annotated[list[float], Field(min_length=2, max_length=2)] | None = None
     # [x, y] mm in the flange's polygon frame; None = the polygon's centroid
     yaw: float = 0.0  # deg, gripper rotation about the flange normal
+
+    def to_si(self) -> Grasp:
+        """Return the grasp in SI: offset [m] (None: the centroid), yaw [rad]."""
+        off = None if self.offset is None else np.asarray(self.offset, float) * MM
+        return Grasp(self.flange, off, self.yaw * DEG)
+
+    def set_si(self, grasp: Grasp, *, keep_yaw: bool = False) -> None:
+        """Store `grasp` (SI) in this section (mm, deg); `keep_yaw` leaves the yaw as it is."""
+        self.flange = grasp.flange
+        self.offset = None if grasp.offset is None else [float(v / MM) for v in grasp.offset]
+        if not keep_yaw:
+            self.yaw = float(grasp.yaw / DEG)
 
 
 class DieSpec(StrictModel):
@@ -151,3 +241,56 @@ class BendingSpec(StrictModel):
                     f"grasp.flange: no flange {self.grasp.flange!r}; flanges are {names}"
                 )
         return self
+
+    def read_part(self, base_dir: Path) -> PartSpec:
+        """Return the part section: inline, or read from `part_file` (relative to `base_dir`).
+
+        ProjectError names `bending.part_file` when the file cannot be read or is invalid.
+        """
+        if self.part is not None:
+            return self.part
+        from workbench.project.io import problems_from  # io imports the models: not at the top
+
+        assert self.part_file is not None
+        p = Path(self.part_file)
+        p = p if p.is_absolute() else base_dir / p
+        try:
+            data = json.loads(p.read_text())
+        except OSError:
+            raise ProjectError(
+                f"bending.part_file: cannot read {p}; fix the path (relative to the project file)"
+            ) from None
+        except json.JSONDecodeError as exc:
+            raise ProjectError(f"bending.part_file: {p} is not valid JSON: {exc}") from None
+        try:
+            return PartSpec.model_validate(data)
+        except ValidationError as exc:
+            problems = [(f"bending.part_file:{path}", m) for path, m in problems_from(exc)]
+            lines = "; ".join(f"{a}: {b}" for a, b in problems)
+            raise ProjectError(f"bending.part_file ({p}): {lines}", problems) from None
+
+    def to_si(self, part: PartSpec) -> BendingSI:
+        """Return the section in SI units, with `part` (from `read_part`) and its sequence."""
+        return BendingSI(
+            part=part.to_si(self.sequence),
+            grasp=self.grasp.to_si(),
+            die=Die(_matrix(self.die.pose), self.die.length * MM, "bending.die.length"),
+            transfer=Transfer(
+                retract=np.asarray(self.retract) * MM,
+                T_world_vias=np.array([_matrix(p) for p in self.transfer]).reshape(-1, 4, 4),
+                T_world_pallet=_matrix(self.pallet),
+                where="bending",
+            ),
+            frames=int(self.frames),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class BendingSI:
+    """The `bending` section in SI units (m, rad): the part, the grasp, the die, the transfer."""
+
+    part: PartSI
+    grasp: Grasp
+    die: Die
+    transfer: Transfer
+    frames: int  # transfer frames checked

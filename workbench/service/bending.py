@@ -1,278 +1,103 @@
-"""The open project's press-brake bending (seed 000): the part, its bend sequence, the grasp, OBB-tree checks and the plan.
+"""`Workbench.bending`: the open project's press-brake bending (seed 000).
 
-SI units (m, rad, s). The project's `bending` section (mm, deg) is converted here.
+Builds the domain objects of `workbench.sheetmetal` from the project's `bending` section
+(in SI through `BendingSpec.to_si`), calls them and returns their results (SI units).
 """
 
 from __future__ import annotations
 
-import json
-import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
-from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import shapely
 from numpy.typing import ArrayLike, NDArray
-from pydantic import ValidationError
 
-from workbench.collision.engine import EnginePathReport
-from workbench.errors import InputError, ProjectError, UnreachableError
-from workbench.geometry.obb import OBB, obb_overlap
-from workbench.geometry.transforms import invert_transform, make_transform, rot_x, rot_z
-from workbench.motion import Trajectory, smooth_joint_path
-from workbench.project.bending import BendingSpec, PartSpec
-from workbench.project.io import problems_from
-from workbench.service.convert import DEG, MM, pose_to_matrix
-from workbench.service.motion_plan import check_trajectory
-from workbench.sheetmetal import FoldedState, FramesReport, OBBTree, SheetMetalPart
-from workbench.sheetmetal.obstacles import ExactShape, Obstacles, confirm_exact
+from workbench.collision import check_trajectory
+from workbench.errors import InputError, UnreachableError
+from workbench.motion import smooth_joint_path
+from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
+from workbench.service.section import SectionService
+from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
+from workbench.sheetmetal.check_cost import CheckCost, check_cost
+from workbench.sheetmetal.die import (
+    DiePlacement,
+    bend_on_die,
+    die_part_pose,
+    die_placements,
+    die_targets,
+)
+from workbench.sheetmetal.grasp import (
+    Grasp,
+    T_flange_grasp,
+    check_flange,
+    checked_grasp,
+    grasp_point,
+)
+from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
+from workbench.sheetmetal.plan import BendingPlan, FirstCollision, Playback, first_collision
+from workbench.sheetmetal.plan import playback as sample_playback
+from workbench.sheetmetal.sequence import check_sequence
+from workbench.sheetmetal.transfer import (
+    base_flange_poses,
+    carried_poses,
+    check_part,
+    transfer_poses,
+    world_tcp,
+)
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
 
+__all__ = [
+    "BendingPlan",
+    "BendingService",
+    "CheckCost",
+    "DiePlacement",
+    "FirstCollision",
+    "OBBTree",
+    "Playback",
+]
+
 Progress = Callable[[float, str], None]
 
 
-@dataclass(frozen=True, eq=False)
-class DiePlacement:
-    """The robot holding the part with bend `bend` (sequence index `step`) on the die."""
-
-    bend: str
-    step: int
-    T_world_part: NDArray[np.float64]  # (4, 4) [m]
-    T_world_tcp: NDArray[np.float64]  # (4, 4) [m]
-    q: NDArray[np.float64]  # (dof,) [rad]
-
-
-@dataclass(frozen=True)
-class FirstCollision:
-    """The first colliding transfer frame: what hit what (part flanges or robot bodies).
-
-    `between`: the robot collides (or could not be certified free: no bodies named) between
-    frame `frame` and the next, at `time` [s]; the frames themselves are free.
-    """
-
-    frame: int
-    time: float  # [s]
-    kind: str  # "part" or "robot"
-    flanges: tuple[str, ...]
-    obstacles: tuple[str, ...]
-    between: bool = False
-
-    def describe(self) -> str:
-        """Return one line naming the frame, the flange(s) or robot body and the obstacle(s)."""
-        what = (
-            f"flange {', '.join(repr(f) for f in self.flanges)}"
-            if self.kind == "part"
-            else f"robot {', '.join(self.flanges)}"
-        )
-        where = (
-            f"between frames {self.frame + 1} and {self.frame + 2}"
-            if self.between
-            else f"frame {self.frame + 1}"
-        )
-        if self.between and not self.flanges:
-            return (
-                f"{where} (t = {self.time:.3f} s): robot clearance below what the check"
-                " resolves; treat it as touching"
-            )
-        return (
-            f"{where} (t = {self.time:.3f} s): {what} hits "
-            f"{', '.join(repr(o) for o in self.obstacles)}"
-        )
-
-
-@dataclass(frozen=True, eq=False)
-class BendingPlan:
-    """Die placements for every bend, and the checked transfer from the press brake to the pallet.
-
-    Per transfer frame (F,): `times` [s], `joints` (F, dof) [rad], `T_world_grasp` (F, 4, 4)
-    [m] of the gripped flange, OBB tests of the tree and of the flat per-flange loop, and the
-    check times [s] of both. The part is checked by its OBB tree; the robot (links and tool,
-    not the part it holds) by the conservative engine: `robot_colliding` is the exact verdict
-    of each frame, `robot_between` (F,) marks frames whose interval to the next collides (or
-    could not be certified), and `robot_report` (an `EnginePathReport`) states the guarantee
-    between frames or the first failure.
-    """
-
-    placements: tuple[DiePlacement, ...]
-    configuration: str
-    trajectory: Trajectory = field(repr=False)
-    times: NDArray[np.float64]
-    joints: NDArray[np.float64]
-    T_world_grasp: NDArray[np.float64]
-    T_world_part: NDArray[np.float64]
-    part_report: FramesReport
-    tree_tests: NDArray[np.int64]
-    flat_tests: NDArray[np.int64]
-    tree_seconds: NDArray[np.float64]
-    flat_seconds: NDArray[np.float64]
-    part_colliding: NDArray[np.bool_]
-    robot_colliding: NDArray[np.bool_]
-    first_collision: FirstCollision | None
-    obstacle_names: tuple[str, ...]
-    robot_report: EnginePathReport | None = None
-    robot_between: NDArray[np.bool_] | None = None
-
-    @property
-    def colliding(self) -> NDArray[np.bool_]:
-        """Return (F,) frames where the part or the robot collides (at the frame or up to the next)."""
-        out = self.part_colliding | self.robot_colliding
-        return out if self.robot_between is None else out | self.robot_between
-
-    @property
-    def ok(self) -> bool:
-        """Return True when every transfer frame is collision-free."""
-        return self.first_collision is None
-
-    def summary(self) -> str:
-        """Return a short human summary (markdown)."""
-        F = len(self.times)
-        free = ~self.part_colliding
-        ratio = (
-            self.tree_tests[free].sum() / max(self.flat_tests[free].sum(), 1) if free.any() else 0
-        )
-        head = (
-            f"{len(self.placements)} bends placed on the die ({self.configuration}); transfer "
-            f"{self.trajectory.duration:.2f} s, {F} frames checked. OBB tests on free frames: "
-            f"tree/flat = {ratio:.2f}."
-        )
-        robot = f" Robot: {self.robot_report.message}." if self.robot_report is not None else ""
-        if self.first_collision is None:
-            return head + " Collision-free." + robot
-        return head + f" First collision: {self.first_collision.describe()}." + robot
-
-
-@dataclass(frozen=True, eq=False)
-class Playback:
-    """The transfer sampled for the timeline: times [s], joints, velocities, accelerations, TCP speed [m/s]."""
-
-    times: NDArray[np.float64]
-    positions: NDArray[np.float64]
-    velocities: NDArray[np.float64]
-    accelerations: NDArray[np.float64]
-    tcp_speed: NDArray[np.float64]
-    colliding: NDArray[np.bool_]
-
-
-def part_spec_to_si(spec: PartSpec, sequence: Sequence[str] | None) -> dict[str, Any]:
-    """Return the SI spec of `SheetMetalPart.from_spec` from a part section in mm/deg."""
-    return {
-        "thickness": spec.thickness * MM,
-        "k_factor": spec.k_factor,
-        "flanges": [{"name": f.name, "polygon": np.asarray(f.polygon) * MM} for f in spec.flanges],
-        "bends": [
-            {
-                "name": b.name,
-                "parent": b.parent,
-                "parent_edge": b.parent_edge,
-                "child": b.child,
-                "child_edge": b.child_edge,
-                "included_angle": b.included_angle * DEG,
-                "inner_radius": b.inner_radius * MM,
-                "direction": b.direction,
-                "k_factor": b.k_factor,
-            }
-            for b in spec.bends
-        ],
-        "sequence": list(sequence) if sequence is not None else spec.sequence,
-    }
-
-
-def flat_loop(tree: OBBTree, obstacles: OBB, T_world_grasp: NDArray[np.float64]) -> bool:
-    """Return the seed's baseline verdict of one pose (4, 4): a loop over flanges, each box vs every obstacle."""
-    leaves = tree.boxes[tree.leaves].transformed(T_world_grasp)
-    hit = False
-    for k in range(len(tree.leaves)):
-        hit |= bool(obb_overlap(leaves[k], obstacles).any())
-    return hit
-
-
-def _time_checks(
-    tree: OBBTree, obstacles: OBB, T: NDArray[np.float64], repeat: int = 3
-) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Return per-frame check times [s] (best of `repeat`) of the tree DFS and the flat loop."""
-    F = len(T)
-    tree_s, flat_s = np.full(F, np.inf), np.full(F, np.inf)
-    for _ in range(repeat):
-        for f in range(F):
-            t0 = time.perf_counter()
-            tree.collide(obstacles, T[f])
-            t1 = time.perf_counter()
-            flat_loop(tree, obstacles, T[f])
-            t2 = time.perf_counter()
-            tree_s[f], flat_s[f] = min(tree_s[f], t1 - t0), min(flat_s[f], t2 - t1)
-    return tree_s, flat_s
-
-
-class BendingService:
+class BendingService(SectionService[BendingSpec]):
     """`Workbench.bending`: the bending workflow of the open project (SI units)."""
 
+    section = "bending"
+    missing = "add one (see docs)"
+
     def __init__(self, wb: Workbench) -> None:
-        self.wb = wb
+        super().__init__(wb)
         self._part: SheetMetalPart | None = None
         self._part_spec: PartSpec | None = None
         self._plan: BendingPlan | None = None
 
     # -- project section ------------------------------------------------------------------
-    @property
-    def spec(self) -> BendingSpec:
-        """Return the project's `bending` section; InputError when the project has none."""
-        spec = self.wb.project.bending
-        if spec is None:
-            raise InputError("bending: the project has no 'bending' section; add one (see docs)")
-        return spec
-
-    @property
-    def available(self) -> bool:
-        """Return True when the project has a `bending` section."""
-        return self.wb.project.bending is not None
-
     def part_spec(self) -> PartSpec:
         """Return the part section (inline, or read from `part_file`, validated)."""
         if self._part_spec is None:
-            spec = self.spec
-            if spec.part is not None:
-                self._part_spec = spec.part
-            else:
-                assert spec.part_file is not None
-                p = Path(spec.part_file)
-                p = p if p.is_absolute() else self.wb.base_dir / p
-                try:
-                    data = json.loads(p.read_text())
-                except OSError:
-                    raise ProjectError(
-                        f"bending.part_file: cannot read {p}; fix the path (relative to the project file)"
-                    ) from None
-                except json.JSONDecodeError as exc:
-                    raise ProjectError(f"bending.part_file: {p} is not valid JSON: {exc}") from None
-                try:
-                    self._part_spec = PartSpec.model_validate(data)
-                except ValidationError as exc:
-                    problems = [(f"bending.part_file:{path}", m) for path, m in problems_from(exc)]
-                    lines = "; ".join(f"{a}: {b}" for a, b in problems)
-                    raise ProjectError(f"bending.part_file ({p}): {lines}", problems) from None
+            self._part_spec = self.spec.read_part(self.wb.base_dir)
         return self._part_spec
+
+    def si(self) -> BendingSI:
+        """Return the `bending` section in SI units (its part and sequence resolved)."""
+        return self.spec.to_si(self.part_spec())
 
     @property
     def part(self) -> SheetMetalPart:
         """Return the part with the project's bend sequence (checked: no flange bent into another)."""
         if self._part is None:
-            part = self._build_part(self.spec.sequence)
-            names = [f.name for f in part.flanges]
-            if self.spec.grasp.flange not in names:
-                raise InputError(
-                    f"bending.grasp.flange: no flange {self.spec.grasp.flange!r}; flanges are {names}"
-                )
+            si = self.si()
+            part = self._build_part(si.part)
+            check_flange(part, si.grasp.flange, "bending.grasp.flange")
             self._part = part
         return self._part
 
-    def _build_part(self, sequence: Sequence[str] | None) -> SheetMetalPart:
-        ps = self.part_spec()
+    def _build_part(self, spec: PartSI) -> SheetMetalPart:
         try:
-            return SheetMetalPart.from_spec(part_spec_to_si(ps, sequence))
+            return SheetMetalPart.from_spec(spec)
         except InputError as exc:
             raise InputError(f"bending.part: {exc}") from None
 
@@ -283,19 +108,17 @@ class BendingService:
 
     def set_sequence(self, names: Sequence[str]) -> None:
         """Use bend sequence `names`; InputError if it repeats, misses or names unknown bends, or is infeasible."""
-        names = [str(n).strip() for n in names]
-        bends = [b.name for b in self.part_spec().bends]
-        dup = sorted({n for n in names if names.count(n) > 1})
-        missing = [n for n in bends if n not in names]
-        unknown = [n for n in names if n not in bends]
-        if dup or missing or unknown:
-            raise InputError(
-                f"sequence: must name every bend exactly once; repeated {dup}, missing {missing}, "
-                f"unknown {unknown} (bends are {bends})"
-            )
-        part = self._build_part(names)  # raises when a flange is bent into another
+        part_si = self.si().part
+        names = check_sequence([str(n).strip() for n in names], [b.name for b in part_si.bends])
+        part = self._build_part(replace(part_si, sequence=tuple(names)))  # raises when infeasible
         self.spec.sequence = names
         self._part, self._plan = part, None
+
+    # -- grasp --------------------------------------------------------------------------
+    @property
+    def grasp(self) -> Grasp:
+        """Return the grasp (SI): flange, offset [m] or None (centroid), yaw [rad]."""
+        return self.spec.grasp.to_si()
 
     @property
     def grasp_flange(self) -> str:
@@ -304,41 +127,21 @@ class BendingService:
 
     def grasp_offset(self) -> NDArray[np.float64]:
         """Return the grasp point (2,) [m] in the gripped flange's polygon frame."""
-        g = self.spec.grasp
-        if g.offset is not None:
-            return np.asarray(g.offset, float) * MM
-        poly = self.part.flanges[self.part.flange_index(g.flange)].polygon
-        c = shapely.Polygon(poly).centroid
-        return np.array([c.x, c.y])
+        return grasp_point(self.part, self.grasp)
 
     def set_grasp(
         self, flange: str, offset: ArrayLike | None = None, yaw: float | None = None
     ) -> None:
         """Grip `flange` at `offset` (2,) [m] in its polygon frame (None: centroid), gripper `yaw` [rad]."""
-        names = [f.name for f in self.part.flanges]
-        if flange not in names:
-            raise InputError(f"grasp.flange: no flange {flange!r}; flanges are {names}")
-        off = None
-        if offset is not None:
-            off = np.asarray(offset, float)
-            if off.shape != (2,) or not np.all(np.isfinite(off)):
-                raise InputError(f"grasp.offset: expected 2 finite numbers [m], got {offset!r}")
-            poly = shapely.Polygon(self.part.flanges[names.index(flange)].polygon)
-            if not poly.buffer(1e-9).contains(shapely.Point(*off)):
-                raise InputError(
-                    f"grasp.offset: ({off[0] / MM:.1f}, {off[1] / MM:.1f}) mm lies outside flange "
-                    f"{flange!r}; pick a point on it"
-                )
-        if yaw is not None and not np.isfinite(yaw):
-            raise InputError(f"grasp.yaw: must be finite, got {yaw!r}")
-        g = self.spec.grasp
-        g.flange = flange
-        g.offset = None if off is None else [float(v / MM) for v in off]
-        if yaw is not None:
-            g.yaw = float(yaw / DEG)
+        grasp = checked_grasp(self.part, flange, offset, 0.0 if yaw is None else yaw)
+        self.spec.grasp.set_si(grasp, keep_yaw=yaw is None)
         self._plan = None
 
-    # -- part states --------------------------------------------------------------------
+    def T_flange_grasp(self) -> NDArray[np.float64]:
+        """Return the TCP pose (4, 4) [m] in the gripped flange's frame: on its top face, z into the sheet."""
+        return T_flange_grasp(self.part, self.grasp)
+
+    # -- part states and cell -------------------------------------------------------------
     def fold(self, step: float) -> FoldedState:
         """Return the part after `step` bends of the sequence (float: partway, for animation)."""
         return self.part.fold(step)
@@ -348,46 +151,20 @@ class BendingService:
         s = len(self.part.bends) if step is None else step
         return self.part.fold(s).obb_tree(self.grasp_flange)
 
-    def T_flange_grasp(self) -> NDArray[np.float64]:
-        """Return the TCP pose (4, 4) [m] in the gripped flange's frame: on its top face, z into the sheet."""
-        off = self.grasp_offset()
-        R = rot_z(self.spec.grasp.yaw * DEG) @ rot_x(np.pi)
-        return make_transform(R, [off[0], off[1], self.part.thickness / 2])
+    def tree_depth(self) -> int:
+        """Return the number of levels of the deepest OBB tree of the folded part (any grasp)."""
+        folded = self.part.fold(len(self.part.bends))
+        return 1 + max(int(folded.obb_tree(f).level.max()) for f in range(len(self.part.flanges)))
 
-    # -- obstacles ----------------------------------------------------------------------
     def obstacles(self) -> Obstacles:
         """Return the cell's colliding objects as OBBs [m] (cylinders and meshes confirmed exactly)."""
-        names, centers, rots, halves, exact = [], [], [], [], []
-        for body in self.wb.cell:
-            if not body.collide:
-                continue
-            T, s = body.T_world_body, body.solid
-            if s.kind == "box":
-                assert s.size is not None
-                c, R, h = T[:3, 3], T[:3, :3], np.asarray(s.size) / 2
-                shape = None
-            elif s.kind == "cylinder":
-                assert s.radius is not None and s.height is not None
-                c, R, h = T[:3, 3], T[:3, :3], np.array([s.radius, s.radius, s.height / 2])
-                shape = ExactShape(s.fcl_geometry(), T)
-            else:
-                mesh = s.to_trimesh().copy()
-                mesh.apply_transform(T)
-                box = OBB.from_points(mesh.vertices)
-                c, R, h = box.center, box.rotation, box.half_extents
-                shape = ExactShape(s.fcl_geometry(), T, mesh if mesh.is_watertight else None)
-            names.append(body.name)
-            centers.append(c)
-            rots.append(R)
-            halves.append(h)
-            exact.append(shape)
-        if not names:
-            return Obstacles((), OBB(np.zeros((0, 3)), np.zeros((0, 3, 3)), np.zeros((0, 3))), ())
-        return Obstacles(
-            tuple(names), OBB(np.array(centers), np.array(rots), np.array(halves)), tuple(exact)
-        )
+        return cell_obstacles((b.name, b.solid, b.T_world_body) for b in self.wb.cell if b.collide)
 
     # -- process ------------------------------------------------------------------------
+    def bend_on_die(self, step: float) -> int:
+        """Return the sequence index of the bend on the die with the part folded to `step`."""
+        return bend_on_die(step, len(self.part.bends))
+
     def die_part_pose(self, step: int) -> NDArray[np.float64]:
         """Return T_world_part (4, 4) [m] with bend number `step` of the sequence on the die.
 
@@ -395,45 +172,18 @@ class BendingService:
         side on the die, the inner side up (towards the punch); the gripped flange on the
         robot's (-y) side. Raises InputError when the bend line is longer than the die.
         """
-        part = self.part
-        if not 0 <= step < len(part.bends):
-            raise InputError(f"step: must be in 0..{len(part.bends) - 1}, got {step}")
-        b = part.bends[step]
-        die = self.spec.die
-        if part.bend_lengths[step] > die.length * MM + 1e-9:
-            raise InputError(
-                f"bend {b.name!r}: its bend line is {part.bend_lengths[step] / MM:.1f} mm long; the die "
-                f"is {die.length:g} mm (bending.die.length): it does not fit"
-            )
-        state = part.fold(step)
-        geo = state.bend_cross_section(step)
-        w = geo["w"]
-        mid = (geo["pa"] + geo["pb"]) / 2 + geo["n"] * part.bend_allowances[step] / 2
-        T_parent_line = make_transform(
-            np.column_stack([geo["d"], np.cross(w, geo["d"]), w]), mid - w * part.thickness / 2
-        )
-        T_part_line = state.T_part_flange[b.parent] @ T_parent_line
-        g = part.flange_index(self.grasp_flange)
-        grasp = state.T_part_flange[g] @ self.T_flange_grasp()
-        if (invert_transform(T_part_line) @ grasp)[1, 3] > 0:
-            T_part_line = T_part_line @ make_transform(rot_z(np.pi), np.zeros(3))
-        return pose_to_matrix(die.pose) @ invert_transform(T_part_line)
+        return die_part_pose(self.part, step, self.si().die, self.grasp)
 
-    def _T_part_tcp(self, step: int) -> NDArray[np.float64]:
-        state = self.part.fold(step)
-        g = self.part.flange_index(self.grasp_flange)
-        return state.T_part_flange[g] @ self.T_flange_grasp()
+    def _world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
+        setup = self.wb.setup
+        return world_tcp(self.wb.robot, setup.T_world_base, setup.T_flange_tcp, q)
 
     def _ik(
         self, T_world_tcp: NDArray[np.float64], names: list[str], q_start: NDArray[np.float64]
     ) -> tuple[NDArray[np.float64], str]:
         """Return joints (N, dof) reaching the TCP poses (N, 4, 4) with one arm configuration."""
         setup, model = self.wb.setup, self.wb.robot
-        Tb = (
-            invert_transform(setup.T_world_base)
-            @ T_world_tcp
-            @ invert_transform(setup.T_flange_tcp)
-        )
+        Tb = base_flange_poses(setup.T_world_base, setup.T_flange_tcp, T_world_tcp)
         if getattr(model, "is_analytic", False):
             from workbench.kinematics import branch_name
 
@@ -477,30 +227,14 @@ class BendingService:
         Raises UnreachableError naming the bend the robot cannot hold on the die.
         """
         part = self.part
-        steps = range(len(part.bends))
-        T_part = [self.die_part_pose(s) for s in steps]
-        T_tcp = np.array([T_part[s] @ self._T_part_tcp(s) for s in steps])
-        names = [f"bend {part.bends[s].name!r} (step {s + 1}) on the die" for s in steps]
+        T_part, T_tcp, names = die_targets(part, self.si().die, self.grasp)
         q, label = self._ik(T_tcp, names, self.wb.joints)
-        return tuple(
-            DiePlacement(part.bends[s].name, s, T_part[s], T_tcp[s], q[s]) for s in steps
-        ), label
+        return die_placements(part, T_part, T_tcp, q), label
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
         """Return TCP poses (N, 4, 4) [m] of the transfer: retract, via poses, pallet; with names."""
-        spec = self.spec
-        R_die = pose_to_matrix(spec.die.pose)[:3, :3]
-        ret = last.T_world_tcp.copy()
-        ret[:3, 3] += R_die @ (np.asarray(spec.retract) * MM)
-        vias = [pose_to_matrix(p) for p in spec.transfer]
-        n = len(self.part.bends)
-        drop = pose_to_matrix(spec.pallet) @ self._T_part_tcp(n)
-        names = (
-            ["bending.retract"]
-            + [f"bending.transfer[{i}]" for i in range(len(vias))]
-            + ["bending.pallet"]
-        )
-        return np.array([ret, *vias, drop]), names
+        si = self.si()
+        return transfer_poses(si.transfer, si.die, last, self.part, si.grasp)
 
     def plan(self, *, progress: Progress | None = None) -> BendingPlan:
         """Place every bend on the die, then plan and check the transfer to the pallet.
@@ -513,7 +247,7 @@ class BendingService:
         `progress(fraction, message)` reports the stages.
         """
         report = progress or (lambda f, m: None)
-        model = self.wb.robot
+        model, part, grasp = self.wb.robot, self.part, self.grasp
         report(0.0, "placing each bend line on the die")
         placements, label = self.placements()
         report(0.25, "planning the transfer")
@@ -527,66 +261,39 @@ class BendingService:
             position_limits=model.limits,
             exact_stop=[0, len(q_way) - 1],
         )
-        F = int(self.spec.frames)
+        F = self.si().frames
         times = np.linspace(0.0, traj.duration, F)
         q = traj.at(times)[0]
-        setup = self.wb.setup
-        T_world_tcp = setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp
-        T_world_grasp = T_world_tcp @ invert_transform(self.T_flange_grasp())
-        n = len(self.part.bends)
-        T_world_part = T_world_tcp @ invert_transform(self._T_part_tcp(n))
+        T_world_grasp, T_world_part = carried_poses(self._world_tcp(q), part, grasp)
         report(0.4, f"checking {F} frames with the OBB tree")
-        tree = self.tree()
         obst = self.obstacles()
-        rep = confirm_exact(
-            tree, tree.collide_frames(obst.boxes, T_world_grasp), obst, T_world_grasp
-        )
-        flat = tree.flat_collide_frames(obst.boxes, T_world_grasp)
-        tree_s, flat_s = _time_checks(tree, obst.boxes, T_world_grasp)
+        rep = check_part(self.tree(), obst, T_world_grasp)
         report(0.7, "checking the robot against the cell")
         # The checker holds the robot's links and tool, not the part: the tool and the part it
         # grips are never a pair, and the part's own checks are the tree's above.
+        checker = self.wb.checker
         path = check_trajectory(
-            traj, times, q, self.wb.checker, progress=lambda f, m: report(0.7 + 0.25 * f, m)
+            traj,
+            times,
+            q,
+            checker,
+            self.wb.collision_policy,
+            progress=lambda f, m: report(0.7 + 0.25 * f, m),
         )
         robot_hit = np.zeros(F, dtype=bool)
         robot_hit[list(path.colliding_indices)] = True
         robot_between = np.zeros(F, dtype=bool)
         robot_between[list(path.between_indices)] = True
-        first = None
-        hit_frames = np.flatnonzero(rep.collides | robot_hit)
-        if path.between and path.first_index is not None and path.first_time is not None:
-            # The robot's first failure lies between two free frames, before any frame hit.
-            if not len(hit_frames) or path.first_time < times[hit_frames[0]]:
-                first = FirstCollision(
-                    path.first_index,
-                    float(path.first_time),
-                    "robot",
-                    (path.link,) if path.link else (),
-                    (path.obstacle,) if path.obstacle else (),
-                    between=True,
-                )
-        if len(hit_frames) and first is None:
-            f0 = int(hit_frames[0])
-            if rep.collides[f0]:
-                fr = rep.frame(f0)
-                first = FirstCollision(
-                    f0,
-                    float(times[f0]),
-                    "part",
-                    tuple(self.part.flanges[i].name for i in fr.hit_flanges),
-                    tuple(obst.names[i] for i in fr.hit_obstacles),
-                )
-            else:
-                rr = self.wb.checker.check(q[f0], distance=False)
-                first = FirstCollision(
-                    f0,
-                    float(times[f0]),
-                    "robot",
-                    tuple(a for a, _ in rr.colliding),
-                    tuple(b for _, b in rr.colliding),
-                )
-        plan = BendingPlan(
+        first = first_collision(
+            times,
+            rep,
+            robot_hit,
+            path,
+            [f.name for f in part.flanges],
+            obst.names,
+            lambda f: checker.check(q[f], distance=False).colliding,
+        )
+        self._plan = BendingPlan(
             placements=placements,
             configuration=label,
             trajectory=traj,
@@ -595,10 +302,6 @@ class BendingService:
             T_world_grasp=T_world_grasp,
             T_world_part=T_world_part,
             part_report=rep,
-            tree_tests=rep.n_obb_tests,
-            flat_tests=flat.n_obb_tests,
-            tree_seconds=tree_s,
-            flat_seconds=flat_s,
             part_colliding=rep.collides,
             robot_colliding=robot_hit,
             first_collision=first,
@@ -606,27 +309,26 @@ class BendingService:
             robot_report=path,
             robot_between=robot_between,
         )
-        self._plan = plan
         report(1.0, "done")
-        return plan
+        return self._plan
 
     @property
     def last_plan(self) -> BendingPlan | None:
         """Return the latest plan (None before `plan`, or after the sequence or grasp changed)."""
         return self._plan
 
+    def check_cost(self, plan: BendingPlan, repeat: int = 3) -> CheckCost:
+        """Return OBB tests and check times per frame of the tree and the flat loop (Fig. 12).
+
+        A measurement on request (the GUI's plot), not part of `plan`.
+        """
+        return check_cost(self.tree(), self.obstacles().boxes, plan.T_world_grasp, repeat)
+
     def part_pose_at(self, plan: BendingPlan, t: float) -> NDArray[np.float64]:
         """Return T_world_part (4, 4) [m] of the folded part carried by the robot at time `t` [s]."""
         q = plan.trajectory.at([t])[0][0]
-        setup = self.wb.setup
-        T_tcp = setup.T_world_base @ self.wb.robot.fk(q) @ setup.T_flange_tcp
-        return T_tcp @ invert_transform(self._T_part_tcp(len(self.part.bends)))  # type: ignore[no-any-return]
+        return carried_poses(self._world_tcp(q), self.part, self.grasp)[1]
 
     def playback(self, plan: BendingPlan, dt: float = 0.02) -> Playback:
         """Return the transfer sampled every `dt` [s] for the timeline, frames' verdicts carried over."""
-        t, p, v, a = plan.trajectory.sample(dt)
-        setup = self.wb.setup
-        tcp = (setup.T_world_base @ self.wb.robot.fk(p) @ setup.T_flange_tcp)[:, :3, 3]
-        speed = np.r_[0.0, np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(t)]
-        k = np.clip(np.searchsorted(plan.times, t, side="right") - 1, 0, len(plan.times) - 1)
-        return Playback(t, p, v, a, speed, plan.colliding[k])
+        return sample_playback(plan, self._world_tcp, dt)

@@ -8,7 +8,9 @@ an fcl mesh is only a surface), so the verdict is exact for the flange boxes.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import fcl
 import numpy as np
@@ -17,6 +19,9 @@ from numpy.typing import NDArray
 
 from workbench.geometry.obb import OBB
 from workbench.sheetmetal.obbtree import FramesReport, OBBTree
+
+if TYPE_CHECKING:
+    from workbench.collision.shapes import Solid
 
 
 @dataclass(frozen=True, eq=False)
@@ -35,6 +40,42 @@ class Obstacles:
     names: tuple[str, ...]
     boxes: OBB
     exact: tuple[ExactShape | None, ...]
+
+
+def cell_obstacles(bodies: Iterable[tuple[str, Solid, NDArray[np.float64]]]) -> Obstacles:
+    """Return the obstacles of `(name, solid, T_world_body)` triples [m].
+
+    A box is its own exact OBB; a cylinder enters as its bounding OBB, confirmed by its fcl
+    solid; a mesh as the OBB of its vertices, confirmed by its fcl surface (and containment
+    when it is closed).
+    """
+    names, centers, rots, halves, exact = [], [], [], [], []
+    for name, s, T in bodies:
+        shape: ExactShape | None
+        if s.kind == "box":
+            assert s.size is not None
+            c, R, h = T[:3, 3], T[:3, :3], np.asarray(s.size) / 2
+            shape = None
+        elif s.kind == "cylinder":
+            assert s.radius is not None and s.height is not None
+            c, R, h = T[:3, 3], T[:3, :3], np.array([s.radius, s.radius, s.height / 2])
+            shape = ExactShape(s.fcl_geometry(), T)
+        else:
+            mesh = s.to_trimesh().copy()
+            mesh.apply_transform(T)
+            box = OBB.from_points(mesh.vertices)
+            c, R, h = box.center, box.rotation, box.half_extents
+            shape = ExactShape(s.fcl_geometry(), T, mesh if mesh.is_watertight else None)
+        names.append(name)
+        centers.append(c)
+        rots.append(R)
+        halves.append(h)
+        exact.append(shape)
+    if not names:
+        return Obstacles((), OBB(np.zeros((0, 3)), np.zeros((0, 3, 3)), np.zeros((0, 3))), ())
+    return Obstacles(
+        tuple(names), OBB(np.array(centers), np.array(rots), np.array(halves)), tuple(exact)
+    )
 
 
 def winding_number(mesh: trimesh.Trimesh, points: NDArray[np.float64]) -> NDArray[np.float64]:

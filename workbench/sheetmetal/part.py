@@ -17,7 +17,8 @@ mm/deg)::
          "inner_radius": 0.002, "direction": "up"},       # up = towards the parent's +z
         ...
       ],
-      "sequence": ["b3", "b1", ...],      # optional; default: the order of "bends"
+      "sequence": ["b3", "b1", ...],      # optional; default: the order of "bends";
+                                          # every bend exactly once (sheetmetal.sequence)
     }
 
 Each flange's frame has its polygon in the x-y plane and z = 0 on the sheet's mid-surface
@@ -27,6 +28,7 @@ child flange lies a bend allowance beyond its parent's edge.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -37,6 +39,7 @@ from numpy.typing import NDArray
 from workbench.errors import InputError
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T, bend_allowance, k_factor
 from workbench.sheetmetal.polygon import signed_area
+from workbench.sheetmetal.sequence import check_sequence
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.folding import FoldedState
@@ -126,8 +129,13 @@ class SheetMetalPart:
 
     # ------------------------------------------------------------------ construction
     @classmethod
-    def from_spec(cls, spec: dict[str, Any], *, check: bool = True) -> SheetMetalPart:
-        """Return a part built from the plain spec of the module docstring (SI units)."""
+    def from_spec(cls, spec: Any, *, check: bool = True) -> SheetMetalPart:
+        """Return a part built from the plain spec of the module docstring (SI units).
+
+        `spec` is a dict, or a dataclass with those fields (e.g. the project's `PartSI`).
+        """
+        if dataclasses.is_dataclass(spec) and not isinstance(spec, type):
+            spec = dataclasses.asdict(spec)
         if not isinstance(spec, dict):
             raise InputError(f"part spec: expected a dict, got {type(spec).__name__}")
         for key in ("thickness", "flanges", "bends"):
@@ -213,15 +221,7 @@ class SheetMetalPart:
             raise InputError(f"bends: names must be unique, got {bnames}")
         seq = spec.get("sequence")
         if seq is not None:
-            seq = [str(s) for s in seq]
-            dup = sorted({s for s in seq if seq.count(s) > 1})
-            missing = [n for n in bnames if n not in seq]
-            unknown = [s for s in seq if s not in bnames]
-            if dup or missing or unknown:
-                raise InputError(
-                    "sequence: must name every bend exactly once; "
-                    f"repeated {dup}, missing {missing}, unknown {unknown} (bends are {bnames})"
-                )
+            seq = check_sequence(seq, bnames)
             bends = [bends[bnames.index(s)] for s in seq]
         return cls(t, flanges, bends, check=check)
 
