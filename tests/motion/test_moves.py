@@ -15,13 +15,16 @@ from workbench.motion.validation import validate_trajectory
 class Gantry:
     """q = (x, y, z [m], yaw, pitch, roll [rad]); flange R = Rz(yaw) Ry(pitch) Rx(roll)."""
 
+    name = "gantry"
+    dof = 6
+    is_analytic = False  # per-pose IK (two rows), no branches
     limits = np.array([[-2, 2]] * 3 + [[-np.pi, np.pi]] * 3, float)
 
     def fk(self, q):
         q = np.asarray(q, float)
         return make_transform(rpy_to_matrix(q[..., [5, 4, 3]]), q[..., :3])
 
-    def ik(self, T):
+    def ik(self, T, *, q_near=None):
         roll, pitch, yaw = matrix_to_rpy(T[:3, :3])
         wrap = lambda a: (a + np.pi) % (2 * np.pi) - np.pi  # noqa: E731
         a = np.array([*T[:3, 3], yaw, pitch, roll])
@@ -118,14 +121,14 @@ def test_flip_through_gimbal_lock_and_unreachable_name_the_point():
     assert np.abs(np.diff(path.positions, axis=0)).max() < 0.1
 
     class OneBranch(Gantry):
-        def ik(self, T):
+        def ik(self, T, *, q_near=None):
             return super().ik(T)[:1]  # pitch within +-90 deg only: yaw and roll must flip by pi
 
     with pytest.raises(PlanningError, match=r"move 0 \(over\): point \d+ .*joint jump"):
         plan_program(OneBranch(), Program("flip", (Move.linear(over, name="over"),)), q0, V)
 
     class Short(Gantry):
-        def ik(self, T):
+        def ik(self, T, *, q_near=None):
             return np.zeros((0, 6)) if T[0, 3] > 0.2 else super().ik(T)
 
     far = _pose([0.4, 0.0, 0.5], np.degrees([0.0, 1.3, 0.0])[::-1])

@@ -5,6 +5,8 @@ from __future__ import annotations
 from workbench.kinematics.dh_robot import IK_TOL, DHRobot
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.link_shapes import flange_mesh, link_meshes
+from workbench.kinematics.model import RobotModel
+from workbench.kinematics.path_ik import PathIK, follow_path
 from workbench.kinematics.presets import MZ07_SEED_DH, MZ07_SEED_TOOL
 from workbench.kinematics.singularity import Singularities
 from workbench.kinematics.urdf_robot import URDFRobot
@@ -14,9 +16,12 @@ __all__ = [
     "MZ07_SEED_DH",
     "MZ07_SEED_TOOL",
     "DHRobot",
+    "PathIK",
+    "RobotModel",
     "Singularities",
     "URDFRobot",
     "branch_name",
     "flange_mesh",
+    "follow_path",
     "link_meshes",
 ]

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pinocchio as pin
+import trimesh
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError, UnreachableError
@@ -20,6 +21,7 @@ from workbench.kinematics.dh_chain import (
 )
 from workbench.kinematics.ik_report import unreachable_reason
 from workbench.kinematics.joint_turns import all_turns, joint_turn, turns_scalar
+from workbench.kinematics.link_shapes import dh_link_meshes
 from workbench.kinematics.numeric_ik import numeric_ik
 from workbench.kinematics.opw import opw_geometry, solve_batch
 from workbench.kinematics.opw_single import solve_single
@@ -131,6 +133,10 @@ class DHRobot:
     def link_transforms(self, q: ArrayLike) -> FloatArray:
         """Return base -> DH frame i (..., n+1, 4, 4) for i = 0..n; frame n is the flange."""
         return dh_frames(self.dh, joint_array(q, self.dof))
+
+    def link_meshes(self) -> list[trimesh.Trimesh]:
+        """Return n+1 convex link shapes [m] generated from the DH lengths, mesh i in frame i."""
+        return dh_link_meshes(self.dh, self.limits)
 
     # -- inverse kinematics -------------------------------------------------------------
     def ik(self, T: ArrayLike, *, q_near: ArrayLike | None = None) -> FloatArray:

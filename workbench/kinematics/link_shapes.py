@@ -13,7 +13,7 @@ expressed in its DH frame i (``robot.link_transforms(q)[..., i, :, :]`` places i
 from __future__ import annotations
 
 import math
-from typing import Protocol
+from typing import TYPE_CHECKING
 
 import numpy as np
 import trimesh
@@ -21,6 +21,10 @@ from numpy.typing import NDArray
 
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.dh_chain import dh_fixed_part
+
+if TYPE_CHECKING:
+    from workbench.kinematics.dh_robot import DHRobot
+    from workbench.kinematics.model import RobotModel
 
 FloatArray = NDArray[np.float64]
 SECTIONS = 24
@@ -30,15 +34,6 @@ HOUSING_RADIUS = 1.1  # housing radius / segment radius
 HOUSING_HALF_LENGTH = 1.4  # housing half-length / housing radius
 OVERLAP = 0.9  # a link starts at 90 % of the distance to leave the previous housing
 FLANGE_THICKNESS = 0.01  # m, scaled with the arm
-
-
-class _HasDH(Protocol):
-    dh: FloatArray
-    dof: int
-
-
-class _HasMeshes(Protocol):
-    def link_meshes(self) -> list[trimesh.Trimesh]: ...
 
 
 def arm_scale(dh: FloatArray) -> float:
@@ -201,17 +196,15 @@ def dh_link_meshes(dh: FloatArray, limits: FloatArray | None = None) -> list[tri
     return meshes
 
 
-def link_meshes(robot: _HasDH | _HasMeshes) -> list[trimesh.Trimesh]:
+def link_meshes(robot: RobotModel) -> list[trimesh.Trimesh]:
     """Return the n+1 link meshes of a robot [m], each in the frame of ``link_transforms``.
 
-    DH robots get generated shapes; robots that bring their own (URDF) return theirs.
+    DH robots get generated shapes (`dh_link_meshes`); URDF robots their own geometry.
     """
-    if hasattr(robot, "link_meshes"):
-        return robot.link_meshes()
-    return dh_link_meshes(robot.dh, getattr(robot, "limits", None))
+    return robot.link_meshes()
 
 
-def flange_mesh(robot: _HasDH, thickness: float | None = None) -> trimesh.Trimesh:
+def flange_mesh(robot: DHRobot, thickness: float | None = None) -> trimesh.Trimesh:
     """Return the flange plate [m] in the flange frame: a disk from z = -thickness to 0."""
     dh = robot.dh
     t = FLANGE_THICKNESS * arm_scale(dh) if thickness is None else float(thickness)

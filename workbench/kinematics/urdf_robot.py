@@ -102,6 +102,19 @@ class URDFRobot:
     def __repr__(self) -> str:
         return f"URDFRobot(name={self.name!r}, dof={self.dof}, tip={self.tip_frame!r})"
 
+    @property
+    def is_analytic(self) -> bool:
+        """Return False: a URDF arm gets the numeric IK (`ik` per pose, no `ik_batch`)."""
+        return False
+
+    def ik_batch(
+        self, Ts: ArrayLike, *, q_near: ArrayLike | None = None
+    ) -> tuple[FloatArray, NDArray[np.bool_]]:
+        """Raise InputError: the numeric IK has no branches; call `ik` per pose."""
+        raise InputError(
+            f"ik_batch: robot {self.name!r} (URDF) has no analytic IK; call ik() per pose"
+        )
+
     def pinocchio_model(self) -> tuple[pin.Model, pin.Data]:
         """Return (pin.Model, pin.Data) of the URDF."""
         return self.model, self.data

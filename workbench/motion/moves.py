@@ -1,8 +1,7 @@
 """Joint and linear moves turned into joint waypoints through IK, with blends, then timed.
 
-A linear move is sampled along its straight line (position) and slerp (orientation); each
-sample's IK solution is the one nearest the previous sample, so the configuration never
-changes branch; a jump larger than `max_joint_step` or an unreachable sample is an error
+A linear move is sampled along its straight line (position) and slerp (orientation); the
+samples are solved in one arm configuration (`kinematics.follow_path`); a jump larger than `max_joint_step` or an unreachable sample is an error
 naming the move and the sample. A zone > 0 between two linear moves replaces the corner by
 a quadratic Bezier curve that leaves the first line `zone` metres before the corner and
 joins the second line `zone` metres after it (shortened to half of either line).
@@ -11,26 +10,17 @@ joins the second line `zone` metres after it (shortened to half of either line).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial.transform import Rotation, Slerp
 
-from workbench.errors import InputError, PlanningError, WorkbenchError
+from workbench.errors import InputError, PlanningError, UnreachableError
 from workbench.geometry.transforms import invert_transform, make_transform
+from workbench.kinematics.model import RobotModel
+from workbench.kinematics.path_ik import follow_path
 from workbench.motion.program import JOINT, LINEAR, Program
 from workbench.motion.trajectory import Trajectory, smooth_joint_path
-
-
-class Robot(Protocol):
-    """What the moves need from a robot: batched FK to the flange, IK, joint limits (6, 2)."""
-
-    limits: NDArray[np.float64]
-
-    def fk(self, q: ArrayLike) -> NDArray[np.float64]: ...
-
-    def ik(self, T: ArrayLike) -> NDArray[np.float64]: ...
 
 
 @dataclass(frozen=True, eq=False)
@@ -73,35 +63,35 @@ def corner_poses(
 
 
 def follow_poses(
-    robot: Robot, T_base_flange: NDArray, q_prev: NDArray, *, max_joint_step: float, label: str
+    robot: RobotModel,
+    T_base_flange: NDArray,
+    q_prev: NDArray,
+    *,
+    max_joint_step: float,
+    label: str,
 ) -> NDArray[np.float64]:
-    """Return joints (k, 6) [rad] for poses (k, 4, 4), each the IK solution nearest the last."""
-    out = np.empty((T_base_flange.shape[0], q_prev.shape[0]))
-    for k, T in enumerate(T_base_flange):
-        try:
-            sols = np.asarray(robot.ik(T), float).reshape(-1, q_prev.shape[0])
-        except WorkbenchError as exc:
-            raise PlanningError(
-                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m is unreachable ({exc})"
-            ) from exc
-        if sols.shape[0] == 0:
-            raise PlanningError(
-                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m is unreachable"
-            )
-        jump = np.max(np.abs(sols - q_prev), axis=1)
-        best = int(np.argmin(jump))
-        if jump[best] > max_joint_step:
-            raise PlanningError(
-                f"{label}: point {k} at {T[:3, 3].round(4).tolist()} m needs a joint jump of "
-                f"{jump[best]:.3f} rad (> max_joint_step {max_joint_step} rad): a configuration "
-                "flip or singularity; move the path or split it with a joint move"
-            )
-        q_prev = out[k] = sols[best]
-    return out
+    """Return joints (k, 6) [rad] for poses (k, 4, 4) from q_prev, in one arm configuration.
+
+    Raises PlanningError naming the move and the point that is unreachable or needs a jump.
+    """
+    names = [f"point {k}" for k in range(len(T_base_flange))]
+    try:
+        path = follow_path(
+            robot,
+            T_base_flange,
+            q_prev,
+            labels=names,
+            what=label,
+            max_joint_step=max_joint_step,
+            track="nearest",
+        )
+    except UnreachableError as exc:
+        raise PlanningError(str(exc)) from exc
+    return path.q
 
 
 def plan_program(
-    robot: Robot,
+    robot: RobotModel,
     program: Program,
     q_start: ArrayLike,
     max_velocity: ArrayLike,
