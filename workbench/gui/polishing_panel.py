@@ -34,32 +34,7 @@ GAP_COLOR = (220, 30, 30)
 #: Most tool axes drawn along a path, and most samples sent per plot series.
 MAX_AXES = 250
 MAX_PLOT_POINTS = 4000
-#: Largest mesh whose fitted surface is drawn subdivided (one level: 4 triangles per patch).
-MAX_SUBDIVIDED_FACES = 60000
 MESH_TYPES = (".stl", ".obj", ".ply")
-
-
-def fitted_surface_mesh(surface: Any) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
-    """Return (vertices, faces) of the fitted Bézier surface, each patch split into 4 triangles
-    through its edge midpoints evaluated on the patch (the flat mesh for very large meshes)."""
-    faces = np.asarray(surface.faces)
-    if len(faces) > MAX_SUBDIVIDED_FACES:
-        return np.asarray(surface.vertices), faces
-    f = np.arange(len(faces))
-    mids = np.array([[0.5, 0.5, 0.0], [0.0, 0.5, 0.5], [0.5, 0.0, 0.5]])
-    pts = surface.evaluate(np.repeat(f, 3), np.tile(mids, (len(faces), 1))).reshape(-1, 3, 3)
-    nv = len(surface.vertices)
-    m = nv + 3 * f[:, None] + np.arange(3)[None, :]  # ab, bc, ca midpoints (not shared: fine)
-    a, b, c = faces[:, 0], faces[:, 1], faces[:, 2]
-    tris = np.concatenate(
-        [
-            np.stack([a, m[:, 0], m[:, 2]], 1),
-            np.stack([m[:, 0], b, m[:, 1]], 1),
-            np.stack([m[:, 2], m[:, 1], c], 1),
-            np.stack([m[:, 0], m[:, 1], m[:, 2]], 1),
-        ]
-    )
-    return np.vstack([surface.vertices, pts.reshape(-1, 3)]), tris
 
 
 def _segments(points: NDArray[np.float64]) -> NDArray[np.float32]:
@@ -93,10 +68,10 @@ class PolishingPanel:
             "Upload workpiece", icon=viser.Icon.UPLOAD, mime_type=",".join(MESH_TYPES)
         )
         self.units = g.add_dropdown(
-            "Units", options=("mm", "m", "auto"), initial_value=spec.units, hint="of the mesh file"
+            "Units", options=self.svc.mesh_units, initial_value=spec.units, hint="of the mesh file"
         )
         self.pattern = g.add_dropdown(
-            "Pattern", options=("spiral", "raster"), initial_value=spec.pattern
+            "Pattern", options=self.svc.patterns, initial_value=spec.pattern
         )
         self.step = g.add_slider("Step [mm]", min=0.5, max=20.0, step=0.5, initial_value=spec.step)
         self.spacing = g.add_slider(
@@ -176,7 +151,7 @@ class PolishingPanel:
             f"diagonal {rep.bbox_diagonal / MM:.0f} mm, {rep.n_holes} holes, "
             f"{rep.n_nonmanifold_edges} non-manifold edges; {warn}."
         )
-        vertices, faces = fitted_surface_mesh(self.svc.surface)
+        vertices, faces = self.svc.surface_mesh()
         self._set_node(
             "surface",
             lambda: self.server.scene.add_mesh_simple(

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
 
 import numpy as np
 import trimesh
@@ -12,8 +11,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
 from workbench.errors import InputError, MeshError
-
-Units = Literal["auto", "mm", "m"]
+from workbench.polishing.choices import MESH_UNITS, MeshUnits
 
 #: A part whose bounding-box diagonal, read in metres, lies outside this range is taken to be
 #: in the wrong units (1000x too large or too small).
@@ -69,7 +67,7 @@ def _diagonal(vertices: np.ndarray) -> float:
 
 def _choose_scale(raw_diag: float, units: str, path: str) -> tuple[str, float, list[str]]:
     warnings: list[str] = []
-    if units not in ("auto", "mm", "m"):
+    if units not in MESH_UNITS:
         raise InputError(f"units must be 'auto', 'mm' or 'm', got {units!r}")
     if units == "auto":
         # Read in metres unless that makes the part larger than MAX_DIAGONAL_M: then it is in mm.
@@ -169,7 +167,7 @@ def inspect_mesh(
 
 
 def load_workpiece(
-    path: str | Path, *, units: Units = "auto"
+    path: str | Path, *, units: MeshUnits = "auto"
 ) -> tuple[trimesh.Trimesh, WorkpieceReport]:
     """Return the workpiece mesh in metres (degenerate faces removed) and a `WorkpieceReport`.
 
@@ -180,7 +178,7 @@ def load_workpiece(
     Vertex normals of the result (``mesh.vertex_normals``) follow the face winding.
     """
     p = Path(path)
-    if units not in ("auto", "mm", "m"):
+    if units not in MESH_UNITS:
         raise InputError(f"units must be 'auto', 'mm' or 'm', got {units!r}")
     raw = _read(p)
     raw_diag = _diagonal(np.asarray(raw.vertices))

@@ -7,13 +7,25 @@ OBJ or PLY) relative to the project file, placed in the world at `pose`.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+import math
+from dataclasses import dataclass, field
+from typing import Annotated, Any
 
-from pydantic import Field, ValidationInfo, field_validator, model_validator
+import numpy as np
+from numpy.typing import NDArray
+from pydantic import Field, ValidationError, ValidationInfo, field_validator, model_validator
 
+from workbench.errors import InputError
+from workbench.geometry.transforms import xyz_rpy_to_transform
+from workbench.polishing.choices import MeshUnits, Pattern
+from workbench.polishing.force_control import HybridForceParams
+from workbench.polishing.orientation import instability_message
 from workbench.project.common import Pose, Positive, StrictModel
 
 NonNegative = Annotated[float, Field(ge=0)]
+F64 = NDArray[np.float64]
+_MM = 1e-3  # [m] per mm
+_DEG = np.pi / 180.0  # [rad] per degree
 
 
 class OrientationLoopSpec(StrictModel):
@@ -61,10 +73,6 @@ class ForceControllerSpec(StrictModel):
         rate, latency = info.data.get("control_rate"), info.data.get("latency")
         if not v.enabled or rate is None or latency is None:
             return v  # off, or the rate or latency is already refused by its own field
-        # Imported here: the polishing package pulls in trimesh and scipy, and the project
-        # model stays light for the files without a polishing section.
-        from workbench.polishing.orientation import instability_message
-
         msg = instability_message(v.kp, v.kd, v.ki, rate, latency * 1e-3, ("kp", "kd", "ki"))
         if msg is not None:
             raise ValueError(msg)
@@ -98,9 +106,9 @@ class PolishingSpec(StrictModel):
     """The `polishing` section (mm, deg, N, s)."""
 
     workpiece: str  # mesh file (STL, OBJ, PLY), relative to the project file
-    units: Literal["auto", "mm", "m"] = "mm"  # units of the mesh file
+    units: MeshUnits = "mm"  # units of the mesh file
     pose: Pose = Field(default_factory=Pose)  # workpiece frame in the world
-    pattern: Literal["spiral", "raster"] = "spiral"
+    pattern: Pattern = "spiral"
     step: Positive = 2.0  # [mm] chord between consecutive path points
     spacing: Positive = 10.0  # [mm] distance between neighbouring passes on the surface
     tool_radius: Positive = 6.0  # [mm] radius of the polishing pad (coverage)
@@ -139,3 +147,120 @@ class PolishingSpec(StrictModel):
                 f"{self.max_force:g} N; give a force in (0, {self.max_force:g}] N"
             )
         return self
+
+    # -- SI -----------------------------------------------------------------------------
+    def to_si(self) -> PolishingSI:
+        """Return the section in SI (m, rad, s, N), checked as a whole.
+
+        The section is validated again first: `validate_assignment` checks one field at a
+        time, so gains changed one by one on the live model can make a loop unstable that
+        no single field refuses. Raises `InputError` naming the field (as on load)."""
+        s = _validated(self.model_dump())
+        c, k, o = s.controller, s.contact, s.controller.orientation
+        return PolishingSI(
+            workpiece=s.workpiece,
+            units=s.units,
+            T_world_workpiece=xyz_rpy_to_transform(
+                np.asarray(s.pose.xyz) * _MM, np.asarray(s.pose.rpy) * _DEG
+            ),
+            pattern=s.pattern,
+            step=s.step * _MM,
+            spacing=s.spacing * _MM,
+            tool_radius=s.tool_radius * _MM,
+            lead_height=s.lead_height * _MM,
+            n_lead=s.n_lead,
+            feed=s.feed * _MM,
+            dwell=s.dwell,
+            max_force=s.max_force,
+            force=s.force,
+            control=HybridForceParams(
+                control_rate=c.control_rate,
+                latency=c.latency * 1e-3,
+                kpp=c.kpp,
+                kpd=c.kpd,
+                kfp=c.kfp * _MM,
+                kfi=c.kfi * _MM,
+                stiffness=k.stiffness,
+                damping=k.damping,
+                friction=k.friction,
+                lateral_stiffness=k.lateral_stiffness,
+                form_error=k.form_error * _MM,
+                form_wavelength=k.form_wavelength * _MM,
+                noise_std=k.noise_std,
+                filter_cutoff=k.filter_cutoff,
+                max_speed=c.max_speed * _MM,
+                max_accel=c.max_accel * _MM,
+                max_force=s.max_force,
+                seed=k.seed,
+                orientation_loop=o.enabled,
+                kop=o.kp,
+                kod=o.kd,
+                koi=o.ki,
+                max_angular_speed=math.radians(o.max_speed),
+            ),
+        )
+
+    def updated(
+        self,
+        *,
+        pattern: str | None = None,
+        step: float | None = None,
+        spacing: float | None = None,
+        force: float | None = None,
+        feed: float | None = None,
+        tool_radius: float | None = None,
+    ) -> PolishingSpec:
+        """Return a copy with the given path and process values in SI (m, N, m/s), stored in
+        the file's units (mm, N, mm/s) and validated as a whole.
+
+        Raises `InputError` naming the field, with the message the file would get."""
+        new = self.model_dump()
+        if pattern is not None:
+            new["pattern"] = pattern
+        for name, val in (
+            ("step", step),
+            ("spacing", spacing),
+            ("feed", feed),
+            ("tool_radius", tool_radius),
+        ):
+            if val is not None:
+                new[name] = float(val) / _MM
+        if force is not None:
+            new["force"] = float(force)
+        return _validated(new)
+
+
+@dataclass(frozen=True)
+class PolishingSI:
+    """The `polishing` section in SI: lengths [m], speeds [m/s], forces [N], times [s].
+
+    `T_world_workpiece` (4, 4) [m] places the workpiece; `control` holds the hybrid force
+    controller's gains and the contact model (`HybridForceParams`, SI)."""
+
+    workpiece: str  # mesh file, relative to the project file
+    units: MeshUnits
+    T_world_workpiece: F64 = field(repr=False)
+    pattern: Pattern
+    step: float  # [m]
+    spacing: float  # [m]
+    tool_radius: float  # [m]
+    lead_height: float  # [m]
+    n_lead: int
+    feed: float  # [m/s]
+    dwell: float  # [s]
+    max_force: float  # [N]
+    force: float  # [N]
+    control: HybridForceParams
+
+
+def _validated(data: dict[str, Any]) -> PolishingSpec:
+    """Return `data` validated as a `polishing` section; `InputError` naming the first field."""
+    # Imported here: project.io imports the project model, which imports this module.
+    from workbench.project.io import problems_from
+
+    try:
+        return PolishingSpec.model_validate(data)
+    except ValidationError as exc:
+        where, msg = problems_from(exc)[0]
+        where = "polishing" if where == "(top level)" else f"polishing.{where}"
+        raise InputError(f"{where}: {msg}") from None
