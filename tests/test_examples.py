@@ -1,0 +1,178 @@
+"""The scripts in examples/ run headless and print and write what they promise.
+
+Each example is imported from its file and its `main()` called (one also runs as a script,
+as a user would); the checks read what it printed and the files it wrote, and compare them
+with the public API where a number is involved.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import json
+import re
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import pytest
+
+from workbench import Workbench
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "examples"
+
+
+def _load(name: str) -> ModuleType:
+    """Import examples/<name>.py (its name starts with a digit: not importable by `import`)."""
+    path = EXAMPLES / f"{name}.py"
+    spec = importlib.util.spec_from_file_location(f"example_{name}", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _run(name: str, capsys: pytest.CaptureFixture[str], *args: object) -> tuple[object, str]:
+    result = _load(name).main(*args)
+    return result, capsys.readouterr().out
+
+
+def check_01_jog_and_ik(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    _, out = _run("01_jog_and_ik", capsys)
+    assert "joints [deg]: [20.0, 10.0, -5.0, 0.0, -60.0, 0.0]" in out
+    n = int(re.search(r"(\d+) configurations reach the pose 50 mm lower", out).group(1))  # type: ignore[union-attr]
+    wb = Workbench.open(ROOT / "projects" / "mz07_cell.json")
+    wb.set_joints(np.radians([20.0, 10.0, -5.0, 0.0, -60.0, 0.0]))
+    target = wb.tcp_pose()
+    target[2, 3] -= 0.050
+    labels = [s.label for s in wb.ik_solutions(target)]
+    assert n == len(labels) >= 2
+    for k, label in enumerate(labels):
+        assert f"  {k}: {label}" in out
+    # Both moves reach the target: the printed TCP error is at rounding level.
+    errors = [float(e) for e in re.findall(r"\(error ([0-9.e+-]+)\)", out)]
+    assert len(errors) == 2 and max(errors) < 1e-9
+    assert f"moved in {labels[-1]}" in out
+    assert out.count("collision-free, clearance") == 3
+
+
+def check_02_plan_and_export(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    written, out = _run("02_plan_and_export", capsys, tmp_path)
+    assert "100.0 %  done" in out
+    assert re.search(r"cycle time \d+\.\d{3} s, 7 moves; within joint limits; collision-free", out)
+    assert "ready to run" in out
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == sorted(p.name for p in written)  # type: ignore[attr-defined]
+    assert names == [f"pick_place{e}" for e in (".csv", ".json", ".ls", ".mod", ".script", ".src")]
+    assert (tmp_path / "pick_place.mod").read_text().startswith("MODULE pick_place")
+    assert "MoveL" in (tmp_path / "pick_place.mod").read_text()
+    assert (tmp_path / "pick_place.src").read_text().startswith("DEF pick_place")
+    rows = (tmp_path / "pick_place.csv").read_text().splitlines()
+    assert rows[0].startswith("t [s],q1 [rad]") and len(rows) > 100
+    samples = json.loads((tmp_path / "pick_place.json").read_text())
+    assert len(samples["t_s"]) == len(rows) - 1 == len(samples["q_rad"])
+    for path in written:  # type: ignore[attr-defined]
+        assert f"{path} (" in out
+
+
+def check_03_bending(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    _, out = _run("03_bending", capsys)
+    sequence = Workbench.open(ROOT / "projects" / "bending_cell.json").bending.sequence
+    assert f"bend sequence: {', '.join(sequence)}" in out
+    assert "refused: sequence: must name every bend exactly once" in out
+    for bend in sequence:
+        assert f"  bend {bend} on the die: joints [deg]" in out
+    assert re.search(r"6 bends placed on the die \(.+\); transfer \d+\.\d\d s", out)
+    first = re.search(r"^first collision: frame (\d+) .* hits 'rack_cup_\d'$", out, re.M)
+    assert first is not None, out
+
+
+def check_04_assembly(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    written, out = _run("04_assembly", capsys, tmp_path)
+    assert "robots: MZ07, MZ07_B" in out
+    assert re.search(r"7 part moves \(plate_a → plate_b → screw_0 .*\); cycle time", out)
+    assert "collision-free at every sample" in out
+    tasks = re.findall(
+        r"^  (\S+) +by (\S+) +picked at +([0-9.]+) s, placed at +([0-9.]+) s", out, re.M
+    )
+    assert [t[0] for t in tasks[:2]] == ["plate_a", "plate_b"] and len(tasks) == 7
+    assert all(float(pick) < float(place) for _, _, pick, place in tasks)
+    assert {t[1] for t in tasks} == {"MZ07", "MZ07_B"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "assembly_MZ07.mod",
+        "assembly_MZ07_B.mod",
+    ]
+    assert [p.name for p in written] == ["assembly_MZ07.mod", "assembly_MZ07_B.mod"]  # type: ignore[attr-defined]
+    for robot in ("MZ07", "MZ07_B"):
+        text = (tmp_path / f"assembly_{robot}.mod").read_text()
+        assert text.startswith(f"MODULE assembly_{robot}") and "MoveAbsJ" in text
+
+
+def check_05_polishing(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    program, out = _run("05_polishing", capsys, tmp_path)
+    assert "workpiece panel.stl: 4602 triangles" in out
+    assert re.search(r"tool path:  spiral: \d+ points, .* coverage \d+\.\d %", out)
+    assert re.search(r"control:    target 20 N at 40 mm/s .* force within ±\d+\.\d\d N", out)
+    assert re.search(r"robot:      cycle time \d+\.\d{3} s, \d+ moves; within joint limits", out)
+    assert program == tmp_path / "polishing.src"
+    assert [p.name for p in tmp_path.iterdir()] == ["polishing.src"]
+    text = (tmp_path / "polishing.src").read_text()
+    assert text.startswith("DEF polish()") and text.rstrip().endswith("END")
+    assert f"({len(text.splitlines())} lines)" in out
+
+
+CHECKS: dict[str, Callable[[pytest.CaptureFixture[str], Path], None]] = {
+    "01_jog_and_ik": check_01_jog_and_ik,
+    "02_plan_and_export": check_02_plan_and_export,
+    "03_bending": check_03_bending,
+    "04_assembly": check_04_assembly,
+    "05_polishing": check_05_polishing,
+}
+SLOW = {"04_assembly", "05_polishing"}
+
+
+def test_every_example_has_a_title_a_main_and_a_check() -> None:
+    found = sorted(p.stem for p in EXAMPLES.glob("*.py"))
+    assert found == sorted(CHECKS)
+    for name in found:
+        tree = ast.parse((EXAMPLES / f"{name}.py").read_text())
+        doc = ast.get_docstring(tree)
+        assert doc and doc.splitlines()[0].endswith("."), f"{name}: no docstring title"
+        assert any(isinstance(n, ast.FunctionDef) and n.name == "main" for n in tree.body), name
+        # The public API only: examples import `workbench` itself, nothing below it.
+        imports = [
+            n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and n.module
+        ] + [a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names]
+        assert not [m for m in imports if m.startswith("workbench.")], name
+
+
+@pytest.mark.parametrize(
+    "name", [pytest.param(n, marks=pytest.mark.slow) if n in SLOW else n for n in sorted(CHECKS)]
+)
+def test_example_runs_and_prints_what_it_promises(
+    name: str, capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    CHECKS[name](capsys, tmp_path)
+
+
+@pytest.mark.slow  # a fresh interpreter imports pinocchio, fcl and trimesh: ~3-8 s
+def test_an_example_runs_as_a_script_with_a_project_argument(tmp_path: Path) -> None:
+    done = subprocess.run(
+        [
+            sys.executable,
+            str(EXAMPLES / "01_jog_and_ik.py"),
+            str(ROOT / "projects" / "mz07_cell.json"),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("project: MZ07 work cell\n")
+    assert list(tmp_path.iterdir()) == []  # it writes nothing
