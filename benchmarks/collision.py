@@ -267,17 +267,17 @@ def plan_checks() -> None:
 
 def plan_check(name: str, title: str, run) -> None:  # type: ignore[no-untyped-def]
     """One project's plan `run(wb)`: cold, new session, fast vs dense (plan and check alone)."""
+    import os
     import tempfile
     from pathlib import Path
 
-    import workbench.service.collision_engine as ce
+    from workbench.collision import check_trajectory
     from workbench.service import Workbench
-    from workbench.service.motion_plan import check_trajectory
 
     project = Path(__file__).resolve().parents[1] / "projects" / name
-    shared = ce.shared_engine
+    before = os.environ.get("WORKBENCH_CACHE")
     with tempfile.TemporaryDirectory() as tmp:
-        ce.default_cache_dir = lambda: Path(tmp) / "sdf"  # type: ignore[assignment]
+        os.environ["WORKBENCH_CACHE"] = tmp  # a cold cache: fits and field built here
         t = time.perf_counter()
         cold = run(Workbench.open(project))
         cold_s = time.perf_counter() - t
@@ -286,12 +286,17 @@ def plan_check(name: str, title: str, run) -> None:  # type: ignore[no-untyped-d
         plan = run(wb)
         warm_s = time.perf_counter() - t
         fast = _best_of(lambda: run(wb))
-        ce.shared_engine = lambda *a, **k: (None, "benchmark: the dense exact check")  # type: ignore[assignment]
+        wb.collision.set_mode("exact")  # the project's policy: the dense exact check
         dense = _best_of(lambda: run(wb))
-        ce.shared_engine = shared  # type: ignore[assignment]
+        wb.collision.set_mode("spheres")
         q, times = plan.positions, plan.times
         exact_s = _best_of(lambda: wb.checker.check_path(q))
-        check_s = _best_of(lambda: check_trajectory(plan.trajectory, times, q, wb.checker))
+        policy = wb.collision_policy
+        check_s = _best_of(lambda: check_trajectory(plan.trajectory, times, q, wb.checker, policy))
+        if before is None:
+            os.environ.pop("WORKBENCH_CACHE", None)
+        else:
+            os.environ["WORKBENCH_CACHE"] = before
     rep = plan.collision_report
     ref = wb.checker.check_path(q)
     assert rep.colliding_indices == ref.colliding_indices

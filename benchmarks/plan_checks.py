@@ -19,8 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from workbench import Workbench
-from workbench.service.collision_engine import shared_engine
-from workbench.service.motion_plan import check_trajectory
+from workbench.collision import check_trajectory, shared_engine
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -41,13 +40,16 @@ def main() -> None:
     print(f"load average: {Path('/proc/loadavg').read_text().split()[:3]}")
 
     wb = Workbench.open(ROOT / "projects" / "bending_cell.json")
-    shared_engine(wb.checker)
+    shared_engine(wb.checker, wb.collision_policy)
     plan = wb.bending.plan()
     t_plan = best(wb.bending.plan, args.repeat)
     q, times = plan.joints, plan.times
     t_dense = best(lambda: wb.checker.check_path(q), args.repeat)
-    t_fast = best(lambda: check_trajectory(plan.trajectory, times, q, wb.checker), args.repeat)
-    rep = check_trajectory(plan.trajectory, times, q, wb.checker)
+    policy = wb.collision_policy
+    t_fast = best(
+        lambda: check_trajectory(plan.trajectory, times, q, wb.checker, policy), args.repeat
+    )
+    rep = check_trajectory(plan.trajectory, times, q, wb.checker, policy)
     print(
         f"bending plan ({len(times)} frames): {t_plan * 1e3:.0f} ms; robot check dense exact"
         f" {t_dense * 1e3:.1f} ms, fast {t_fast * 1e3:.1f} ms (ratio dense/fast"
@@ -56,7 +58,7 @@ def main() -> None:
 
     wb = Workbench.open(ROOT / "projects" / "assembly_cell.json")
     for arm in wb.assembly.arms.values():
-        shared_engine(arm.checker)
+        shared_engine(arm.checker, wb.collision_policy)
     plan_a = wb.assembly.plan_sequence()
     t_plan = best(wb.assembly.plan_sequence, args.repeat)
     print(f"assembly sequence ({len(plan_a.times)} samples): {t_plan * 1e3:.0f} ms")

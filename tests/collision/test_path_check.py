@@ -268,7 +268,7 @@ def test_a_planned_trajectory_is_checked_on_its_real_motion(
     import json
     from pathlib import Path
 
-    from workbench.service.motion_plan import check_trajectory
+    from workbench.collision import CollisionPolicy, check_trajectory
 
     monkeypatch.setenv("WORKBENCH_CACHE", str(tmp_path_factory.mktemp("plan")))
     example = Path(__file__).resolve().parents[2] / "projects" / "mz07_cell.json"
@@ -311,7 +311,7 @@ def test_a_planned_trajectory_is_checked_on_its_real_motion(
     dense = _contacts(trial, traj.at(t_in)[0])
     assert dense.any()  # the construction: the motion crosses the plate between the samples
     # (the straight chord between the samples need not; the check must follow the real motion)
-    got = check_trajectory(traj, t_c, traj.at(t_c)[0], trial.checker)
+    got = check_trajectory(traj, t_c, traj.at(t_c)[0], trial.checker, CollisionPolicy())
     assert got.fallback is None and got.mode == "spheres"
     assert got.colliding_indices == ()
     assert not got.collision_free, "a free report missed the plate between samples"

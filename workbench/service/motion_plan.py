@@ -22,7 +22,6 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
-from workbench.motion.validation import AccelerationBound
 from workbench.project.models import ProgramSpec
 from workbench.service.convert import DEG, MM, pose_to_matrix
 from workbench.service.robot_setup import RobotSetup
@@ -143,10 +142,12 @@ def plan_motion(
     checker: RobotCollisionChecker,
     q_start: NDArray[np.float64],
     *,
+    policy: CollisionPolicy,
     dt: float = 0.01,
     progress: Progress | None = None,
 ) -> MotionPlan:
-    """Return the `MotionPlan` of `spec`: IK through the moves, ruckig timing, then the checks."""
+    """Return the `MotionPlan` of `spec`: IK through the moves, ruckig timing, then the checks
+    (collisions under `policy`)."""
     report = progress or (lambda f, msg: None)
     model = setup.model
     report(0.0, "moves through IK")
@@ -157,7 +158,13 @@ def plan_motion(
     report(0.2, "jerk-limited timing")
     traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
     plan = plan_from_trajectory(
-        program, traj, setup, checker, dt=dt, progress=lambda f, m: report(0.3 + 0.7 * f, m)
+        program,
+        traj,
+        setup,
+        checker,
+        policy=policy,
+        dt=dt,
+        progress=lambda f, m: report(0.3 + 0.7 * f, m),
     )
     report(1.0, "done")
     return plan
@@ -169,6 +176,7 @@ def plan_from_trajectory(
     setup: RobotSetup,
     checker: RobotCollisionChecker,
     *,
+    policy: CollisionPolicy,
     dt: float,
     validate_dt: float = 0.01,
     progress: Progress | None = None,
@@ -177,9 +185,11 @@ def plan_from_trajectory(
     the trajectory's peaks, samples every `dt` [s] with TCP speed, collisions checked at and
     between the samples.
 
-    The check (`check_trajectory`) runs the spheres engine over all samples at once, confirms
-    what it flags with python-fcl and certifies the motion between samples; where the fast
-    mode cannot apply every sample is checked exactly and the report says why."""
+    The check (`workbench.collision.check_trajectory` under `policy`, the project's
+    `Workbench.collision_policy`) runs the fast engine over all samples at once, confirms
+    what it flags with python-fcl and certifies the motion between samples; in the exact mode,
+    or where the fast mode cannot apply, every sample is checked exactly and the report says
+    why."""
     model = setup.model
     limits = validate_trajectory(
         trajectory,
@@ -192,49 +202,14 @@ def plan_from_trajectory(
     times, q, qd, qdd = trajectory.sample(dt)
     tcp = (setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp)[:, :3, 3]
     tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
-    path_report = check_trajectory(trajectory, times, q, checker, progress=progress)
+    path_report = plan_check.check_trajectory(
+        trajectory, times, q, checker, policy, progress=progress
+    )
     colliding = np.zeros(len(times), bool)
     colliding[list(path_report.colliding_indices)] = True
     colliding[list(path_report.between_indices)] = True
     return MotionPlan(
         program, trajectory, times, q, qd, qdd, tcp_speed, colliding, limits, path_report
-    )
-
-
-def check_trajectory(
-    trajectory: Trajectory,
-    times: NDArray[np.float64],
-    q: NDArray[np.float64],
-    checker: RobotCollisionChecker,
-    *,
-    progress: Progress | None = None,
-) -> EnginePathReport:
-    """Forward to `workbench.collision.check_trajectory` with the default policy (until every
-    caller passes the project's `Workbench.collision_policy`)."""
-    return plan_check.check_trajectory(
-        trajectory, times, q, checker, CollisionPolicy(), progress=progress
-    )
-
-
-def check_motion(
-    times: NDArray[np.float64],
-    q: NDArray[np.float64],
-    checker: RobotCollisionChecker,
-    *,
-    sampler: Callable[[NDArray[np.float64]], NDArray[np.float64]],
-    acceleration: NDArray[np.float64] | AccelerationBound,
-    progress: Progress | None = None,
-) -> EnginePathReport:
-    """Forward to `workbench.collision.check_motion` with the default policy (until every
-    caller passes the project's `Workbench.collision_policy`)."""
-    return plan_check.check_motion(
-        times,
-        q,
-        checker,
-        CollisionPolicy(),
-        sampler=sampler,
-        acceleration=acceleration,
-        progress=progress,
     )
 
 

@@ -312,7 +312,15 @@ class Workbench:
             if spec.start is None
             else _as_vector(np.asarray(spec.start, float) * DEG, self.robot.dof, "program.start")
         )
-        plan = plan_motion(spec, self._robot, self._checker, q_start, dt=dt, progress=progress)
+        plan = plan_motion(
+            spec,
+            self._robot,
+            self._checker,
+            q_start,
+            policy=self.collision_policy,
+            dt=dt,
+            progress=progress,
+        )
         with self._lock:
             self._plan = plan
         return plan
