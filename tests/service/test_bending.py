@@ -328,6 +328,28 @@ def test_units_of_the_grasp(wb: Workbench) -> None:
     assert MM == 1e-3 and DEG == pytest.approx(np.pi / 180)
 
 
+def test_section_to_si_is_in_metres_and_radians(wb: Workbench) -> None:
+    """The service sees the section only through `to_si()`: SI values, the sequence resolved."""
+    spec = wb.project.bending
+    si = spec.to_si(wb.bending.part_spec())
+    assert si.part.thickness == pytest.approx(1.5e-3) and si.frames == spec.frames
+    assert si.die.length == pytest.approx(spec.die.length * 1e-3)
+    np.testing.assert_allclose(si.die.T_world_die, pose_to_matrix(spec.die.pose), atol=0)
+    np.testing.assert_allclose(si.transfer.retract, np.asarray(spec.retract) * 1e-3)
+    assert si.transfer.T_world_vias.shape == (len(spec.transfer), 4, 4)
+    np.testing.assert_allclose(si.transfer.T_world_pallet, pose_to_matrix(spec.pallet), atol=0)
+    b = wb.bending.part_spec().bends[0]
+    assert si.part.bends[0].included_angle == pytest.approx(np.radians(b.included_angle))
+    assert si.part.bends[0].inner_radius == pytest.approx(b.inner_radius * 1e-3)
+    assert si.grasp.flange == spec.grasp.flange and si.grasp.yaw == pytest.approx(0.0)
+    # One meaning for the two sequence fields: the project's order replaces the part's own.
+    assert si.part.sequence == tuple(wb.bending.part_spec().sequence)
+    w = Workbench.open(EXAMPLE)
+    w.bending.set_sequence(["b12", "b23", "b14", "b45", "b16", "b17"])
+    assert w.bending.si().part.sequence == ("b12", "b23", "b14", "b45", "b16", "b17")
+    assert w.bending.part_spec().sequence == ["b23", "b45", "b12", "b14", "b16", "b17"]
+
+
 # -- the robot through the conservative engine ------------------------------------------------
 def _dense(wb: Workbench, q: np.ndarray) -> list[bool]:
     """Twin: python-fcl (plus containment) of every robot pair at every frame."""
