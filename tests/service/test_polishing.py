@@ -329,3 +329,18 @@ def test_parameters_survive_save_and_reopen(tmp_path: Path) -> None:
     )
     path = Workbench.open(out).polishing.plan_path()
     assert path.path.pattern == "raster" and path.force == 35.0
+
+
+def test_option_lists_and_display_mesh_come_from_the_domain() -> None:
+    from typing import get_args
+
+    from workbench.project.polishing import PolishingSpec
+
+    wb = _wb()
+    svc = wb.polishing
+    fields = PolishingSpec.model_fields
+    assert svc.patterns == get_args(fields["pattern"].annotation) == ("spiral", "raster")
+    assert set(svc.mesh_units) == set(get_args(fields["units"].annotation)) == {"mm", "m", "auto"}
+    v, f = svc.surface_mesh()
+    n = len(svc.surface.faces)
+    assert f.shape == (4 * n, 3) and len(v) == len(svc.surface.vertices) + 3 * n
