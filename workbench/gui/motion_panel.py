@@ -12,15 +12,19 @@ from workbench.service import EXPORT_FORMATS, MotionPlan, Workbench
 
 
 def plan_to_motion(plan: MotionPlan, wb: Workbench) -> Motion:
-    """Return the timeline's view of a motion plan."""
+    """Deprecated (for panels not yet switched): the plan as the timeline's former `Motion`.
+
+    Call `timeline.load(plan.samples, velocity_limits=..., acceleration_limits=...)` instead.
+    """
+    s = plan.samples
     return Motion(
-        name=plan.program.name,
-        times=plan.times,
-        positions=plan.positions,
-        velocities=plan.velocities,
-        accelerations=plan.accelerations,
-        tcp_speed=plan.tcp_speed,
-        colliding=plan.colliding,
+        name=s.name,
+        times=s.times,
+        positions=s.joints,
+        velocities=s.velocity,
+        accelerations=s.acceleration,
+        tcp_speed=s.tcp_speed,
+        colliding=s.colliding,
         velocity_limits=wb.robot.max_velocity,
         acceleration_limits=wb.robot.max_acceleration,
     )
@@ -82,7 +86,11 @@ class MotionPanel:
             plan = self.wb.plan_motion(progress=progress)
         self.result.content = ("**OK:** " if plan.ok else "**Problems:** ") + plan.summary()
         self.download.disabled = False
-        self.timeline.load(plan_to_motion(plan, self.wb))
+        self.timeline.load(
+            plan.samples,
+            velocity_limits=self.wb.robot.max_velocity,
+            acceleration_limits=self.wb.robot.max_acceleration,
+        )
 
     def _on_download(self, event: viser.GuiEvent) -> None:
         fmt = str(self.format.value)

@@ -11,9 +11,12 @@ from dataclasses import dataclass
 import numpy as np
 import viser
 import viser.uplot as uplot
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
-DEG = 180.0 / np.pi
+from workbench.motion import SampledMotion
+
+DEG_PER_RAD = 180.0 / np.pi  # display only
+MM_PER_M = 1000.0  # display only
 SPEEDS = ("0.25x", "0.5x", "1x", "2x", "4x")
 # uPlot reads x as a date unless told otherwise: every plot with a non-time x axis uses this.
 SECONDS: dict[str, uplot.Scale] = {"x": uplot.Scale(time=False)}
@@ -22,10 +25,9 @@ JOINT_COLORS = ("#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42a5a5"
 
 @dataclass(frozen=True)
 class Motion:
-    """A sampled motion to play: times (N,) [s], joints (N, dof) [rad] and what to plot.
+    """Deprecated: the timeline's former motion type; use `workbench.motion.SampledMotion`.
 
-    `velocity_limits`/`acceleration_limits` (dof,) scale the plots to percent of the limit;
-    `colliding` (N,) marks samples in collision on the time axis.
+    Kept while panels still build it; `Timeline.load` accepts both.
     """
 
     name: str
@@ -45,9 +47,17 @@ class Motion:
 
     def at(self, t: float) -> NDArray[np.float64]:
         """Return joints [rad] at time `t` [s], interpolated linearly between samples."""
-        t = float(np.clip(t, 0.0, self.duration))
-        return np.array(
-            [np.interp(t, self.times, self.positions[:, j]) for j in range(self.positions.shape[1])]
+        return self.sampled().at(t)
+
+    def sampled(self) -> SampledMotion:
+        """Return the same samples as a `SampledMotion` (TCP speed kept by the timeline)."""
+        return SampledMotion(
+            self.times,
+            self.positions,
+            self.velocities,
+            self.accelerations,
+            colliding=self.colliding,
+            name=self.name,
         )
 
 
@@ -59,7 +69,9 @@ class Timeline:
     ) -> None:
         self.server = server
         self.show = show
-        self.motion: Motion | None = None
+        self.motion: SampledMotion | None = None
+        self._tcp_speed = np.zeros(0)
+        self._limits = (np.ones(0), np.ones(0))
         self._follow: Callable[[float], None] | None = None
         self._plot_folder: viser.GuiFolderHandle | None = None
         self._playing = threading.Event()
@@ -79,14 +91,35 @@ class Timeline:
         self._thread.start()
 
     # -- loading --------------------------------------------------------------------------
-    def load(self, motion: Motion, *, follow: Callable[[float], None] | None = None) -> None:
+    def load(
+        self,
+        motion: SampledMotion | Motion,
+        *,
+        velocity_limits: ArrayLike | None = None,
+        acceleration_limits: ArrayLike | None = None,
+        follow: Callable[[float], None] | None = None,
+    ) -> None:
         """Show `motion` on the timeline and its plots, at t = 0, paused.
 
-        `follow(t)` is called whenever the robot is posed at time `t` [s], for what moves with
-        it (a carried part, a tool path marker); a later `load` replaces it.
+        velocity_limits, acceleration_limits (dof,) [rad/s, rad/s^2] scale the plots to
+        percent of the limit (a `Motion` brings its own). `follow(t)` is called whenever the
+        robot is posed at time `t` [s], for what moves with it (a carried part, a tool path
+        marker); a later `load` replaces it.
         """
         self.pause()
+        if isinstance(motion, Motion):
+            speed = np.asarray(motion.tcp_speed, float)
+            vel_lim: ArrayLike = motion.velocity_limits
+            acc_lim: ArrayLike = motion.acceleration_limits
+            motion = motion.sampled()
+        else:
+            speed = motion.tcp_speed
+            if velocity_limits is None or acceleration_limits is None:
+                raise ValueError("load: give velocity_limits and acceleration_limits (dof,)")
+            vel_lim, acc_lim = velocity_limits, acceleration_limits
         self.motion = motion
+        self._tcp_speed = speed
+        self._limits = (np.asarray(vel_lim, float), np.asarray(acc_lim, float))
         self._follow = follow
         self.time.max = max(motion.duration, 0.01)
         self.time.value = 0.0  # type: ignore[misc]
@@ -109,9 +142,10 @@ class Timeline:
         if self._follow is not None:
             self._follow(t)
 
-    def _make_plots(self, m: Motion) -> list[viser.GuiUplotHandle]:
+    def _make_plots(self, m: SampledMotion) -> list[viser.GuiUplotHandle]:
         t = m.times
-        dof = m.positions.shape[1]
+        dof = m.dof
+        vel_lim, acc_lim = self._limits
         joint_series = [
             uplot.Series(label=f"J{j + 1}", stroke=JOINT_COLORS[j % 6], width=1.5)
             for j in range(dof)
@@ -124,7 +158,7 @@ class Timeline:
         with self._plot_folder:
             plots.append(
                 self.server.gui.add_uplot(
-                    data=(t, *(m.positions[:, j] * DEG for j in range(dof))),
+                    data=(t, *(m.joints[:, j] * DEG_PER_RAD for j in range(dof))),
                     series=(x, *joint_series),
                     title="Joint positions [deg]",
                     aspect=1.6,
@@ -132,8 +166,8 @@ class Timeline:
                 )
             )
             for name, values, lim in (
-                ("Joint velocities [% of limit]", m.velocities, m.velocity_limits),
-                ("Joint accelerations [% of limit]", m.accelerations, m.acceleration_limits),
+                ("Joint velocities [% of limit]", m.velocity, vel_lim),
+                ("Joint accelerations [% of limit]", m.acceleration, acc_lim),
             ):
                 pct = values / lim * 100.0
                 ones = np.full_like(t, 100.0)
@@ -146,7 +180,7 @@ class Timeline:
                         scales=SECONDS,
                     )
                 )
-            speed = m.tcp_speed * 1000.0
+            speed = self._tcp_speed * MM_PER_M
             top = float(max(speed.max(), 1.0)) * 1.05
             plots.append(
                 self.server.gui.add_uplot(

@@ -12,9 +12,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
+from workbench.geometry.pose_check import check_transform
 
 FloatArray = NDArray[np.float64]
-_LAST_ROW = np.array([0.0, 0.0, 0.0, 1.0])
 
 
 def as_finite_array(value: ArrayLike, name: str, shape: tuple[int | None, ...]) -> FloatArray:
@@ -54,34 +54,8 @@ def joint_array(q: ArrayLike, dof: int, name: str = "q") -> FloatArray:
 
 
 def transform_array(T: ArrayLike, name: str = "T") -> FloatArray:
-    """Return (..., 4, 4) rigid transforms as floats; raise InputError on shape, NaN or bad rows."""
-    try:
-        arr = np.asarray(T, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name}: expected a (4, 4) homogeneous transform, got {T!r}") from exc
-    if arr.ndim < 2 or arr.shape[-2:] != (4, 4):
-        raise InputError(f"{name}: expected shape (..., 4, 4), got {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise InputError(f"{name}: every entry must be finite (no NaN/inf)")
-    if np.max(np.abs(arr[..., 3, :] - _LAST_ROW), initial=0.0) > 1e-9:
-        raise InputError(f"{name}: the last row must be [0, 0, 0, 1]")
-    c0, c1, c2 = arr[..., :3, 0], arr[..., :3, 1], arr[..., :3, 2]
-    err = max(
-        float(np.abs(np.sum(a * b, axis=-1) - e).max(initial=0.0))
-        for a, b, e in (
-            (c0, c0, 1.0),
-            (c1, c1, 1.0),
-            (c2, c2, 1.0),
-            (c0, c1, 0.0),
-            (c0, c2, 0.0),
-            (c1, c2, 0.0),
-        )
-    )
-    if err > 1e-6:
-        raise InputError(
-            f"{name}: the rotation part is not orthonormal (|R^T R - I| = {err:.2e} > 1e-6)"
-        )
-    return arr
+    """Return (..., 4, 4) rigid transforms as floats (`geometry.check_transform`, batched)."""
+    return check_transform(T, name, batch=True)
 
 
 def validate_dh(dh: ArrayLike, limits: ArrayLike) -> tuple[FloatArray, FloatArray]:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from workbench.motion.moves import JointPath, plan_program, time_program
 from workbench.motion.program import Move, Program
+from workbench.motion.sampled import SampledMotion
 from workbench.motion.trajectory import Trajectory, smooth_joint_path
 from workbench.motion.validation import (
     ValidationReport,
@@ -16,6 +17,7 @@ __all__ = [
     "JointPath",
     "Move",
     "Program",
+    "SampledMotion",
     "Trajectory",
     "ValidationReport",
     "Violation",

@@ -8,6 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
+from workbench.geometry.pose_check import check_transform
 
 JOINT = "joint"
 LINEAR = "linear"
@@ -59,12 +60,7 @@ class Move:
         cls, T_base_tcp: ArrayLike, *, speed: float = 0.25, zone: float = 0.0, name: str = ""
     ) -> Move:
         """Return a linear move to the pose `T_base_tcp` (4, 4) [m]."""
-        T = np.asarray(T_base_tcp, float)
-        if T.shape != (4, 4):
-            raise InputError(f"Move {name!r}: T_base_tcp must be (4, 4), got {T.shape}")
-        R = T[:3, :3]
-        if not np.allclose(R @ R.T, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
-            raise InputError(f"Move {name!r}: T_base_tcp rotation is not a proper rotation matrix")
+        T = check_transform(T_base_tcp, f"Move {name!r}: T_base_tcp")
         return cls(LINEAR, tuple(float(x) for x in T.reshape(-1)), speed, zone, name)
 
     @property

@@ -15,6 +15,7 @@ from workbench.geometry.transforms import invert_transform
 from workbench.motion import (
     Move,
     Program,
+    SampledMotion,
     Trajectory,
     ValidationReport,
     plan_program,
@@ -41,24 +42,50 @@ Progress = Callable[[float, str], None]
 class MotionPlan:
     """A planned program: the trajectory, its samples, and what the checks found.
 
-    Samples are every `dt` [s]: `times` (N,), `positions`/`velocities`/`accelerations` (N, dof)
-    [rad, rad/s, rad/s^2], `tcp_speed` (N,) [m/s]; `colliding` (N,) marks samples in collision
-    and samples whose interval to the next one collides or could not be certified free
-    (treated as colliding: the plan promises nothing it has not proven). `collision_report` is an
-    `EnginePathReport` (its `message` states the guarantee between samples or the first
-    failure); its `colliding_indices` are exactly the samples the dense exact check flags.
+    `samples` (a `SampledMotion`) every `dt` [s]: times (N,), joints/velocities/accelerations
+    (N, dof) [rad, rad/s, rad/s^2], TCP positions (N, 3) [m] (world) and `tcp_speed` (N,)
+    [m/s]; `colliding` (N,) marks samples in collision and samples whose interval to the
+    next one collides or could not be certified free (treated as colliding: the plan
+    promises nothing it has not proven). `collision_report` is an `EnginePathReport` (its
+    `message` states the guarantee between samples or the first failure); its
+    `colliding_indices` are exactly the samples the dense exact check flags.
     """
 
     program: Program
     trajectory: Trajectory
-    times: NDArray[np.float64] = field(repr=False)
-    positions: NDArray[np.float64] = field(repr=False)
-    velocities: NDArray[np.float64] = field(repr=False)
-    accelerations: NDArray[np.float64] = field(repr=False)
-    tcp_speed: NDArray[np.float64] = field(repr=False)
-    colliding: NDArray[np.bool_] = field(repr=False)
+    samples: SampledMotion = field(repr=False)
     limits_report: ValidationReport
     collision_report: PathReport
+
+    @property
+    def times(self) -> NDArray[np.float64]:
+        """Return the sample times (N,) [s]."""
+        return self.samples.times
+
+    @property
+    def positions(self) -> NDArray[np.float64]:
+        """Return the sampled joints (N, dof) [rad]."""
+        return self.samples.joints
+
+    @property
+    def velocities(self) -> NDArray[np.float64]:
+        """Return the sampled joint velocities (N, dof) [rad/s]."""
+        return self.samples.velocity
+
+    @property
+    def accelerations(self) -> NDArray[np.float64]:
+        """Return the sampled joint accelerations (N, dof) [rad/s^2]."""
+        return self.samples.acceleration
+
+    @property
+    def tcp_speed(self) -> NDArray[np.float64]:
+        """Return the TCP speed (N,) [m/s] (`SampledMotion.tcp_speed`: central differences)."""
+        return self.samples.tcp_speed
+
+    @property
+    def colliding(self) -> NDArray[np.bool_]:
+        """Return (N,) samples in collision or not certified free up to the next."""
+        return self.samples.colliding
 
     @property
     def cycle_time(self) -> float:
@@ -201,16 +228,14 @@ def plan_from_trajectory(
     )
     times, q, qd, qdd = trajectory.sample(dt)
     tcp = (setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp)[:, :3, 3]
-    tcp_speed = np.r_[np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(times), 0.0]
     path_report = plan_check.check_trajectory(
         trajectory, times, q, checker, policy, progress=progress
     )
     colliding = np.zeros(len(times), bool)
     colliding[list(path_report.colliding_indices)] = True
     colliding[list(path_report.between_indices)] = True
-    return MotionPlan(
-        program, trajectory, times, q, qd, qdd, tcp_speed, colliding, limits, path_report
-    )
+    samples = SampledMotion(times, q, qd, qdd, tcp, colliding, name=program.name)
+    return MotionPlan(program, trajectory, samples, limits, path_report)
 
 
 def export_text(plan: MotionPlan, fmt: str) -> str:

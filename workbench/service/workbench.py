@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision import CollisionPolicy, CollisionReport, RobotCollisionChecker
 from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
+from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import branch_name
 from workbench.project import (
@@ -46,18 +47,6 @@ def _as_vector(value: ArrayLike, n: int, name: str) -> NDArray[np.float64]:
         raise InputError(f"{name}: expected {n} values, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise InputError(f"{name}: values must be finite, got {arr.tolist()}")
-    return arr
-
-
-def _as_pose(T: ArrayLike, name: str) -> NDArray[np.float64]:
-    arr = np.asarray(T, dtype=float)
-    if arr.shape != (4, 4):
-        raise InputError(f"{name}: expected a (4, 4) transform, got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise InputError(f"{name}: the transform has NaN or infinite entries")
-    R = arr[:3, :3]
-    if not np.allclose(R.T @ R, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
-        raise InputError(f"{name}: the rotation part is not a rotation matrix")
     return arr
 
 
@@ -186,7 +175,7 @@ class Workbench:
 
         Labels name the arm configuration ('front/elbow A/no flip'); `move_tcp` accepts them.
         """
-        T = _as_pose(T_world_tcp, "T_world_tcp")
+        T = check_transform(T_world_tcp, "T_world_tcp")
         T_base_flange = (
             invert_transform(self._robot.T_world_base)
             @ T
