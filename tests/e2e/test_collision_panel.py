@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, save_screenshot, wait_for
+from browser_helpers import (
+    canvas_png,
+    save_screenshot,
+    steady_picture,
+    wait_for,
+    wait_for_new_picture,
+)
 
 from workbench.gui.app import WorkbenchApp
 
@@ -13,15 +19,14 @@ pytestmark = pytest.mark.e2e
 
 def test_show_spheres_and_check(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
     page.get_by_role("tab", name="Robot").click()
-    before = canvas_png(page)
+    before = steady_picture(lambda: canvas_png(page))
     page.get_by_label("Show spheres").check()
     wait_for(
         lambda: app.collision.sphere_node is not None, timeout=90, what="spheres on the server"
     )
     centres, radii, _ = app.wb.collision.spheres(None)
     assert np.allclose(app.collision.sphere_node.batched_positions, centres, atol=1e-6)
-    page.wait_for_timeout(1500)
-    assert canvas_png(page) != before, "the 3D view did not change when showing spheres"
+    wait_for_new_picture(lambda: canvas_png(page), before, what="showing the spheres")
 
     page.get_by_role("button", name="Check", exact=True).click()
     wait_for(lambda: hasattr(app.collision, "last"), timeout=60, what="the check on the server")
@@ -33,6 +38,28 @@ def test_show_spheres_and_check(page, app: WorkbenchApp) -> None:  # type: ignor
         if c.colliding
         else f"clearance at least {c.clearance * 1e3:.1f} mm"
     )
-    page.get_by_text(text).first.wait_for(timeout=15_000)
-    page.wait_for_timeout(500)
+    page.get_by_text(text).first.wait_for()
+    steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "collision.png")
+
+
+def test_plan_collision_mode_control_sets_the_next_plans_mode(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+    """The Robot tab's "Plan collision mode" sets the project's field; the next plan uses it."""
+    page.get_by_role("tab", name="Robot").click()
+    assert app.wb.collision.mode == "spheres"
+    page.get_by_role("combobox", name="Plan collision mode").click()
+    page.get_by_role("option", name="exact", exact=True).click()
+    wait_for(lambda: app.wb.collision.mode == "exact", what="mode exact on the server")
+    assert app.wb.project.collision is not None and app.wb.project.collision.mode == "exact"
+
+    page.get_by_role("tab", name="Motion").click()
+    page.get_by_role("button", name="Plan", exact=True).click()
+    wait_for(lambda: app.wb.last_plan is not None, timeout=90, what="the plan on the server")
+    rep = app.wb.last_plan.collision_report  # type: ignore[union-attr]
+    assert rep.mode == "exact" and rep.fallback is not None
+    page.get_by_text("collision mode is exact").first.wait_for(timeout=15_000)
+
+    # A refused value (set from Python as a stale client would) puts the widget back.
+    app.collision.mode.value = "voxels"  # type: ignore[misc]
+    wait_for(lambda: app.collision.mode.value == "exact", what="the widget back on exact")
+    assert app.wb.collision.mode == "exact"

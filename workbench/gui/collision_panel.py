@@ -1,4 +1,5 @@
-"""The collision-engine controls in the "Robot" tab: spheres, distance-field slice, check report."""
+"""The collision-engine controls in the "Robot" tab: the plan collision mode, spheres,
+distance-field slice, check report."""
 
 from __future__ import annotations
 
@@ -8,8 +9,9 @@ import numpy as np
 import trimesh
 import viser
 
+from workbench.errors import WorkbenchError
 from workbench.gui.handles import Removable
-from workbench.gui.notify import guarded
+from workbench.gui.notify import guarded, notify
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -24,13 +26,22 @@ def _colormap(values: np.ndarray, scale: float) -> np.ndarray:
 
 
 class CollisionPanel:
-    """Toggles for the fitted spheres and the SDF slice, and the conservative check's report."""
+    """The plan collision mode (the project's `collision.mode`), toggles for the fitted spheres
+    and the SDF slice, and the conservative check's report."""
 
     def __init__(self, app: WorkbenchApp) -> None:
         self.app = app
         g = app.server.gui
         self.folder = g.add_folder("Collision engine", expand_by_default=True)
         with self.folder:
+            svc = app.wb.collision
+            self.mode = g.add_dropdown(
+                "Plan collision mode",
+                svc.modes,
+                initial_value=svc.mode,
+                hint="How every plan checks collisions: spheres + SDF confirmed by python-fcl"
+                " (default), exact python-fcl at every sample, or capsules",
+            )
             self.show_spheres = g.add_checkbox("Show spheres", initial_value=False)
             self.show_field = g.add_checkbox("Show distance field", initial_value=False)
             self.height = g.add_slider("Slice height [mm]", 0.0, 2000.0, 10.0, 400.0)
@@ -40,12 +51,24 @@ class CollisionPanel:
         self.handles: list[Removable] = [self.folder]
         self.sphere_node: Any = None
         self.field_node: Any = None
+        self.mode.on_update(guarded(app.server, "Plan collision mode")(self._on_mode))
         self.show_spheres.on_update(guarded(app.server, "Show spheres")(self._on_spheres))
         self.show_field.on_update(guarded(app.server, "Show distance field")(self._on_field))
         self.height.on_update(guarded(app.server, "Slice height")(self._on_field))
         self.check_button.on_click(guarded(app.server, "Check")(self._on_check))
         # Spheres follow the robot whenever it is posed (jog, timeline).
         app.scene.on_show.append(self.update_spheres)
+
+    def _on_mode(self, event: Any) -> None:
+        """Set the project's plan collision mode; a refused value puts the widget back."""
+        svc = self.app.wb.collision
+        if self.mode.value == svc.mode:
+            return
+        try:
+            svc.set_mode(str(self.mode.value))
+        except WorkbenchError as exc:
+            self.mode.value = svc.mode  # type: ignore[misc]
+            notify(self.app.server, getattr(event, "client", None), "Plan collision mode", str(exc))
 
     def _engine(self) -> Any:
         svc = self.app.wb.collision

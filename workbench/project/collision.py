@@ -9,7 +9,7 @@ the spheres mode. See docs/collision-engine.md ("Plan collision policy").
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field
 
@@ -22,8 +22,8 @@ class CollisionSpec(StrictModel):
     """The plan collision policy: mode, and the spheres engine's parameters."""
 
     mode: Literal["spheres", "exact", "capsules"] = "spheres"
-    spheres_per_link: int = Field(SPHERES_PER_LINK, ge=1, le=64)  # spheres fitted per link
-    resolution: int = Field(RESOLUTION, ge=2, le=512)  # coarse SDF cells along the cell's extent
+    spheres_per_link: Annotated[int, Field(ge=1, le=64)] = SPHERES_PER_LINK  # per link
+    resolution: Annotated[int, Field(ge=2, le=512)] = RESOLUTION  # coarse SDF cells, largest extent
 
     def to_si(self) -> CollisionPolicy:
         """Return the policy the plans use (no units to convert: counts and a mode)."""

@@ -61,6 +61,11 @@ class CollisionService:
         )
 
     @property
+    def modes(self) -> tuple[str, ...]:
+        """Return the plan collision modes a project may choose (the GUI's options)."""
+        return POLICY_MODES
+
+    @property
     def mode(self) -> str:
         """Return the plan collision mode of the project (``"spheres"``, ``"exact"``, ``"capsules"``)."""
         return self.wb.collision_policy.mode
