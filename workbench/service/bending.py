@@ -14,7 +14,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision import check_trajectory
-from workbench.errors import InputError, UnreachableError
+from workbench.errors import InputError
+from workbench.kinematics import follow_path
 from workbench.motion import smooth_joint_path
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.service.section import SectionService
@@ -35,7 +36,7 @@ from workbench.sheetmetal.grasp import (
     grasp_point,
 )
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.plan import BendingPlan, FirstCollision, Playback, first_collision
+from workbench.sheetmetal.plan import BendingPlan, Playback, first_collision, robot_frames
 from workbench.sheetmetal.plan import playback as sample_playback
 from workbench.sheetmetal.sequence import check_sequence
 from workbench.sheetmetal.transfer import (
@@ -48,16 +49,6 @@ from workbench.sheetmetal.transfer import (
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
-
-__all__ = [
-    "BendingPlan",
-    "BendingService",
-    "CheckCost",
-    "DiePlacement",
-    "FirstCollision",
-    "OBBTree",
-    "Playback",
-]
 
 Progress = Callable[[float, str], None]
 
@@ -153,8 +144,7 @@ class BendingService(SectionService[BendingSpec]):
 
     def tree_depth(self) -> int:
         """Return the number of levels of the deepest OBB tree of the folded part (any grasp)."""
-        folded = self.part.fold(len(self.part.bends))
-        return 1 + max(int(folded.obb_tree(f).level.max()) for f in range(len(self.part.flanges)))
+        return self.part.fold(len(self.part.bends)).tree_depth()
 
     def obstacles(self) -> Obstacles:
         """Return the cell's colliding objects as OBBs [m] (cylinders and meshes confirmed exactly)."""
@@ -166,12 +156,7 @@ class BendingService(SectionService[BendingSpec]):
         return bend_on_die(step, len(self.part.bends))
 
     def die_part_pose(self, step: int) -> NDArray[np.float64]:
-        """Return T_world_part (4, 4) [m] with bend number `step` of the sequence on the die.
-
-        The bend line (the middle of its bend zone) lies on the die's x axis, the sheet's outer
-        side on the die, the inner side up (towards the punch); the gripped flange on the
-        robot's (-y) side. Raises InputError when the bend line is longer than the die.
-        """
+        """Return T_world_part (4, 4) [m] with bend `step` on the die (`sheetmetal.die`)."""
         return die_part_pose(self.part, step, self.si().die, self.grasp)
 
     def _world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -179,47 +164,26 @@ class BendingService(SectionService[BendingSpec]):
         return world_tcp(self.wb.robot, setup.T_world_base, setup.T_flange_tcp, q)
 
     def _ik(
-        self, T_world_tcp: NDArray[np.float64], names: list[str], q_start: NDArray[np.float64]
+        self,
+        T_world_tcp: NDArray[np.float64],
+        names: list[str],
+        q_start: NDArray[np.float64],
+        what: str,
     ) -> tuple[NDArray[np.float64], str]:
         """Return joints (N, dof) reaching the TCP poses (N, 4, 4) with one arm configuration."""
-        setup, model = self.wb.setup, self.wb.robot
-        Tb = base_flange_poses(setup.T_world_base, setup.T_flange_tcp, T_world_tcp)
-        if getattr(model, "is_analytic", False):
-            from workbench.kinematics import branch_name
-
-            qb, valid = model.ik_batch(Tb, q_near=q_start)
-            none = [names[i] for i in range(len(names)) if not valid[i].any()]
-            if none:
-                raise UnreachableError(
-                    f"{none[0]}: unreachable within the joint limits with the grasp on flange "
-                    f"{self.grasp_flange!r}; move the die/pallet, change the grasp or the sequence"
-                )
-            common = np.flatnonzero(valid.all(axis=0))
-            if len(common) == 0:
-                best = int(np.argmax(valid.sum(axis=0)))
-                bad = [names[i] for i in range(len(names)) if not valid[i, best]]
-                raise UnreachableError(
-                    f"{bad[0]}: no single arm configuration reaches every pose "
-                    f"(configuration {branch_name(best)} misses {bad}); change the grasp or the die pose"
-                )
-            cost = [float(np.linalg.norm(qb[:, b] - q_start, axis=1).sum()) for b in common]
-            b = int(common[int(np.argmin(cost))])
-            q = np.array(qb[:, b])
-            # Re-solve one by one so wide joints take the turn nearest the previous pose.
-            for i in range(1, len(q)):
-                qi, ok = model.ik_batch(Tb[i : i + 1], q_near=q[i - 1])
-                if ok[0, b]:
-                    q[i] = qi[0, b]
-            return q, branch_name(b)
-        rows = []
-        near = q_start
-        for T, name in zip(Tb, names, strict=True):
-            sol = np.asarray(model.ik(T, q_near=near), float).reshape(-1, model.dof)
-            if len(sol) == 0:
-                raise UnreachableError(f"{name}: unreachable within the joint limits")
-            near = sol[0]
-            rows.append(near)
-        return np.array(rows), "numeric IK"
+        setup = self.wb.setup
+        path = follow_path(
+            self.wb.robot,
+            base_flange_poses(setup.T_world_base, setup.T_flange_tcp, T_world_tcp),
+            q_start,
+            labels=names,
+            what=what,
+            cost="total",
+            points=T_world_tcp[:, :3, 3],
+            hint=f"the grasp is on flange {self.grasp_flange!r}; move the die or pallet, "
+            "change the grasp or the sequence",
+        )
+        return path.q, path.configuration
 
     def placements(self) -> tuple[tuple[DiePlacement, ...], str]:
         """Return each bend's die placement with one arm configuration, and its label.
@@ -228,7 +192,7 @@ class BendingService(SectionService[BendingSpec]):
         """
         part = self.part
         T_part, T_tcp, names = die_targets(part, self.si().die, self.grasp)
-        q, label = self._ik(T_tcp, names, self.wb.joints)
+        q, label = self._ik(T_tcp, names, self.wb.joints, "bending.die")
         return die_placements(part, T_part, T_tcp, q), label
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
@@ -252,7 +216,7 @@ class BendingService(SectionService[BendingSpec]):
         placements, label = self.placements()
         report(0.25, "planning the transfer")
         T_tcp, names = self.transfer_poses(placements[-1])
-        q_way, _ = self._ik(T_tcp, names, placements[-1].q)
+        q_way, _ = self._ik(T_tcp, names, placements[-1].q, "bending transfer")
         traj = smooth_joint_path(
             q_way,
             model.max_velocity,
@@ -280,10 +244,7 @@ class BendingService(SectionService[BendingSpec]):
             self.wb.collision_policy,
             progress=lambda f, m: report(0.7 + 0.25 * f, m),
         )
-        robot_hit = np.zeros(F, dtype=bool)
-        robot_hit[list(path.colliding_indices)] = True
-        robot_between = np.zeros(F, dtype=bool)
-        robot_between[list(path.between_indices)] = True
+        robot_hit, robot_between = robot_frames(path, F)
         first = first_collision(
             times,
             rep,
@@ -318,10 +279,7 @@ class BendingService(SectionService[BendingSpec]):
         return self._plan
 
     def check_cost(self, plan: BendingPlan, repeat: int = 3) -> CheckCost:
-        """Return OBB tests and check times per frame of the tree and the flat loop (Fig. 12).
-
-        A measurement on request (the GUI's plot), not part of `plan`.
-        """
+        """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request."""
         return check_cost(self.tree(), self.obstacles().boxes, plan.T_world_grasp, repeat)
 
     def part_pose_at(self, plan: BendingPlan, t: float) -> NDArray[np.float64]:

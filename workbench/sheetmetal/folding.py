@@ -141,6 +141,10 @@ class FoldedState:
             self._trees[g] = build_obb_tree(self, g)
         return self._trees[g]
 
+    def tree_depth(self) -> int:
+        """Return the number of levels of the deepest OBB tree over every choice of grasp flange."""
+        return 1 + max(int(self.obb_tree(f).level.max()) for f in range(len(self.part.flanges)))
+
 
 def _T_parent_child(
     part: SheetMetalPart, i: int, theta: float, radius: float

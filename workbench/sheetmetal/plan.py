@@ -57,6 +57,14 @@ class FirstCollision:
         )
 
 
+def robot_frames(path: EnginePathReport, n: int) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+    """Return (colliding, between) (n,) of the frames from the robot's path report."""
+    hit, between = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
+    hit[list(path.colliding_indices)] = True
+    between[list(path.between_indices)] = True
+    return hit, between
+
+
 def first_collision(
     times: NDArray[np.float64],
     part_report: FramesReport,
