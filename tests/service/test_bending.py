@@ -219,7 +219,10 @@ def test_unreachable_die_and_short_die_name_the_bend() -> None:
     d = example_dict()
     d["bending"]["die"]["pose"]["xyz"] = [2500, 0, 350]
     w = Workbench.from_dict(d, base_dir=EXAMPLE.parent)
-    with pytest.raises(UnreachableError, match=r"bending\.die: bend 'b23' \(step 1\) on the die at \[.*\] mm is unreachable"):
+    with pytest.raises(
+        UnreachableError,
+        match=r"bending\.die: bend 'b23' \(step 1\) on the die at \[.*\] mm is unreachable",
+    ):
         w.bending.plan()
     d = example_dict()
     d["bending"]["die"]["length"] = 250
