@@ -17,7 +17,7 @@ from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 from workbench.gui.progress import busy
 from workbench.gui.scene import place
-from workbench.gui.timeline import SECONDS, Motion
+from workbench.gui.timeline import SECONDS
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -321,19 +321,7 @@ class BendingPanel:
 
     def _load_timeline(self, plan: BendingPlan) -> None:
         svc = self.app.wb.bending
-        pb = svc.playback(plan)
         robot = self.app.wb.robot
-        motion = Motion(
-            name="bending transfer",
-            times=pb.times,
-            positions=pb.positions,
-            velocities=pb.velocities,
-            accelerations=pb.accelerations,
-            tcp_speed=pb.tcp_speed,
-            colliding=pb.colliding,
-            velocity_limits=robot.max_velocity,
-            acceleration_limits=robot.max_acceleration,
-        )
 
         def follow(t: float) -> None:
             place(self.part_frame, svc.part_pose_at(plan, t))
@@ -341,7 +329,12 @@ class BendingPanel:
             self._check = (rep.nodes_tested, rep.nodes_hit)
             self._show_levels()
 
-        self.app.timeline.load(motion, follow=follow)
+        self.app.timeline.load(
+            svc.playback(plan),
+            velocity_limits=robot.max_velocity,
+            acceleration_limits=robot.max_acceleration,
+            follow=follow,
+        )
         first = plan.first_collision
         if first is not None:
             self.app.timeline.time.value = round(float(plan.times[first.frame]), 4)  # type: ignore[misc]

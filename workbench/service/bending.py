@@ -16,7 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.collision import check_trajectory
 from workbench.errors import InputError
 from workbench.kinematics import follow_path
-from workbench.motion import smooth_joint_path
+from workbench.motion import SampledMotion, smooth_joint_path
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.service.section import SectionService
 from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
@@ -36,7 +36,7 @@ from workbench.sheetmetal.grasp import (
     grasp_point,
 )
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.plan import BendingPlan, Playback, first_collision, robot_frames
+from workbench.sheetmetal.plan import BendingPlan, first_collision, robot_frames
 from workbench.sheetmetal.plan import playback as sample_playback
 from workbench.sheetmetal.sequence import check_sequence
 from workbench.sheetmetal.transfer import (
@@ -287,6 +287,6 @@ class BendingService(SectionService[BendingSpec]):
         q = plan.trajectory.at([t])[0][0]
         return carried_poses(self._world_tcp(q), self.part, self.grasp)[1]
 
-    def playback(self, plan: BendingPlan, dt: float = 0.02) -> Playback:
+    def playback(self, plan: BendingPlan, dt: float = 0.02) -> SampledMotion:
         """Return the transfer sampled every `dt` [s] for the timeline, frames' verdicts carried over."""
         return sample_playback(plan, self._world_tcp, dt)

@@ -10,7 +10,7 @@ from workbench.sheetmetal.kfactor import bend_allowance, flange_extension, flang
 from workbench.sheetmetal.obbtree import CollisionReport, FramesReport, OBBTree
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.part import Bend, Flange, SheetMetalPart
-from workbench.sheetmetal.plan import BendingPlan, FirstCollision, Playback, first_collision
+from workbench.sheetmetal.plan import BendingPlan, FirstCollision, first_collision, playback
 from workbench.sheetmetal.sequence import check_sequence, sequence_problem
 from workbench.sheetmetal.transfer import Transfer, carried_poses, transfer_poses
 
@@ -28,7 +28,6 @@ __all__ = [
     "Grasp",
     "OBBTree",
     "Obstacles",
-    "Playback",
     "SheetMetalPart",
     "T_flange_grasp",
     "Transfer",
@@ -45,6 +44,7 @@ __all__ = [
     "flange_rise",
     "grasp_point",
     "k_factor",
+    "playback",
     "sequence_problem",
     "transfer_poses",
 ]

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.collision.engine import EnginePathReport
-from workbench.motion import Trajectory
+from workbench.motion import SampledMotion, Trajectory
 from workbench.sheetmetal.die import DiePlacement
 from workbench.sheetmetal.obbtree import FramesReport
 
@@ -174,28 +174,15 @@ class BendingPlan:
         return head + f" First collision: {self.first_collision.describe()}." + robot
 
 
-@dataclass(frozen=True, eq=False)
-class Playback:
-    """The transfer sampled for the timeline: times [s], joints, velocities, accelerations, TCP speed [m/s]."""
-
-    times: NDArray[np.float64]
-    positions: NDArray[np.float64]
-    velocities: NDArray[np.float64]
-    accelerations: NDArray[np.float64]
-    tcp_speed: NDArray[np.float64]
-    colliding: NDArray[np.bool_]
-
-
 def playback(
     plan: BendingPlan,
     world_tcp: Callable[[NDArray[np.float64]], NDArray[np.float64]],
     dt: float = 0.02,
-) -> Playback:
-    """Return the transfer sampled every `dt` [s], frames' verdicts carried over.
+) -> SampledMotion:
+    """Return the transfer sampled every `dt` [s] for the timeline, frames' verdicts carried over.
 
     `world_tcp(q)` gives the TCP's world poses (N, 4, 4) [m] at joints (N, dof).
     """
     t, p, v, a = plan.trajectory.sample(dt)
-    tcp = world_tcp(p)[:, :3, 3]
-    speed = np.r_[0.0, np.linalg.norm(np.diff(tcp, axis=0), axis=1) / np.diff(t)]
-    return Playback(t, p, v, a, speed, plan.colliding[plan.frame_at(t)])
+    colliding = plan.colliding[plan.frame_at(t)]
+    return SampledMotion(t, p, v, a, world_tcp(p), colliding, name="bending transfer")
