@@ -92,11 +92,12 @@ def _serve(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
+    from workbench.project.units import to_deg, to_mm
     from workbench.service import Workbench
 
     wb = Workbench.open(args.project)
     report = wb.collision_status()
-    q = ", ".join(f"{v:.2f}" for v in wb.joints * 180 / 3.141592653589793)
+    q = ", ".join(f"{v:.2f}" for v in to_deg(wb.joints))
     print(
         f"{args.project}: valid; robot {wb.project.robot.name} ({wb.robot.dof} joints) at [{q}] deg"
     )
@@ -105,7 +106,7 @@ def _check(args: argparse.Namespace) -> int:
         print(f"collision: {pairs}")
         return 1
     closest = " – ".join(report.closest_pair) if report.closest_pair else "none"
-    print(f"collision-free; clearance {report.min_distance * 1000:.1f} mm ({closest})")
+    print(f"collision-free; clearance {to_mm(report.min_distance):.1f} mm ({closest})")
     return 0
 
 

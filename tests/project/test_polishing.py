@@ -16,7 +16,7 @@ import pytest
 from workbench.errors import InputError, ProjectError
 from workbench.project.io import project_from_dict
 from workbench.project.polishing import PolishingSpec
-from workbench.service.convert import pose_to_matrix
+from workbench.project.units import pose_to_matrix
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "projects" / "polishing_cell.json"
 

@@ -18,7 +18,8 @@ from workbench.gui.notify import guarded
 from workbench.gui.scene import place
 from workbench.service import Workbench
 
-DEG = 180.0 / np.pi
+DEG_PER_RAD = 180.0 / np.pi  # display only
+MM_PER_M = 1000.0  # display only
 
 
 class JogPanel:
@@ -37,10 +38,10 @@ class JogPanel:
     def build(self) -> None:
         """Create the sliders, dropdown, gizmo and status for the current project."""
         s, wb = self.server, self.wb
-        q = wb.joints * DEG
+        q = wb.joints * DEG_PER_RAD
         self.sliders = []
         for j in range(wb.robot.dof):
-            lo, hi = wb.robot.limits[j] * DEG
+            lo, hi = wb.robot.limits[j] * DEG_PER_RAD
             slider = s.gui.add_slider(
                 f"J{j + 1} [deg]",
                 min=float(np.floor(lo * 10) / 10),
@@ -73,7 +74,7 @@ class JogPanel:
     def _on_slider(self, _event: object) -> None:
         if self._syncing:
             return
-        self.wb.set_joints(np.array([sl.value for sl in self.sliders]) / DEG)
+        self.wb.set_joints(np.array([sl.value for sl in self.sliders]) / DEG_PER_RAD)
         self.refresh()
 
     def _on_config(self, _event: object) -> None:
@@ -101,7 +102,7 @@ class JogPanel:
     def refresh(self) -> None:
         """Put the sliders, gizmo, dropdown and status in line with the workbench's state."""
         wb = self.wb
-        q = wb.joints * DEG
+        q = wb.joints * DEG_PER_RAD
         T = wb.tcp_pose()
         try:
             sols = wb.ik_solutions(T)
@@ -123,15 +124,15 @@ class JogPanel:
 
     def _status_text(self, T: np.ndarray, n_solutions: int) -> str:
         wb = self.wb
-        xyz = T[:3, 3] * 1000
-        rpy = matrix_to_rpy(T[:3, :3]) * DEG
+        xyz = T[:3, 3] * MM_PER_M
+        rpy = matrix_to_rpy(T[:3, :3]) * DEG_PER_RAD
         report = wb.collision_status()
         if report.in_collision:
             pairs = ", ".join(f"{a}–{b}" for a, b in report.colliding)
             coll = f"**Collision:** {pairs}"
         else:
             pair = " – ".join(report.closest_pair) if report.closest_pair else "none"
-            coll = f"Collision-free, clearance **{report.min_distance * 1000:.1f} mm** ({pair})"
+            coll = f"Collision-free, clearance **{report.min_distance * MM_PER_M:.1f} mm** ({pair})"
         lines = [
             f"TCP [mm]: {xyz[0]:.1f}, {xyz[1]:.1f}, {xyz[2]:.1f}",
             f"RPY [deg]: {rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}",

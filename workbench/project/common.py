@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from typing import Annotated
 
+import numpy as np
+from numpy.typing import NDArray
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
 
@@ -41,3 +43,9 @@ class Pose(StrictModel):
 
     xyz: Vec3mm = Field(default_factory=lambda: [0.0, 0.0, 0.0])
     rpy: Vec3deg = Field(default_factory=lambda: [0.0, 0.0, 0.0])
+
+    def to_si(self) -> NDArray[np.float64]:
+        """Return the pose as a (4, 4) transform [m]."""
+        from workbench.project.units import pose_to_matrix
+
+        return pose_to_matrix(self)

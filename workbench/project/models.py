@@ -6,8 +6,11 @@ project file is reported with its JSON path instead of being ignored.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Annotated, Literal
 
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
 from pydantic import Field, model_validator
 
 from workbench.project.assembly import AssemblySpec
@@ -15,6 +18,9 @@ from workbench.project.bending import BendingSpec
 from workbench.project.collision import CollisionSpec
 from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
 from workbench.project.polishing import PolishingSpec
+from workbench.project.units import DEG, MM, pose_to_matrix
+
+FloatArray = NDArray[np.float64]
 
 SCHEMA_VERSION = 1
 PRESETS = ("mz07",)
@@ -35,6 +41,30 @@ class DHRow(StrictModel):
         if not self.min < self.max:
             raise ValueError(f"joint limits need min < max, got min={self.min}, max={self.max}")
         return self
+
+
+def _per_joint(values: list[float] | None) -> FloatArray | None:
+    return None if values is None else np.asarray(values, float) * DEG
+
+
+@dataclass(frozen=True, eq=False)
+class RobotSI:
+    """The robot section in SI: DH rows (n, 4) [rad, m, m, rad] and limits (n, 2) [rad] (or
+    None for a preset or URDF), base pose (4, 4) [m], stored joints [rad], rates [rad/s,
+    rad/s^2, rad/s^3] per joint (None: the model's defaults), mesh files per link."""
+
+    name: str
+    preset: str | None
+    dh: FloatArray | None
+    limits: FloatArray | None
+    urdf: str | None
+    T_world_base: FloatArray
+    joints: FloatArray | None
+    max_velocity: FloatArray | None
+    max_acceleration: FloatArray | None
+    max_jerk: FloatArray | None
+    link_meshes: tuple[str | None, ...] | None
+    link_mesh_scale: float = MM  # link mesh files are in mm
 
 
 class Robot(StrictModel):
@@ -63,6 +93,45 @@ class Robot(StrictModel):
             raise ValueError("'dh' needs at least one row")
         return self
 
+    def to_si(self) -> RobotSI:
+        """Return the section in SI (lengths of per-joint lists are checked against the model)."""
+        dh = limits = None
+        if self.dh is not None:
+            dh = np.array(
+                [[r.theta_offset * DEG, r.d * MM, r.a * MM, r.alpha * DEG] for r in self.dh]
+            )
+            limits = np.array([[r.min * DEG, r.max * DEG] for r in self.dh])
+        return RobotSI(
+            name=self.name,
+            preset=self.preset,
+            dh=dh,
+            limits=limits,
+            urdf=self.urdf,
+            T_world_base=pose_to_matrix(self.base),
+            joints=_per_joint(self.joints),
+            max_velocity=_per_joint(self.max_velocity),
+            max_acceleration=_per_joint(self.max_acceleration),
+            max_jerk=_per_joint(self.max_jerk),
+            link_meshes=None if self.link_meshes is None else tuple(self.link_meshes),
+        )
+
+    def store_joints(self, q: ArrayLike) -> None:
+        """Store joints q (dof,) [rad] as the section's `joints` [deg]."""
+        self.joints = [float(v) for v in np.asarray(q, float) / DEG]
+
+
+@dataclass(frozen=True, eq=False)
+class ToolSI:
+    """The tool in SI: TCP in the flange frame (4, 4) [m], mesh file and its scale to m, or a
+    box `size` (3,) [m] from the flange to the TCP, display colour."""
+
+    name: str
+    T_flange_tcp: FloatArray
+    mesh: str | None
+    mesh_scale: float
+    size: FloatArray | None
+    color: tuple[int, int, int]
+
 
 class Tool(StrictModel):
     """The tool on the flange: TCP pose in the flange frame, optional mesh or box shape."""
@@ -73,6 +142,34 @@ class Tool(StrictModel):
     mesh_scale: Positive = 0.001  # mesh units -> m (files are usually in mm)
     size: Vec3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
     color: Color = Field(default_factory=lambda: [200, 200, 210])
+
+    def to_si(self) -> ToolSI:
+        """Return the tool in SI."""
+        return ToolSI(
+            name=self.name,
+            T_flange_tcp=pose_to_matrix(self.tcp),
+            mesh=self.mesh,
+            mesh_scale=self.mesh_scale,
+            size=None if self.size is None else np.asarray(self.size, float) * MM,
+            color=(int(self.color[0]), int(self.color[1]), int(self.color[2])),
+        )
+
+
+@dataclass(frozen=True, eq=False)
+class CellObjectSI:
+    """A cell object in SI: shape, world pose (4, 4) [m], box size [m], cylinder radius and
+    height [m], mesh file and its scale to m, colour, whether it collides."""
+
+    name: str
+    shape: str
+    T_world_body: FloatArray
+    size: tuple[float, float, float] | None
+    radius: float | None
+    height: float | None
+    path: str | None
+    scale: float
+    color: tuple[int, int, int]
+    collide: bool
 
 
 class CellObject(StrictModel):
@@ -99,6 +196,25 @@ class CellObject(StrictModel):
             raise ValueError(f"box size must be positive [mm], got {self.size}")
         return self
 
+    def to_si(self) -> CellObjectSI:
+        """Return the object in SI."""
+        size = None
+        if self.size is not None:
+            x, y, z = (float(v) * MM for v in self.size)
+            size = (x, y, z)
+        return CellObjectSI(
+            name=self.name,
+            shape=self.shape,
+            T_world_body=pose_to_matrix(self.pose),
+            size=size,
+            radius=None if self.radius is None else self.radius * MM,
+            height=None if self.height is None else self.height * MM,
+            path=self.path,
+            scale=self.scale,
+            color=(int(self.color[0]), int(self.color[1]), int(self.color[2])),
+            collide=self.collide,
+        )
+
 
 class Cell(StrictModel):
     """Everything around the robot."""
@@ -113,6 +229,32 @@ class Cell(StrictModel):
                 raise ValueError(f"object names must be unique; {obj.name!r} appears twice")
             seen.add(obj.name)
         return self
+
+    def to_si(self) -> tuple[CellObjectSI, ...]:
+        """Return the objects in SI, in file order."""
+        return tuple(obj.to_si() for obj in self.objects)
+
+
+@dataclass(frozen=True, eq=False)
+class MoveSI:
+    """A move in SI: joint target (dof,) [rad] or TCP target in the world (4, 4) [m]; speed
+    as a fraction of the max joint speeds (joint moves) or [m/s] (linear); zone [m]."""
+
+    name: str
+    type: str
+    joints: FloatArray | None
+    T_world_tcp: FloatArray | None
+    speed: float
+    zone: float
+
+
+@dataclass(frozen=True, eq=False)
+class ProgramSI:
+    """A program in SI: name, start joints [rad] (None: the robot's stored joints), moves."""
+
+    name: str
+    start: FloatArray | None
+    moves: tuple[MoveSI, ...]
 
 
 class MoveSpec(StrictModel):
@@ -135,6 +277,17 @@ class MoveSpec(StrictModel):
             raise ValueError(f"a joint move's speed is a percentage (0, 100], got {self.speed}")
         return self
 
+    def to_si(self) -> MoveSI:
+        """Return the move in SI."""
+        return MoveSI(
+            name=self.name,
+            type=self.type,
+            joints=None if self.joints is None else np.asarray(self.joints, float) * DEG,
+            T_world_tcp=None if self.pose is None else pose_to_matrix(self.pose),
+            speed=self.speed / 100.0 if self.type == "joint" else self.speed * MM,
+            zone=self.zone * MM,
+        )
+
 
 class ProgramSpec(StrictModel):
     """A robot program: start joints and moves; planned into a jerk-limited trajectory."""
@@ -151,6 +304,11 @@ class ProgramSpec(StrictModel):
                 " (at most 24 characters), as robot controllers require"
             )
         return self
+
+    def to_si(self) -> ProgramSI:
+        """Return the program in SI."""
+        start = None if self.start is None else np.asarray(self.start, float) * DEG
+        return ProgramSI(self.name, start, tuple(m.to_si() for m in self.moves))
 
 
 class Project(StrictModel):

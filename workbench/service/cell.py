@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -10,8 +11,8 @@ import trimesh
 from numpy.typing import NDArray
 
 from workbench.collision import Solid
-from workbench.project.models import CellObject
-from workbench.service.convert import MM, load_mesh_file, pose_to_matrix
+from workbench.project.models import CellObject, CellObjectSI
+from workbench.service.convert import load_mesh_file
 
 
 @dataclass(frozen=True)
@@ -29,17 +30,18 @@ class CellBody:
         return self.solid.to_trimesh()
 
 
-def build_cell(objects: list[CellObject], base_dir: Path) -> list[CellBody]:
+def build_cell(objects: Sequence[CellObject | CellObjectSI], base_dir: Path) -> list[CellBody]:
     """Return the cell bodies of the project's objects; meshes are loaded relative to `base_dir`."""
     bodies = []
-    for i, obj in enumerate(objects):
+    for i, spec in enumerate(objects):
+        obj = spec.to_si() if isinstance(spec, CellObject) else spec
         where = f"cell.objects[{i}]"
         if obj.shape == "box":
             assert obj.size is not None
-            solid = Solid(obj.name, "box", size=tuple(float(s) * MM for s in obj.size))  # type: ignore[arg-type]
+            solid = Solid(obj.name, "box", size=obj.size)
         elif obj.shape == "cylinder":
             assert obj.radius is not None and obj.height is not None
-            solid = Solid(obj.name, "cylinder", radius=obj.radius * MM, height=obj.height * MM)
+            solid = Solid(obj.name, "cylinder", radius=obj.radius, height=obj.height)
         else:
             assert obj.path is not None
             mesh = load_mesh_file(obj.path, base_dir, obj.scale, f"{where}.path")
@@ -48,8 +50,8 @@ def build_cell(objects: list[CellObject], base_dir: Path) -> list[CellBody]:
             CellBody(
                 name=obj.name,
                 solid=solid,
-                T_world_body=pose_to_matrix(obj.pose),
-                color=(int(obj.color[0]), int(obj.color[1]), int(obj.color[2])),
+                T_world_body=obj.T_world_body,
+                color=obj.color,
                 collide=obj.collide,
             )
         )

@@ -1,4 +1,5 @@
-"""Conversions between the project file's units (mm, deg) and SI, and project -> domain objects."""
+"""Mesh files of a project loaded in metres; the unit names below are re-exported from
+`workbench.project.units` (their home) for callers not yet switched."""
 
 from __future__ import annotations
 
@@ -6,28 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from numpy.typing import NDArray
 
 from workbench.errors import MeshError
-from workbench.geometry.transforms import matrix_to_rpy, xyz_rpy_to_transform
-from workbench.project.models import Pose
+from workbench.project.units import DEG, MM, matrix_to_pose, pose_to_matrix
 
-MM = 1e-3
-DEG = np.pi / 180.0
-
-
-def pose_to_matrix(pose: Pose) -> NDArray[np.float64]:
-    """Return the (4, 4) transform [m] of a project pose (mm, deg)."""
-    return xyz_rpy_to_transform(np.asarray(pose.xyz) * MM, np.asarray(pose.rpy) * DEG)
-
-
-def matrix_to_pose(T: NDArray[np.float64]) -> Pose:
-    """Return a project pose (mm, deg) of a (4, 4) transform [m]."""
-    T = np.asarray(T, float)
-    return Pose(
-        xyz=[float(v) for v in T[:3, 3] / MM],
-        rpy=[float(v) for v in matrix_to_rpy(T[:3, :3]) / DEG],
-    )
+__all__ = ["DEG", "MM", "load_mesh_file", "matrix_to_pose", "pose_to_matrix"]
 
 
 def load_mesh_file(path: str, base_dir: Path, scale: float, field: str) -> trimesh.Trimesh:

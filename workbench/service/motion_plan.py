@@ -23,8 +23,8 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
-from workbench.project.models import ProgramSpec
-from workbench.service.convert import DEG, MM, pose_to_matrix
+from workbench.project.models import ProgramSI
+from workbench.project.units import to_deg
 from workbench.service.robot_setup import RobotSetup
 
 EXPORT_FORMATS = {
@@ -118,7 +118,7 @@ class MotionPlan:
         return "; ".join(lines)
 
 
-def build_program(spec: ProgramSpec, setup: RobotSetup, q_start: NDArray[np.float64]) -> Program:
+def build_program(spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float64]) -> Program:
     """Return the motion `Program` of a project program (poses in the robot base frame, SI)."""
     if not spec.moves:
         raise InputError("program.moves: the program has no moves; add at least one")
@@ -129,28 +129,25 @@ def build_program(spec: ProgramSpec, setup: RobotSetup, q_start: NDArray[np.floa
     q_prev = q_start
     for i, mv in enumerate(spec.moves):
         where = f"program.moves[{i}]" + (f" ({mv.name})" if mv.name else "")
-        zone = mv.zone * MM
         if mv.joints is not None:
-            q = np.asarray(mv.joints, float) * DEG
+            q = mv.joints
             if q.shape != (model.dof,):
-                raise InputError(
-                    f"{where}.joints: expected {model.dof} values [deg], got {len(mv.joints)}"
-                )
+                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
             lo, hi = model.limits[:, 0], model.limits[:, 1]
             bad = np.flatnonzero((q < lo) | (q > hi))
             if bad.size:
                 j = int(bad[0])
                 raise InputError(
-                    f"{where}.joints[{j}]: {mv.joints[j]} deg is outside"
-                    f" [{lo[j] / DEG:.1f}, {hi[j] / DEG:.1f}] deg"
+                    f"{where}.joints[{j}]: {to_deg(q[j]):g} deg is outside"
+                    f" [{to_deg(lo[j]):.1f}, {to_deg(hi[j]):.1f}] deg"
                 )
-            moves.append(Move.joint(q, speed=mv.speed / 100.0, zone=zone, name=mv.name))
+            moves.append(Move.joint(q, speed=mv.speed, zone=mv.zone, name=mv.name))
             q_prev = q
             continue
-        assert mv.pose is not None
-        T_base_tcp = T_base_world @ pose_to_matrix(mv.pose)
+        assert mv.T_world_tcp is not None
+        T_base_tcp = T_base_world @ mv.T_world_tcp
         if mv.type == "linear":
-            moves.append(Move.linear(T_base_tcp, speed=mv.speed * MM, zone=zone, name=mv.name))
+            moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=mv.zone, name=mv.name))
             continue
         try:
             sols = np.asarray(model.ik(T_base_tcp @ T_tcp_flange, q_near=q_prev), float)
@@ -159,12 +156,12 @@ def build_program(spec: ProgramSpec, setup: RobotSetup, q_start: NDArray[np.floa
         if len(sols) == 0:
             raise UnreachableError(f"{where}.pose: no IK solution within the joint limits")
         q_prev = sols[0]
-        moves.append(Move.joint(q_prev, speed=mv.speed / 100.0, zone=zone, name=mv.name))
+        moves.append(Move.joint(q_prev, speed=mv.speed, zone=mv.zone, name=mv.name))
     return Program(spec.name, tuple(moves))
 
 
 def plan_motion(
-    spec: ProgramSpec,
+    spec: ProgramSI,
     setup: RobotSetup,
     checker: RobotCollisionChecker,
     q_start: NDArray[np.float64],

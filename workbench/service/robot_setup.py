@@ -4,22 +4,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import trimesh
 from numpy.typing import NDArray
 
 from workbench.errors import ProjectError
-from workbench.project.models import Robot, Tool
-from workbench.service.convert import DEG, MM, load_mesh_file, pose_to_matrix
+from workbench.kinematics.model import RobotModel
+from workbench.project.models import Robot, RobotSI, Tool, ToolSI
+from workbench.project.units import to_deg
+from workbench.service.convert import load_mesh_file
 
 
 @dataclass(frozen=True)
 class RobotSetup:
     """A robot ready to use: kinematics, link meshes (base first), tool mesh and frames."""
 
-    model: Any  # DHRobot or URDFRobot: fk, ik, link_transforms, limits, dof
+    model: RobotModel  # DHRobot or URDFRobot
     link_meshes: list[trimesh.Trimesh]
     T_world_base: NDArray[np.float64]
     T_flange_tcp: NDArray[np.float64]
@@ -27,7 +28,9 @@ class RobotSetup:
     q0: NDArray[np.float64]
 
 
-def _per_joint(values: list[float] | None, dof: int, field: str) -> NDArray[np.float64] | None:
+def _per_joint(
+    values: NDArray[np.float64] | None, dof: int, field: str
+) -> NDArray[np.float64] | None:
     if values is None:
         return None
     if len(values) != dof:
@@ -35,21 +38,19 @@ def _per_joint(values: list[float] | None, dof: int, field: str) -> NDArray[np.f
             f"{field}: expected {dof} values (one per joint), got {len(values)}",
             [(field, f"expected {dof} values")],
         )
-    return np.asarray(values, float) * DEG
+    return values
 
 
-def build_robot_model(spec: Robot, base_dir: Path) -> Any:
+def build_robot_model(spec: Robot | RobotSI, base_dir: Path) -> RobotModel:
     """Return the kinematic model (DHRobot or URDFRobot) of the project's robot section."""
     from workbench.kinematics import DHRobot
 
+    if isinstance(spec, Robot):
+        spec = spec.to_si()
     if spec.preset is not None:
         return DHRobot.mz07()
-    if spec.dh is not None:
-        rows = np.array(
-            [[r.theta_offset * DEG, r.d * MM, r.a * MM, r.alpha * DEG] for r in spec.dh]
-        )
-        limits = np.array([[r.min * DEG, r.max * DEG] for r in spec.dh])
-        return DHRobot(rows, limits, name=spec.name)
+    if spec.dh is not None and spec.limits is not None:
+        return DHRobot(spec.dh, spec.limits, name=spec.name)
     from workbench.kinematics import URDFRobot
 
     assert spec.urdf is not None
@@ -64,18 +65,16 @@ def build_robot_model(spec: Robot, base_dir: Path) -> Any:
     return URDFRobot.from_file(p)
 
 
-def build_tool_mesh(
-    tool: Tool, T_flange_tcp: NDArray[np.float64], base_dir: Path
-) -> trimesh.Trimesh | None:
+def build_tool_mesh(tool: ToolSI, base_dir: Path) -> trimesh.Trimesh | None:
     """Return the tool's mesh in the flange frame [m]: the file, a box, or a rod to the TCP."""
     if tool.mesh is not None:
         return load_mesh_file(tool.mesh, base_dir, tool.mesh_scale, "tool.mesh")
     if tool.size is not None:
-        ext = np.asarray(tool.size, float) * MM
+        ext = tool.size
         box = trimesh.creation.box(extents=ext)
         box.apply_translation([0.0, 0.0, ext[2] / 2])
         return box
-    tip = T_flange_tcp[:3, 3]
+    tip = tool.T_flange_tcp[:3, 3]
     length = float(np.linalg.norm(tip))
     if length < 1e-3:
         return None
@@ -87,10 +86,13 @@ def build_tool_mesh(
     return rod
 
 
-def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
-    """Return the robot setup for the project's robot and tool sections."""
-    from workbench.kinematics.link_shapes import link_meshes
-
+def build_robot(spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path) -> RobotSetup:
+    """Return the robot setup for the project's robot and tool sections (SI specs, or the
+    sections themselves, converted here)."""
+    if isinstance(spec, Robot):
+        spec = spec.to_si()
+    if isinstance(tool, Tool):
+        tool = tool.to_si()
     model = build_robot_model(spec, base_dir)
     dof = model.dof
     rates = {
@@ -110,7 +112,7 @@ def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
             for name, values in rates.items():
                 if values is not None:
                     setattr(model, name, values)
-    meshes = list(link_meshes(model))
+    meshes = list(model.link_meshes())
     if spec.link_meshes is not None:
         if len(spec.link_meshes) != dof + 1:
             raise ProjectError(
@@ -120,7 +122,9 @@ def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
             )
         for i, path in enumerate(spec.link_meshes):
             if path is not None:
-                meshes[i] = load_mesh_file(path, base_dir, 0.001, f"robot.link_meshes[{i}]")
+                meshes[i] = load_mesh_file(
+                    path, base_dir, spec.link_mesh_scale, f"robot.link_meshes[{i}]"
+                )
     q0 = _per_joint(spec.joints, dof, "robot.joints")
     if q0 is None:
         q0 = np.clip(np.zeros(dof), model.limits[:, 0], model.limits[:, 1])
@@ -129,16 +133,15 @@ def build_robot(spec: Robot, tool: Tool, base_dir: Path) -> RobotSetup:
     if bad.size:
         j = int(bad[0])
         msg = (
-            f"{q0[j] / DEG:.3f} deg is outside the joint limits"
-            f" [{lo[j] / DEG:.3f}, {hi[j] / DEG:.3f}] deg; move it inside"
+            f"{to_deg(q0[j]):.3f} deg is outside the joint limits"
+            f" [{to_deg(lo[j]):.3f}, {to_deg(hi[j]):.3f}] deg; move it inside"
         )
         raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])
-    T_flange_tcp = pose_to_matrix(tool.tcp)
     return RobotSetup(
         model=model,
         link_meshes=meshes,
-        T_world_base=pose_to_matrix(spec.base),
-        T_flange_tcp=T_flange_tcp,
-        tool_mesh=build_tool_mesh(tool, T_flange_tcp, base_dir),
+        T_world_base=spec.T_world_base,
+        T_flange_tcp=tool.T_flange_tcp,
+        tool_mesh=build_tool_mesh(tool, base_dir),
         q0=q0,
     )

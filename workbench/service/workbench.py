@@ -11,11 +11,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.collision import CollisionPolicy, CollisionReport, RobotCollisionChecker
+from workbench.collision import CollisionPolicy, ContactReport, RobotCollisionChecker
 from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
 from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
-from workbench.kinematics import branch_name
+from workbench.kinematics import RobotModel
+from workbench.kinematics.configurations import labelled_solutions
 from workbench.project import (
     Project,
     load_project,
@@ -23,11 +24,11 @@ from workbench.project import (
     project_to_json,
     save_project,
 )
+from workbench.project.units import to_deg
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell
 from workbench.service.collision_engine import CollisionService
-from workbench.service.convert import DEG
 from workbench.service.motion_plan import MotionPlan, Progress, export_text, plan_motion
 from workbench.service.polishing import PolishingService
 from workbench.service.robot_setup import RobotSetup, build_robot
@@ -79,23 +80,23 @@ class Workbench:
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
-        robot = build_robot(project.robot, project.tool, self.base_dir)
-        cell = build_cell(project.cell.objects, self.base_dir)
+        setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.base_dir)
+        cell = build_cell(project.cell.to_si(), self.base_dir)
         checker = RobotCollisionChecker(
-            robot.model,
-            robot.link_meshes,
-            T_world_base=robot.T_world_base,
-            tool=robot.tool_mesh,
+            setup.model,
+            setup.link_meshes,
+            T_world_base=setup.T_world_base,
+            tool=setup.tool_mesh,
             cell=[(b.solid, b.T_world_body) for b in cell if b.collide],
-            q_reference=robot.q0,
+            q_reference=setup.q0,
         )
         # Swap only when everything above succeeded: a bad project never half-replaces a good one.
         self._project = project
-        self._robot = robot
+        self._setup = setup
         self._cell = cell
         self._checker = checker
-        self._q = robot.q0.copy()
-        self._report: CollisionReport | None = None
+        self._q = setup.q0.copy()
+        self._report: ContactReport | None = None
         self._plan: MotionPlan | None = None
         self._workflows: dict[str, Any] = {}
 
@@ -108,7 +109,7 @@ class Workbench:
     @property
     def project(self) -> Project:
         """Return the pydantic project, with the robot's current joints written into it."""
-        self._project.robot.joints = [float(v) for v in self._q / DEG]
+        self._project.robot.store_joints(self._q)
         return self._project
 
     def to_json(self) -> str:
@@ -126,14 +127,14 @@ class Workbench:
 
     # -- robot ------------------------------------------------------------------------
     @property
-    def robot(self) -> Any:
+    def robot(self) -> RobotModel:
         """Return the kinematic model (`DHRobot` or `URDFRobot`)."""
-        return self._robot.model
+        return self._setup.model
 
     @property
     def setup(self) -> RobotSetup:
         """Return the robot setup: link meshes, tool mesh, base and TCP frames."""
-        return self._robot
+        return self._setup
 
     @property
     def cell(self) -> list[CellBody]:
@@ -147,15 +148,15 @@ class Workbench:
 
     def set_joints(self, q: ArrayLike) -> None:
         """Move the robot to joints `q` [rad]; raises JointLimitError naming the joint."""
-        model = self._robot.model
+        model = self._setup.model
         q = _as_vector(q, model.dof, "joints")
         lo, hi = model.limits[:, 0], model.limits[:, 1]
         bad = np.flatnonzero((q < lo - 1e-9) | (q > hi + 1e-9))
         if bad.size:
             j = int(bad[0])
             raise JointLimitError(
-                f"joint {j + 1}: {q[j] / DEG:.3f} deg is outside its limits"
-                f" [{lo[j] / DEG:.3f}, {hi[j] / DEG:.3f}] deg"
+                f"joint {j + 1}: {to_deg(q[j]):.3f} deg is outside its limits"
+                f" [{to_deg(lo[j]):.3f}, {to_deg(hi[j]):.3f}] deg"
             )
         with self._lock:
             self._q = np.clip(q, lo, hi)
@@ -164,11 +165,11 @@ class Workbench:
     def link_poses(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
         """Return world poses (dof + 1, 4, 4) of the base and every link at `q` (default: current)."""
         qq = self._q if q is None else _as_vector(q, self.robot.dof, "q")
-        return self._robot.T_world_base @ self.robot.link_transforms(qq)
+        return self._setup.T_world_base @ self.robot.link_transforms(qq)
 
     def tcp_pose(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
         """Return the TCP's world pose (4, 4) [m] at `q` (default: current joints)."""
-        return self.link_poses(q)[-1] @ self._robot.T_flange_tcp
+        return self.link_poses(q)[-1] @ self._setup.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
         """Return every IK solution (at most 8) that puts the TCP at `T_world_tcp`, nearest first.
@@ -177,29 +178,12 @@ class Workbench:
         """
         T = check_transform(T_world_tcp, "T_world_tcp")
         T_base_flange = (
-            invert_transform(self._robot.T_world_base)
+            invert_transform(self._setup.T_world_base)
             @ T
-            @ invert_transform(self._robot.T_flange_tcp)
+            @ invert_transform(self._setup.T_flange_tcp)
         )
-        model = self.robot
-        if getattr(model, "is_analytic", False):
-            # One solution per arm configuration (branch), each with the joint turns nearest
-            # the current joints; labels name the branch, so they stay stable as the arm moves.
-            qb, valid = model.ik_batch(T_base_flange[None], q_near=self._q)
-            found = [
-                IKSolution(q=np.array(qb[0, b]), label=branch_name(b))
-                for b in range(qb.shape[1])
-                if valid[0, b]
-            ]
-        else:
-            rows = np.asarray(model.ik(T_base_flange, q_near=self._q), float).reshape(-1, model.dof)
-            found = [IKSolution(q=row, label=f"solution {k + 1}") for k, row in enumerate(rows)]
-        if not found:
-            raise UnreachableError(
-                "the TCP pose is unreachable: no inverse-kinematics solution within the joint limits"
-            )
-        found.sort(key=lambda s: float(np.linalg.norm(s.q - self._q)))
-        return found
+        found = labelled_solutions(self.robot, T_base_flange, self._q)
+        return [IKSolution(q=q, label=label) for label, q in found]
 
     def move_tcp(
         self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None
@@ -248,7 +232,7 @@ class Workbench:
         spec = self._project.collision
         return spec.to_si() if spec is not None else CollisionPolicy()
 
-    def collision_status(self, q: ArrayLike | None = None) -> CollisionReport:
+    def collision_status(self, q: ArrayLike | None = None) -> ContactReport:
         """Return the collision report at `q` (default: current joints, cached)."""
         if q is not None:
             return self._checker.check(_as_vector(q, self.robot.dof, "q"))
@@ -291,19 +275,20 @@ class Workbench:
         `progress(fraction, message)` is called as the work advances. The plan is kept as
         `last_plan` for playback and export.
         """
-        spec = self._project.program
-        if spec is None:
+        section = self._project.program
+        if section is None:
             raise InputError("program: the project has no program; add a 'program' with moves")
+        spec = section.to_si()
         if not (np.isfinite(dt) and 0 < dt <= 0.1):
             raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
         q_start = (
             self._q
             if spec.start is None
-            else _as_vector(np.asarray(spec.start, float) * DEG, self.robot.dof, "program.start")
+            else _as_vector(spec.start, self.robot.dof, "program.start")
         )
         plan = plan_motion(
             spec,
-            self._robot,
+            self._setup,
             self._checker,
             q_start,
             policy=self.collision_policy,
