@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from browser_helpers import wait_for
+from browser_helpers import PAGE_TIMEOUT_MS, wait_for
 
 from workbench.gui.app import WorkbenchApp, start_server
 from workbench.service import Workbench
@@ -75,6 +75,9 @@ def launch(browser: object, request: pytest.FixtureRequest) -> Iterator[object]:
         server = start_server("127.0.0.1", free_port())
         application = WorkbenchApp(server, wb)
         context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
+        # Every action and wait of the page has this limit unless a test says otherwise.
+        context.set_default_timeout(PAGE_TIMEOUT_MS)
+        context.set_default_navigation_timeout(PAGE_TIMEOUT_MS)
         pg = context.new_page()
         opened.append((application, context, pg))
         pg.goto(
@@ -82,7 +85,7 @@ def launch(browser: object, request: pytest.FixtureRequest) -> Iterator[object]:
             "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45"
         )
         wait_for(lambda: len(server.get_clients()) > 0, what="the page to connect")
-        pg.get_by_role("tab", name="Robot").wait_for(timeout=20_000)
+        pg.get_by_role("tab", name="Robot").wait_for()
         return application, pg
 
     yield _launch

@@ -6,7 +6,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
+from browser_helpers import (
+    canvas_png,
+    close_notifications,
+    save_screenshot,
+    set_slider,
+    steady_picture,
+    wait_for,
+    wait_for_new_picture,
+    wait_for_timeline,
+)
 
 pytestmark = pytest.mark.e2e
 
@@ -30,27 +39,29 @@ def _type_vector(page, label: str, index: int, value: float) -> None:  # type: i
 def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> None:  # type: ignore[no-untyped-def]
     app, page = launch(ROOT / "projects" / "assembly_cell.json")
     a = app.wb.assembly
-    page.get_by_role("tab", name="Assembly").click(timeout=90_000)  # slow when the machine is busy
-    page.get_by_text("Plan part").wait_for(timeout=15_000)
+    page.get_by_role("tab", name="Assembly").click()
+    page.get_by_text("Plan part").wait_for()
 
     # Change a control: the planner.
     page.get_by_role("combobox", name="Planner").click()
     page.get_by_role("option", name="rrt_connect", exact=True).click()
     wait_for(lambda: app.assembly.planner.value == "rrt_connect", what="the planner on the server")
 
-    before = canvas_png(page)
+    before = steady_picture(lambda: canvas_png(page))
+    plots_before = app.timeline.plots
     page.get_by_role("button", name="Plan part").click()
     wait_for(lambda: app.assembly.plan is not None, timeout=90, what="the part plan on the server")
     pp = a.last_part_plan
     assert pp is not None and pp.part == "plate_a" and pp.path.planner == "rrt_connect"
     np.testing.assert_allclose(pp.key_points[-1], a.part("plate_a").goal, atol=1e-12)
-    page.get_by_text(f"{len(pp.key_points)} key points").first.wait_for(timeout=15_000)
+    page.get_by_text(f"{len(pp.key_points)} key points").first.wait_for()
     plan = app.assembly.plan
+    # The panel shows the plan before it loads the timeline: wait for the load to finish.
+    wait_for_timeline(app, plots_before, what="the part plan on the timeline")
     assert app.timeline.motion is not None
     assert app.timeline.motion.duration == pytest.approx(plan.duration, abs=1e-9)
-    page.get_by_text(f"{plan.duration:.2f} s, collision-free").first.wait_for(timeout=15_000)
-    page.wait_for_timeout(800)
-    assert canvas_png(page) != before, "the path did not appear in the 3D view"
+    page.get_by_text(f"{plan.duration:.2f} s, collision-free").first.wait_for()
+    wait_for_new_picture(lambda: canvas_png(page), before, what="the path did not appear")
 
     # Scrub: the carried plate follows the robot's FK at the typed time.
     t = round(0.5 * (plan.tasks[0].t_pick + plan.tasks[0].t_place), 2)
@@ -74,14 +85,15 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     z_goal = round(float(a.part("plate_a").goal[2, 3]) * 1000, 3)
     _type_vector(page, "Goal xyz [mm]", 2, 690.0)
     wait_for(lambda: abs(a.part("plate_a").goal[2, 3] - 0.690) < 1e-9, what="the typed goal")
-    page.get_by_text("Goal interferes with table").first.wait_for(timeout=15_000)
+    page.get_by_text("Goal interferes with table").first.wait_for()
     assert a.interference("plate_a", a.part("plate_a").goal) == ["table"]
     page.get_by_role("button", name="Plan part").click()
-    page.get_by_text("interferes with ['table']").first.wait_for(timeout=30_000)
+    page.get_by_text("interferes with ['table']").first.wait_for()
     _type_vector(page, "Goal xyz [mm]", 2, z_goal)
     wait_for(lambda: a.interference("plate_a", a.part("plate_a").goal) == [], what="goal clear")
 
     # The whole sequence (plates first, then screws) on the timeline, with both arms.
+    plots_before = app.timeline.plots
     page.get_by_role("button", name="Plan sequence").click()
     wait_for(
         lambda: app.assembly.plan is not None and len(app.assembly.plan.tasks) == 7,
@@ -90,7 +102,8 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     )
     seq = app.assembly.plan
     assert [task.part for task in seq.tasks][:2] == ["plate_a", "plate_b"] and seq.ok
-    page.get_by_text(f"cycle time {seq.duration:.3f} s").first.wait_for(timeout=15_000)
+    page.get_by_text(f"cycle time {seq.duration:.3f} s").first.wait_for()
+    wait_for_timeline(app, plots_before, what="the sequence on the timeline")
     task = seq.tasks[1]  # plate_b, carried by the second arm
     t = round(0.5 * (task.t_pick + task.t_place), 2)
     set_slider(page, "Time [s]", t)
@@ -101,15 +114,9 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
         lambda: np.allclose(app.assembly.arm_nodes["MZ07_B"][3].position, T[3][:3, 3], atol=1e-6),
         what="the second arm at its planned joints",
     )
-    # Close the notifications (the refused goal's, handled above) one at a time: closing one
-    # re-indexes the rest, so a list taken up front points past the end.
-    closers = page.locator("button.mantine-Notification-closeButton")
-    for _ in range(20):
-        if closers.count() == 0:
-            break
-        closers.first.click()
-        page.wait_for_timeout(300)
-    page.wait_for_timeout(1500)
+    # Close the notifications (the refused goal's, handled above) for the screenshot.
+    close_notifications(page)
+    steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "assembly.png")
 
     # The second arm's share of the sequence, as a RAPID module.
@@ -141,7 +148,5 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     arm = a.arms[pp.robot]
     T = arm.setup.T_world_base @ arm.setup.model.fk(pp.joints) @ arm.setup.T_flange_tcp
     np.testing.assert_allclose(T @ np.linalg.inv(a.part("plate_a").T_part_tcp), pp.samples)
-    page.get_by_text(f"(joint_rrt_connect): {len(pp.key_points)} key points").first.wait_for(
-        timeout=15_000
-    )
-    page.get_by_text(f"{jp.duration:.2f} s, collision-free").first.wait_for(timeout=15_000)
+    page.get_by_text(f"(joint_rrt_connect): {len(pp.key_points)} key points").first.wait_for()
+    page.get_by_text(f"{jp.duration:.2f} s, collision-free").first.wait_for()

@@ -6,7 +6,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
+from browser_helpers import (
+    canvas_png,
+    save_screenshot,
+    set_slider,
+    steady_picture,
+    wait_for,
+    wait_for_new_picture,
+    wait_for_timeline,
+)
 
 pytestmark = pytest.mark.e2e
 
@@ -21,11 +29,9 @@ def workpiece_png(page) -> bytes:  # type: ignore[no-untyped-def]
 def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-untyped-def]
     app, page = launch(ROOT / "projects" / "polishing_cell.json")
     svc = app.wb.polishing
-    # Software WebGL on a loaded machine can keep the page busy for a while: be patient.
-    page.get_by_role("tab", name="Polishing").click(timeout=90_000)
-    page.get_by_text("panel.stl").first.wait_for(timeout=15_000)
-    page.wait_for_timeout(1500)
-    before = workpiece_png(page)
+    page.get_by_role("tab", name="Polishing").click()
+    page.get_by_text("panel.stl").first.wait_for()
+    before = steady_picture(lambda: workpiece_png(page))
 
     # Change controls: the section on the server follows.
     set_slider(page, "Spacing [mm]", 25)
@@ -39,51 +45,49 @@ def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-
     assert pp.path.spacing == pytest.approx(0.025) and pp.force == 30.0
     assert pp.offset == pytest.approx(30.0 / 5000.0)
     # The page shows the server's coverage, and the path appears in the 3D view.
-    page.get_by_text(f"coverage {pp.coverage.fraction * 100:.1f} %").first.wait_for(timeout=15_000)
+    page.get_by_text(f"coverage {pp.coverage.fraction * 100:.1f} %").first.wait_for()
     assert "path" in app.polishing.nodes and "leads_in" in app.polishing.nodes
-    page.wait_for_timeout(1500)
-    assert workpiece_png(page) != before, "the path did not appear in the 3D view"
+    wait_for_new_picture(lambda: workpiece_png(page), before, what="the path did not appear")
 
+    plots_before = app.timeline.plots
     page.get_by_role("button", name="Simulate").click()
     wait_for(lambda: svc.last_simulation is not None, timeout=120, what="the simulation")
     sim = svc.last_simulation
     assert sim.target_force == 30.0
     assert sim.max_force_error < 4.0
-    page.get_by_text(f"±{sim.max_force_error:.2f} N").first.wait_for(timeout=15_000)
-    page.get_by_text("Contact force vs target [N]").first.wait_for(timeout=15_000)
+    page.get_by_text(f"±{sim.max_force_error:.2f} N").first.wait_for()
+    page.get_by_text("Contact force vs target [N]").first.wait_for()
     # The orientation loop's error is plotted and summed up from the server's figure.
     assert 0 < sim.max_orientation_error < np.arctan(2 * np.pi * 0.3 / 60)
-    page.get_by_text(f"within {np.degrees(sim.max_orientation_error):.2f}°").first.wait_for(
-        timeout=15_000
-    )
-    page.get_by_text("Orientation error [deg]").first.wait_for(timeout=15_000)
-    # The robot runs the path on the shared timeline.
+    page.get_by_text(f"within {np.degrees(sim.max_orientation_error):.2f}°").first.wait_for()
+    page.get_by_text("Orientation error [deg]").first.wait_for()
+    # The robot runs the path on the shared timeline (loaded last by the panel).
+    wait_for_timeline(app, plots_before, what="the polishing motion on the timeline")
     motion = app.timeline.motion
     assert motion is not None and svc.last_motion is not None
     assert motion.duration == pytest.approx(svc.last_motion.cycle_time)
     q0 = motion.at(0.0)
     np.testing.assert_allclose(q0, svc.last_motion.trajectory.waypoints[0], atol=1e-9)
     # Scrubbing the timeline moves the robot in the view.
-    shot = canvas_png(page)
+    shot = steady_picture(lambda: canvas_png(page))
     set_slider(page, "Time [s]", round(motion.duration / 2, 2))
     wait_for(lambda: app.timeline.time.value > 1.0, what="the timeline to move")
-    page.wait_for_timeout(1000)
-    assert canvas_png(page) != shot, "the robot did not move with the timeline"
+    wait_for_new_picture(lambda: canvas_png(page), shot, what="the robot with the timeline")
 
     # A closer view of the tab in action for the docs: the server moves the camera.
     for client in app.server.get_clients().values():
         client.camera.position = (1.0, -0.75, 0.8)
         client.camera.look_at = (0.45, 0.0, 0.33)
     page.get_by_text("Simulation").first.scroll_into_view_if_needed()
-    page.wait_for_timeout(2500)
+    steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "polishing.png")
 
 
 def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     app, page = launch(ROOT / "projects" / "polishing_cell.json")
     svc = app.wb.polishing
-    page.get_by_role("tab", name="Polishing").click(timeout=90_000)
-    page.get_by_text("4602 triangles").first.wait_for(timeout=15_000)
+    page.get_by_role("tab", name="Polishing").click()
+    page.get_by_text("4602 triangles").first.wait_for()
 
     # An empty file is refused with a notification; the loaded workpiece stays.
     empty = tmp_path / "empty.stl"
@@ -91,7 +95,7 @@ def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None
     with page.expect_file_chooser() as fc:
         page.get_by_role("button", name="Upload workpiece").click()
     fc.value.set_files(str(empty))
-    page.get_by_text("is empty").first.wait_for(timeout=20_000)
+    page.get_by_text("is empty").first.wait_for()
     assert svc.report.n_faces == 4602
 
     # A coarser panel in mm replaces it: the report and the fitted surface follow.
@@ -104,6 +108,6 @@ def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None
     with page.expect_file_chooser() as fc:
         page.get_by_role("button", name="Upload workpiece").click()
     fc.value.set_files(str(coarse))
-    wait_for(lambda: svc.report.n_faces == len(mesh.faces), timeout=20, what="the new workpiece")
-    page.get_by_text(f"{len(mesh.faces)} triangles").first.wait_for(timeout=15_000)
+    wait_for(lambda: svc.report.n_faces == len(mesh.faces), what="the new workpiece")
+    page.get_by_text(f"{len(mesh.faces)} triangles").first.wait_for()
     assert app.wb.project.polishing.workpiece.endswith("coarse.stl")

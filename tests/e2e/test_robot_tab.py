@@ -7,7 +7,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser_helpers import canvas_png, save_screenshot, set_slider, wait_for
+from browser_helpers import (
+    canvas_png,
+    save_screenshot,
+    set_slider,
+    steady_picture,
+    wait_for,
+    wait_for_new_picture,
+)
 
 from workbench.gui.app import WorkbenchApp
 from workbench.gui.scene import COLLISION_COLOR, ROBOT_COLOR
@@ -18,7 +25,7 @@ pytestmark = pytest.mark.e2e
 def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
     sliders = page.get_by_role("slider")
     assert sliders.count() >= 6
-    before = canvas_png(page)
+    before = steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "screenshot.png")
 
     set_slider(page, "J1 [deg]", 35.0)
@@ -28,10 +35,8 @@ def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # 
     # The link poses in the scene follow the server's joints.
     T = app.wb.link_poses()[1]
     node = app.scene.links["link1"]
-    assert np.allclose(node.position, T[:3, 3], atol=1e-6)
-    page.wait_for_timeout(800)
-    after = canvas_png(page)
-    assert before != after, "the 3D view did not change after moving J1"
+    wait_for(lambda: np.allclose(node.position, T[:3, 3], atol=1e-6), what="link 1 at the new pose")
+    wait_for_new_picture(lambda: canvas_png(page), before, what="after moving J1")
 
 
 def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
@@ -39,12 +44,20 @@ def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:
     set_slider(page, "J2 [deg]", -60.0)
     wait_for(lambda: app.wb.collision_status().in_collision, what="a collision on the server")
     hit = app.wb.collision_status().colliding_bodies()
-    assert any(
-        tuple(app.scene.links[n].color) == COLLISION_COLOR for n in hit if n in app.scene.links
-    )
     free = [n for n in app.scene.links if n not in hit and n != "tool"]
-    assert all(tuple(app.scene.links[n].color) == ROBOT_COLOR for n in free)
-    page.get_by_text("Collision:").first.wait_for(timeout=10_000)
+    # The scene is recoloured in the jog callback after the joints are set: wait for it.
+    wait_for(
+        lambda: (
+            any(
+                tuple(app.scene.links[n].color) == COLLISION_COLOR
+                for n in hit
+                if n in app.scene.links
+            )
+            and all(tuple(app.scene.links[n].color) == ROBOT_COLOR for n in free)
+        ),
+        what="the colliding links red and the free ones in the robot colour",
+    )
+    page.get_by_text("Collision:").first.wait_for()
 
 
 def test_upload_bad_project_shows_field_and_keeps_state(
@@ -68,7 +81,7 @@ def test_upload_bad_project_shows_field_and_keeps_state(
     with page.expect_file_chooser() as fc:
         page.get_by_role("button", name="Load project JSON", exact=True).click()
     fc.value.set_files(str(bad))
-    page.get_by_text("cell.objects[0].size").first.wait_for(timeout=10_000)
+    page.get_by_text("cell.objects[0].size").first.wait_for()
     assert app.wb.project.name == name_before
 
 
