@@ -15,7 +15,6 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError, WorkbenchError
 from workbench.gui.handles import Removable
-from workbench.gui.motion_panel import plan_to_motion
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
 from workbench.service import EXPORT_FORMATS
@@ -264,7 +263,12 @@ class PolishingPanel:
             f"{motion.summary()}."
         )
         self.download.disabled = False
-        self.app.timeline.load(plan_to_motion(motion, self.app.wb))
+        robot = self.app.wb.robot
+        self.app.timeline.load(
+            motion.samples,
+            velocity_limits=robot.max_velocity,
+            acceleration_limits=robot.max_acceleration,
+        )
 
     def _show_plots(self, sim: PolishingSimulation) -> None:
         for p in self.plots:

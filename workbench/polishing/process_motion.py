@@ -9,12 +9,12 @@ the first point, at the first process point and at the last point.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.geometry.transforms import invert_transform
+from workbench.kinematics import RobotModel
 from workbench.motion import Move, Program, Trajectory, smooth_joint_path
 from workbench.polishing.robot_path import solve_path_ik
 
@@ -56,7 +56,7 @@ def segment_speeds(q: F64, tcp: F64, feed: float, max_velocity: F64) -> F64:
 
 
 def plan_process_motion(
-    robot: Any,
+    robot: RobotModel,
     T_world_tcp: F64,
     T_world_base: F64,
     T_flange_tcp: F64,
