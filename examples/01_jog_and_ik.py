@@ -28,7 +28,8 @@ def _collision(wb: Workbench) -> str:
     report = wb.collision_status()
     if report.in_collision:
         return "in collision: " + ", ".join(f"{a} - {b}" for a, b in report.colliding)
-    return f"collision-free, clearance {report.min_distance * 1000:.1f} mm ({' - '.join(report.closest_pair or ())})"
+    closest = " - ".join(report.closest_pair or ())
+    return f"collision-free, clearance {report.min_distance * 1000:.1f} mm ({closest})"
 
 
 def main(project: str | Path = PROJECT) -> None:

@@ -43,14 +43,15 @@ def main(project: str | Path = PROJECT) -> None:
         bending.set_sequence([sequence[0], *sequence[:-1]])
     except WorkbenchError as exc:
         print(f"refused: {exc}")
-    assert bending.sequence == sequence
+    print(f"the sequence stays {', '.join(bending.sequence)}")
 
     print("planning:")
     plan = bending.plan(progress=_Progress())
     print(plan.summary())
     for p in plan.placements:
         print(
-            f"  bend {p.bend} on the die: joints [deg] {(np.round(np.degrees(p.q), 1) + 0.0).tolist()}"
+            f"  bend {p.bend} on the die: joints [deg]",
+            (np.round(np.degrees(p.q), 1) + 0.0).tolist(),
         )
     if plan.first_collision is not None:
         print(f"first collision: {plan.first_collision.describe()}")
