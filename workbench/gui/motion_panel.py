@@ -7,27 +7,8 @@ import viser
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
-from workbench.gui.timeline import Motion, Timeline
-from workbench.service import EXPORT_FORMATS, MotionPlan, Workbench
-
-
-def plan_to_motion(plan: MotionPlan, wb: Workbench) -> Motion:
-    """Deprecated (for panels not yet switched): the plan as the timeline's former `Motion`.
-
-    Call `timeline.load(plan.samples, velocity_limits=..., acceleration_limits=...)` instead.
-    """
-    s = plan.samples
-    return Motion(
-        name=s.name,
-        times=s.times,
-        positions=s.joints,
-        velocities=s.velocity,
-        accelerations=s.acceleration,
-        tcp_speed=s.tcp_speed,
-        colliding=s.colliding,
-        velocity_limits=wb.robot.max_velocity,
-        acceleration_limits=wb.robot.max_acceleration,
-    )
+from workbench.gui.timeline import Timeline
+from workbench.service import EXPORT_FORMATS, Workbench
 
 
 class MotionPanel:

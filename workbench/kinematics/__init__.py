@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from workbench.kinematics.configurations import labelled_solutions
 from workbench.kinematics.dh_robot import IK_TOL, DHRobot
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.link_shapes import flange_mesh, link_meshes
@@ -23,5 +24,6 @@ __all__ = [
     "branch_name",
     "flange_mesh",
     "follow_path",
+    "labelled_solutions",
     "link_meshes",
 ]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from workbench.motion.moves import JointPath, plan_program, time_program
-from workbench.motion.program import Move, Program
+from workbench.motion.program import JOINT, LINEAR, Move, Program
 from workbench.motion.sampled import SampledMotion
 from workbench.motion.trajectory import Trajectory, smooth_joint_path
 from workbench.motion.validation import (
@@ -14,6 +14,8 @@ from workbench.motion.validation import (
 )
 
 __all__ = [
+    "JOINT",
+    "LINEAR",
     "JointPath",
     "Move",
     "Program",

@@ -4,6 +4,14 @@ from __future__ import annotations
 
 from workbench.service.cell import CellBody
 from workbench.service.motion_plan import EXPORT_FORMATS, MotionPlan
+from workbench.service.robot_setup import RobotSetup
 from workbench.service.workbench import IKSolution, Workbench
 
-__all__ = ["EXPORT_FORMATS", "CellBody", "IKSolution", "MotionPlan", "Workbench"]
+__all__ = [
+    "EXPORT_FORMATS",
+    "CellBody",
+    "IKSolution",
+    "MotionPlan",
+    "RobotSetup",
+    "Workbench",
+]
