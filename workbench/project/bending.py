@@ -22,20 +22,13 @@ from numpy.typing import NDArray
 from pydantic import AfterValidator, Field, ValidationError, model_validator
 
 from workbench.errors import ProjectError
-from workbench.geometry.transforms import xyz_rpy_to_transform
 from workbench.project.common import Pose, Positive, StrictModel, Vec3mm
+from workbench.project.units import DEG, MM
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.grasp import Grasp
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T
 from workbench.sheetmetal.sequence import sequence_problem
 from workbench.sheetmetal.transfer import Transfer
-
-MM = 1e-3  # m per mm
-DEG = np.pi / 180.0  # rad per deg
-
-
-def _matrix(pose: Pose) -> NDArray[np.float64]:
-    return xyz_rpy_to_transform(np.asarray(pose.xyz) * MM, np.asarray(pose.rpy) * DEG)
 
 
 def _polygon(v: list[list[float]]) -> list[list[float]]:
@@ -274,11 +267,11 @@ class BendingSpec(StrictModel):
         return BendingSI(
             part=part.to_si(self.sequence),
             grasp=self.grasp.to_si(),
-            die=Die(_matrix(self.die.pose), self.die.length * MM, "bending.die.length"),
+            die=Die(self.die.pose.to_si(), self.die.length * MM, "bending.die.length"),
             transfer=Transfer(
                 retract=np.asarray(self.retract) * MM,
-                T_world_vias=np.array([_matrix(p) for p in self.transfer]).reshape(-1, 4, 4),
-                T_world_pallet=_matrix(self.pallet),
+                T_world_vias=np.array([p.to_si() for p in self.transfer]).reshape(-1, 4, 4),
+                T_world_pallet=self.pallet.to_si(),
                 where="bending",
             ),
             frames=int(self.frames),
