@@ -9,11 +9,117 @@ by default the parts in the order listed.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
+import numpy as np
+from numpy.typing import NDArray
 from pydantic import Field, model_validator
 
+from workbench.geometry.transforms import matrix_to_rpy, xyz_rpy_to_transform
 from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
+
+if TYPE_CHECKING:
+    from workbench.project.models import Robot, Tool
+
+_MM = 1e-3  # m per mm
+_DEG = np.pi / 180.0  # rad per deg
+
+
+def _matrix(pose: Pose) -> NDArray[np.float64]:
+    """Return the (4, 4) transform [m] of a pose (mm, deg)."""
+    return xyz_rpy_to_transform(np.asarray(pose.xyz) * _MM, np.asarray(pose.rpy) * _DEG)
+
+
+def _pose(T: NDArray[np.float64]) -> Pose:
+    """Return the pose (mm, deg) of a (4, 4) transform [m]."""
+    T = np.asarray(T, float)
+    return Pose(
+        xyz=[float(v) for v in T[:3, 3] / _MM],
+        rpy=[float(v) for v in matrix_to_rpy(T[:3, :3]) / _DEG],
+    )
+
+
+def _mm(v: float | None) -> float | None:
+    return None if v is None else v * _MM
+
+
+def _rgb(c: list[int]) -> tuple[int, int, int]:
+    return (int(c[0]), int(c[1]), int(c[2]))
+
+
+# -- the section in SI (m, rad, s; speed a fraction), what the service and the domain use ---------
+@dataclass(frozen=True, eq=False)
+class AssemblyRobotSI:
+    """A further arm: preset, base (4, 4) [m], home joints [rad] (None: zero), TCP (4, 4), tool box [m]."""
+
+    name: str
+    preset: str
+    base: NDArray[np.float64]
+    joints: NDArray[np.float64] | None
+    tcp: NDArray[np.float64]
+    tool_size: tuple[float, float, float] | None
+    color: tuple[int, int, int]
+
+
+@dataclass(frozen=True, eq=False)
+class AssemblyPartSI:
+    """A part: shape (box `size`, cylinder `radius`/`height` [m], or a mesh file), poses (4, 4) [m]."""
+
+    name: str
+    shape: str
+    path: str | None
+    scale: float
+    size: tuple[float, float, float] | None
+    radius: float | None
+    height: float | None
+    start: NDArray[np.float64]
+    goal: NDArray[np.float64]
+    grasp: NDArray[np.float64]  # T_part_tcp
+    robot: str | None
+    color: tuple[int, int, int]
+
+
+@dataclass(frozen=True)
+class AssemblyPlannerSI:
+    """The planner: name, cell_size, dis, robot_resolution [m] (None: automatic), step, seed, max_time [s]."""
+
+    name: str
+    cell_size: float | None
+    step: int
+    dis: float | None
+    seed: int
+    max_time: float
+    robot_resolution: float | None
+
+    def options(self, planner: str) -> dict[str, Any]:
+        """Return the options of `planner` (step, dis [m]; seed, max_time [s]; robot_resolution [m])."""
+        if planner == "ant":
+            return {"step": self.step} | ({"dis": self.dis} if self.dis is not None else {})
+        opts: dict[str, Any] = {"seed": self.seed, "max_time": self.max_time}
+        if planner == "joint_rrt_connect" and self.robot_resolution is not None:
+            opts["robot_resolution"] = self.robot_resolution
+        return opts
+
+
+@dataclass(frozen=True)
+class AssemblyTaskSI:
+    """One part move of the sequence: approach and retreat distances [m] along the TCP z."""
+
+    part: str
+    approach: float
+    retreat: float
+
+
+@dataclass(frozen=True, eq=False)
+class AssemblySI:
+    """The `assembly` section in SI; `sequence` is the one in effect (default: every part as listed)."""
+
+    robots: tuple[AssemblyRobotSI, ...]
+    parts: tuple[AssemblyPartSI, ...]
+    planner: AssemblyPlannerSI
+    sequence: tuple[AssemblyTaskSI, ...]
+    speed: float  # fraction of the robots' joint velocity, acceleration and jerk limits
 
 
 class AssemblyRobotSpec(StrictModel):
@@ -26,6 +132,30 @@ class AssemblyRobotSpec(StrictModel):
     tcp: Pose = Field(default_factory=lambda: Pose(xyz=[0.0, 0.0, 150.0]))  # flange -> TCP
     tool_size: Vec3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
     color: Color = Field(default_factory=lambda: [200, 215, 235])
+
+    def sections(self) -> tuple[Robot, Tool]:
+        """Return this arm as a project `robot` and `tool` section (built as the main robot is)."""
+        from workbench.project.models import Robot, Tool  # models imports this module
+
+        robot = Robot(name=self.name, preset=self.preset, base=self.base, joints=self.joints)
+        return robot, Tool(tcp=self.tcp, size=self.tool_size)
+
+    def to_si(self) -> AssemblyRobotSI:
+        """Return this robot in SI."""
+        return AssemblyRobotSI(
+            name=self.name,
+            preset=self.preset,
+            base=_matrix(self.base),
+            joints=None if self.joints is None else np.asarray(self.joints, float) * _DEG,
+            tcp=_matrix(self.tcp),
+            tool_size=None if self.tool_size is None else _vec(self.tool_size),
+            color=_rgb(self.color),
+        )
+
+
+def _vec(v: list[float]) -> tuple[float, float, float]:
+    x, y, z = (float(c) for c in np.asarray(v, float) * _MM)
+    return (x, y, z)
 
 
 class AssemblyPartSpec(StrictModel):
@@ -54,6 +184,27 @@ class AssemblyPartSpec(StrictModel):
             raise ValueError(f"box size must be positive [mm], got {self.size}")
         return self
 
+    def to_si(self) -> AssemblyPartSI:
+        """Return this part in SI."""
+        return AssemblyPartSI(
+            name=self.name,
+            shape=self.shape,
+            path=self.path,
+            scale=self.scale,
+            size=None if self.size is None else _vec(self.size),
+            radius=_mm(self.radius),
+            height=_mm(self.height),
+            start=_matrix(self.start),
+            goal=_matrix(self.goal),
+            grasp=_matrix(self.grasp),
+            robot=self.robot,
+            color=_rgb(self.color),
+        )
+
+    def set_pose(self, which: Literal["start", "goal"], T_world_part: NDArray[np.float64]) -> None:
+        """Set the `which` pose from a (4, 4) transform [m] (stored in mm and degrees)."""
+        setattr(self, which, _pose(T_world_part))
+
 
 class AssemblyPlannerSpec(StrictModel):
     """The part path planner and its parameters."""
@@ -67,6 +218,18 @@ class AssemblyPlannerSpec(StrictModel):
     # joint_rrt_connect: largest travel of a robot point between two checks [mm]; default cell_size
     robot_resolution: Positive | None = None
 
+    def to_si(self) -> AssemblyPlannerSI:
+        """Return the planner's parameters in SI."""
+        return AssemblyPlannerSI(
+            name=self.name,
+            cell_size=_mm(self.cell_size),
+            step=self.step,
+            dis=_mm(self.dis),
+            seed=self.seed,
+            max_time=self.max_time,
+            robot_resolution=_mm(self.robot_resolution),
+        )
+
 
 class AssemblyTaskSpec(StrictModel):
     """One part move: pick (after an approach), carry and insert, release and retreat."""
@@ -74,6 +237,10 @@ class AssemblyTaskSpec(StrictModel):
     part: str
     approach: Annotated[float, Field(ge=0)] = 50.0  # pre-grasp distance back along the TCP z [mm]
     retreat: Annotated[float, Field(ge=0)] = 50.0  # after release, back along the TCP z [mm]
+
+    def to_si(self) -> AssemblyTaskSI:
+        """Return this part move with its distances in metres."""
+        return AssemblyTaskSI(self.part, self.approach * _MM, self.retreat * _MM)
 
 
 class AssemblySpec(StrictModel):
@@ -103,3 +270,31 @@ class AssemblySpec(StrictModel):
         if dup:
             raise ValueError(f"each part may appear once in the sequence; repeated {dup}")
         return self
+
+    def tasks(self, parts: list[str] | None = None) -> list[AssemblyTaskSpec]:
+        """Return the part moves in order: `sequence`, or every part as listed (default distances).
+
+        parts: only these parts' moves, in sequence order, then those the sequence does not
+        list (default distances).
+        """
+        tasks = (
+            list(self.sequence)
+            if self.sequence is not None
+            else [AssemblyTaskSpec(part=p.name) for p in self.parts]
+        )
+        if parts is None:
+            return tasks
+        listed = [t.part for t in tasks]
+        return [t for t in tasks if t.part in parts] + [
+            AssemblyTaskSpec(part=n) for n in parts if n not in listed
+        ]
+
+    def to_si(self) -> AssemblySI:
+        """Return the section in SI."""
+        return AssemblySI(
+            robots=tuple(r.to_si() for r in self.robots),
+            parts=tuple(p.to_si() for p in self.parts),
+            planner=self.planner.to_si(),
+            sequence=tuple(t.to_si() for t in self.tasks()),
+            speed=self.speed / 100.0,
+        )
