@@ -16,16 +16,14 @@ from numpy.typing import NDArray
 from pydantic import Field, ValidationError, ValidationInfo, field_validator, model_validator
 
 from workbench.errors import InputError
-from workbench.geometry.transforms import xyz_rpy_to_transform
 from workbench.polishing.choices import MeshUnits, Pattern
 from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.orientation import instability_message
 from workbench.project.common import Pose, Positive, StrictModel
+from workbench.project.units import MM, pose_to_matrix
 
 NonNegative = Annotated[float, Field(ge=0)]
 F64 = NDArray[np.float64]
-_MM = 1e-3  # [m] per mm
-_DEG = np.pi / 180.0  # [rad] per degree
 
 
 class OrientationLoopSpec(StrictModel):
@@ -160,16 +158,14 @@ class PolishingSpec(StrictModel):
         return PolishingSI(
             workpiece=s.workpiece,
             units=s.units,
-            T_world_workpiece=xyz_rpy_to_transform(
-                np.asarray(s.pose.xyz) * _MM, np.asarray(s.pose.rpy) * _DEG
-            ),
+            T_world_workpiece=pose_to_matrix(s.pose),
             pattern=s.pattern,
-            step=s.step * _MM,
-            spacing=s.spacing * _MM,
-            tool_radius=s.tool_radius * _MM,
-            lead_height=s.lead_height * _MM,
+            step=s.step * MM,
+            spacing=s.spacing * MM,
+            tool_radius=s.tool_radius * MM,
+            lead_height=s.lead_height * MM,
             n_lead=s.n_lead,
-            feed=s.feed * _MM,
+            feed=s.feed * MM,
             dwell=s.dwell,
             max_force=s.max_force,
             force=s.force,
@@ -178,18 +174,18 @@ class PolishingSpec(StrictModel):
                 latency=c.latency * 1e-3,
                 kpp=c.kpp,
                 kpd=c.kpd,
-                kfp=c.kfp * _MM,
-                kfi=c.kfi * _MM,
+                kfp=c.kfp * MM,
+                kfi=c.kfi * MM,
                 stiffness=k.stiffness,
                 damping=k.damping,
                 friction=k.friction,
                 lateral_stiffness=k.lateral_stiffness,
-                form_error=k.form_error * _MM,
-                form_wavelength=k.form_wavelength * _MM,
+                form_error=k.form_error * MM,
+                form_wavelength=k.form_wavelength * MM,
                 noise_std=k.noise_std,
                 filter_cutoff=k.filter_cutoff,
-                max_speed=c.max_speed * _MM,
-                max_accel=c.max_accel * _MM,
+                max_speed=c.max_speed * MM,
+                max_accel=c.max_accel * MM,
                 max_force=s.max_force,
                 seed=k.seed,
                 orientation_loop=o.enabled,
@@ -224,7 +220,7 @@ class PolishingSpec(StrictModel):
             ("tool_radius", tool_radius),
         ):
             if val is not None:
-                new[name] = float(val) / _MM
+                new[name] = float(val) / MM
         if force is not None:
             new["force"] = float(force)
         return _validated(new)
