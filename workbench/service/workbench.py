@@ -15,7 +15,7 @@ from workbench.collision import CollisionPolicy, ContactReport, RobotCollisionCh
 from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
 from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
-from workbench.kinematics import RobotModel
+from workbench.kinematics import DHRobot, RobotModel, Singularities
 from workbench.kinematics.configurations import labelled_solutions
 from workbench.project import (
     Project,
@@ -213,12 +213,15 @@ class Workbench:
         self.set_joints(pick.q)
         return self.joints
 
-    def singularities(self) -> Any:
-        """Return the singularity report of the current joints (wrist, elbow, shoulder)."""
-        fn = getattr(self.robot, "singularities", None)
-        if fn is None:
+    def singularities(self) -> Singularities:
+        """Return the singularity report of the current joints (wrist, elbow, shoulder).
+
+        DH arms only (the analysis reads the DH frames); other models raise WorkbenchError.
+        """
+        model = self.robot
+        if not isinstance(model, DHRobot):
             raise WorkbenchError("this robot model has no singularity analysis")
-        return fn(self._q)
+        return model.singularities(self._q)
 
     # -- collision --------------------------------------------------------------------
     @property
