@@ -60,7 +60,7 @@ def _exact_free(wb: Workbench, name: str, poses: np.ndarray, step: float) -> boo
     part = wb.assembly.part(name)
     radius = float(np.max(np.linalg.norm(part.mesh.vertices, axis=1)))
     moving = _fcl(part.mesh)
-    obstacles = [(m, _fcl(m)) for _, m in wb.assembly.obstacles_for(name)]
+    obstacles = [(m, _fcl(m)) for _, m in wb.assembly.cell.obstacles_for(name)]
     for T in path_samples(poses, radius, step):
         moving.setTransform(fcl.Transform(T[:3, :3], T[:3, 3]))
         placed = part.mesh.copy().apply_transform(T)
@@ -135,7 +135,7 @@ def test_sequence_places_plates_then_screws_and_the_timed_motion_is_checked(wb, 
     for task in plan.tasks[::3]:
         held = (plan.times >= task.t_pick) & (plan.times <= task.t_place)
         P = plan.part_poses[task.part][held]
-        assert _exact_free(wb, task.part, P, a.checker(task.part).cell_size)
+        assert _exact_free(wb, task.part, P, a.cell.checker(task.part).cell_size)
 
 
 def test_a_one_part_plan_shows_earlier_parts_assembled_and_later_ones_waiting(wb):
@@ -286,8 +286,8 @@ def _robot_hits_parts(wb: Workbench, robot: str, q: np.ndarray, held: str) -> bo
     """Twin: python-fcl of the robot's links and tool against every other part where it stands."""
     a = wb.assembly
     arm = a.arms[robot]
-    fixed = {n for n, _ in a.fixed_obstacles()}
-    others = [_fcl(m) for n, m in a.obstacles_for(held) if n not in fixed]
+    fixed = {n for n, _ in a.cell.fixed}
+    others = [_fcl(m) for n, m in a.cell.obstacles_for(held) if n not in fixed]
     meshes = [*arm.setup.link_meshes[1:], arm.setup.tool_mesh]
     links = [_fcl(m) for m in meshes]
     for qi in q:

@@ -1,4 +1,4 @@
-"""Straight-line motion of a rigid part: linear position, slerped orientation, and its validation."""
+"""Straight-line motion of a rigid part: linear position, slerped orientation, distances and samples."""
 
 from __future__ import annotations
 
@@ -7,23 +7,7 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, wxyz_to_matrix
-
-
-def check_pose(T: ArrayLike, name: str) -> NDArray[np.float64]:
-    """Return T as a (4, 4) float array after checking it is a finite rigid transform."""
-    A = np.asarray(T, dtype=float)
-    if A.shape != (4, 4):
-        raise InputError(f"{name} must be a (4, 4) pose in metres, got shape {A.shape}")
-    if not np.all(np.isfinite(A)):
-        raise InputError(f"{name} has NaN or infinite entries")
-    R = A[:3, :3]
-    if not np.allclose(R @ R.T, np.eye(3), atol=1e-6) or np.linalg.det(R) < 0:
-        raise InputError(f"{name}[:3, :3] must be a rotation (orthonormal, det +1)")
-    if not np.allclose(A[3], [0, 0, 0, 1]):
-        raise InputError(f"{name}[3] must be [0, 0, 0, 1], got {A[3].tolist()}")
-    return A
 
 
 def slerp(q0: ArrayLike, q1: ArrayLike, u: ArrayLike) -> NDArray[np.float64]:

@@ -11,11 +11,12 @@ import trimesh
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.assembly.interference import InterferenceChecker
-from workbench.assembly.motion import check_pose, pose_distance
+from workbench.assembly.motion import pose_distance
 from workbench.assembly.planners.ant import plan_ant
 from workbench.assembly.planners.common import check_options
 from workbench.assembly.planners.rrt_connect import plan_rrt_connect
 from workbench.errors import CollisionError, InputError
+from workbench.geometry import check_transform
 
 PLANNERS = ("ant", "rrt_connect")
 
@@ -65,8 +66,8 @@ def plan_part_path(
     """
     if planner not in PLANNERS:
         raise InputError(f"planner must be one of {PLANNERS}, got {planner!r}")
-    S = check_pose(start, "start")
-    G = check_pose(goal, "goal")
+    S = check_transform(start, "start")
+    G = check_transform(goal, "goal")
     t0 = time.perf_counter()
     ch = InterferenceChecker(moving, obstacles, cell_size) if checker is None else checker
     setup = time.perf_counter() - t0

@@ -25,7 +25,6 @@ from __future__ import annotations
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -33,14 +32,16 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.assembly.carry import carry_ik
 from workbench.assembly.contacts import Bodies
 from workbench.assembly.interference import InterferenceChecker
-from workbench.assembly.motion import check_pose, motion_samples
+from workbench.assembly.motion import motion_samples
 from workbench.assembly.plan import PartPath
 from workbench.assembly.planners.common import check_options, retreat
 from workbench.collision.motion_bound import JointLevers
 from workbench.collision.robot_checker import RobotCollisionChecker
 from workbench.collision.shapes import Solid
 from workbench.errors import CollisionError, InputError, PlanningError, UnreachableError
+from workbench.geometry import check_transform
 from workbench.geometry.transforms import invert_transform
+from workbench.kinematics import RobotModel
 
 FloatArray = NDArray[np.float64]
 CARRIED_PART = "carried part"  # the held part's name among the bodies checked for contact
@@ -99,13 +100,12 @@ class CarrySpace:
         `resolution`).
         """
         self.robot_checker, self.part_checker = robot_checker, part_checker
-        model: Any = robot_checker.robot  # DHRobot or URDFRobot: fk, ik, limits
-        self.model = model
+        self.model: RobotModel = robot_checker.robot  # type: ignore[assignment]  # until the checker holds a RobotModel
         self.dof = int(self.model.dof)
         self.limits: FloatArray = np.asarray(self.model.limits, dtype=np.float64)
         self.T_world_base = np.asarray(robot_checker.T_world_base, float)
-        self.T_flange_tcp = check_pose(T_flange_tcp, "T_flange_tcp")
-        self.T_part_tcp = check_pose(T_part_tcp, "T_part_tcp")
+        self.T_flange_tcp = check_transform(T_flange_tcp, "T_flange_tcp")
+        self.T_part_tcp = check_transform(T_part_tcp, "T_part_tcp")
         self.T_flange_part = self.T_flange_tcp @ invert_transform(self.T_part_tcp)
         self.resolution = part_checker.cell_size if resolution is None else float(resolution)
         self.robot_resolution = (
@@ -141,7 +141,7 @@ class CarrySpace:
         ]
         for solid, T in extra:
             solids.append(solid)
-            fixed.append(check_pose(T, f"extra {solid.name!r} pose"))
+            fixed.append(check_transform(T, f"extra {solid.name!r} pose"))
             pairs += [(m, solid.name) for m in moving[1:]]  # the base stands still
         self.bodies = Bodies(solids, pairs)
         self.n_moving = len(moving)
@@ -389,7 +389,7 @@ def carry_ends(
     Raises UnreachableError naming the end out of reach, CollisionError naming what
     touches when every solution at an end is in contact.
     """
-    S, G = check_pose(start, "start"), check_pose(goal, "goal")
+    S, G = check_transform(start, "start"), check_transform(goal, "goal")
     ref = np.asarray(q_near, float)
     Tb = invert_transform(space.T_world_base)
     Tf = invert_transform(space.T_flange_part)
@@ -398,7 +398,7 @@ def carry_ends(
     model = space.model
     sols: dict[str, tuple[FloatArray, NDArray[np.int64]]] = {}
     for name, T in ends.items():
-        if getattr(model, "is_analytic", False) and hasattr(model, "ik_batch"):
+        if model.is_analytic:
             qb, ok = model.ik_batch(T[None], q_near=ref)
             b = np.flatnonzero(ok[0])
             rows, branches = qb[0, b], b
@@ -481,7 +481,7 @@ def plan_carried_path(
         (space.part_checker.stats.poses, space.part_checker.stats.exact_pairs),
     )
     t0 = time.perf_counter()
-    S, G = check_pose(start, "start"), check_pose(goal, "goal")
+    S, G = check_transform(start, "start"), check_transform(goal, "goal")
     qs, qg, branch = carry_ends(space, S, G, q_near, q_start=q_start)
     ch, res = space.part_checker, space.resolution
     a = retreat(ch, S, G[:3, 3], res)
