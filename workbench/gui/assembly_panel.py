@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -17,7 +18,6 @@ from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
 from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
-from workbench.gui.timeline import Motion
 from workbench.service import EXPORT_FORMATS
 from workbench.service.assembly import KEY_POINT_FORMATS, PLANNER_CHOICES, AssemblyPlan
 
@@ -148,7 +148,7 @@ class AssemblyPanel:
         for arm in a.arms.values():
             if arm.main:
                 continue
-            poses = arm.setup.T_world_base @ arm.setup.model.link_transforms(arm.q_home)
+            poses = a.link_poses(arm.name)
             hs = [
                 _add_mesh(s, f"/assembly/robots/{arm.name}/link{i}", m, arm.color, T)
                 for i, (m, T) in enumerate(zip(arm.setup.link_meshes, poses, strict=True))
@@ -313,8 +313,12 @@ class AssemblyPanel:
         self.result.content = f"{head}\n\nTimed motion: {plan.duration:.2f} s, {state}"
         self.download.disabled = False
         self.prog_download.disabled = False
+        main = next(arm for arm in self.wb.assembly.arms.values() if arm.main)
         self.app.timeline.load(
-            self._motion(plan, "Assembly" if not one else f"Assembly: {name}"), follow=self._follow
+            replace(plan.motions[main.name], name="Assembly" if not one else f"Assembly: {name}"),
+            velocity_limits=main.setup.model.max_velocity,
+            acceleration_limits=main.setup.model.max_acceleration,
+            follow=self._follow,
         )
 
     def _show_path(self, keys: np.ndarray, samples: np.ndarray) -> None:
@@ -337,45 +341,19 @@ class AssemblyPanel:
             point_shape="circle",
         )
 
-    def _motion(self, plan: AssemblyPlan, name: str) -> Motion:
-        a = self.wb.assembly
-        main = next(arm for arm in a.arms.values() if arm.main)
-        q = plan.joints[main.name]
-        T = main.setup.T_world_base @ main.setup.model.fk(q) @ main.setup.T_flange_tcp
-        p = T[:, :3, 3]
-        speed = (
-            np.linalg.norm(np.gradient(p, plan.times, axis=0), axis=1)
-            if len(p) > 1
-            else np.zeros(1)
-        )
-        return Motion(
-            name=name,
-            times=plan.times,
-            positions=q,
-            velocities=plan.velocities[main.name],
-            accelerations=plan.accelerations[main.name],
-            tcp_speed=speed,
-            colliding=plan.colliding,
-            velocity_limits=np.asarray(main.setup.model.max_velocity),
-            acceleration_limits=np.asarray(main.setup.model.max_acceleration),
-        )
-
     def _follow(self, t: float) -> None:
         plan = self.plan
         if plan is None:
             return
         a = self.wb.assembly
-        i = int(np.clip(np.searchsorted(plan.times, t), 0, len(plan.times) - 1))
+        i = plan.index_at(t)
         with self.app.server.atomic():
             for name, h in self.part_nodes.items():
                 place(h, plan.part_poses[name][i])
                 hit = i in plan.part_interference.get(name, ())
                 h.color = COLLISION_COLOR if hit else a.part(name).color
             for rname, hs in self.arm_nodes.items():
-                arm = a.arms[rname]
-                poses = arm.setup.T_world_base @ arm.setup.model.link_transforms(
-                    plan.joints_at(rname, t)
-                )
+                poses = a.link_poses(rname, plan.joints_at(rname, t))
                 for k, h in enumerate(hs):
                     place(h, poses[min(k, len(poses) - 1)])
 

@@ -148,10 +148,6 @@ class AssemblyService(SectionService[AssemblySpec]):
         arm = self.arms[robot]
         return arm.link_poses(arm.q_home if q is None else np.asarray(q, float))
 
-    def tcp_poses(self, robot: str, q: ArrayLike) -> NDArray[np.float64]:
-        """Return robot `robot`'s TCP poses (..., 4, 4) in the world [m] at joints q (..., dof) [rad]."""
-        return self.arms[robot].tcp_poses(np.asarray(q, float))
-
     def sequence(self, parts: list[str] | None = None) -> list[AssemblyTaskSI]:
         """Return the part moves in order (the section's `sequence`, or every part as listed), SI;
         parts: only these parts' moves (InputError for an unknown part)."""
