@@ -180,3 +180,11 @@ def test_an_example_runs_as_a_script_with_a_project_argument(tmp_path: Path) -> 
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("project: MZ07 work cell\n")
     assert list(tmp_path.iterdir()) == []  # it writes nothing
+
+
+def test_the_readme_project_example_is_a_valid_project() -> None:
+    blocks = re.findall(r"```json\n(.*?)```", (ROOT / "README.md").read_text(), re.S)
+    assert len(blocks) == 1
+    wb = Workbench.from_dict(json.loads(blocks[0]))
+    assert wb.project.name == "MZ07 work cell"
+    assert wb.project.program is not None and len(wb.project.program.moves) == 3
