@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from block_cell import block_cell
@@ -22,8 +24,8 @@ def wb(tmp_path_factory: pytest.TempPathFactory) -> Workbench:
 
 
 @pytest.fixture(scope="module")
-def engines(wb: Workbench, tmp_path_factory: pytest.TempPathFactory) -> dict[str, CollisionEngine]:
-    cache = str(tmp_path_factory.mktemp("sdf"))
+def engines(wb: Workbench, engine_cache: Path) -> dict[str, CollisionEngine]:
+    cache = str(engine_cache)
     return {
         m: CollisionEngine(wb.checker, m, spheres_per_link=4, resolution=32, cache_dir=cache)
         for m in ("spheres", "capsules", "exact")

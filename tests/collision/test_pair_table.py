@@ -17,9 +17,9 @@ PROJECT = block_cell()
 
 
 @pytest.fixture(scope="module")
-def engine(tmp_path_factory: pytest.TempPathFactory) -> CollisionEngine:
+def engine(engine_cache: Path) -> CollisionEngine:
     wb = Workbench.from_dict(PROJECT)
-    cache = str(tmp_path_factory.mktemp("cache"))
+    cache = str(engine_cache)
     return CollisionEngine(
         wb.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache
     )

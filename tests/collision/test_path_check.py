@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from block_cell import block_cell
@@ -31,8 +33,8 @@ def wb() -> Workbench:
 
 
 @pytest.fixture(scope="module")
-def engine(wb: Workbench, tmp_path_factory: pytest.TempPathFactory) -> CollisionEngine:
-    cache = str(tmp_path_factory.mktemp("cache"))
+def engine(wb: Workbench, engine_cache: Path) -> CollisionEngine:
+    cache = str(engine_cache)
     return CollisionEngine(
         wb.checker, "spheres", spheres_per_link=4, resolution=32, cache_dir=cache
     )

@@ -18,9 +18,9 @@ Q_HIT = np.array([0.0, -0.69, 0.691, 0.0, 0.0, 0.0])
 
 
 @pytest.fixture(scope="module")
-def svc(tmp_path_factory: pytest.TempPathFactory) -> CollisionService:
+def svc(engine_cache: Path) -> CollisionService:
     wb = Workbench.from_dict(PROJECT)
-    return CollisionService(wb, cache_dir=tmp_path_factory.mktemp("sdf"))
+    return CollisionService(wb, cache_dir=engine_cache)
 
 
 def test_check_agrees_with_the_exact_checker(svc: CollisionService) -> None:
