@@ -11,7 +11,8 @@ import pytest
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import rot_x
 from workbench.kinematics import MZ07_SEED_DH, MZ07_SEED_TOOL, DHRobot
-from workbench.kinematics.dh_chain import dh_fk
+from workbench.kinematics.configurations import pick_solution
+from workbench.kinematics.dh_chain import dh_fk, joint_vector
 
 RNG_SEED = 0
 
@@ -207,3 +208,30 @@ def test_unreachable_poses_say_why(robot: DHRobot) -> None:
     with pytest.raises(UnreachableError, match="outside the joint limits") as info:
         narrow.ik(T)
     assert "joint 1 = 30.0 deg outside [-20.0, 20.0] deg" in str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ([0.0] * 5, "expected 6 joint values"),
+        ([[0.0] * 6], r"got shape \(1, 6\)"),
+        ([0.0, [1.0, 2.0]], "expected joint values"),
+        ("abc", "expected 6 joint values"),
+        ([float("nan")] * 6, "finite"),
+    ],
+)
+def test_joint_vector_names_the_field_and_what_is_wrong(value, message):
+    with pytest.raises(InputError, match=message) as err:
+        joint_vector(value, 6, "joints")
+    assert str(err.value).startswith("joints: ")
+
+
+def test_pick_solution_by_index_label_or_nearest():
+    sols = [("front/elbow A/no flip", np.zeros(6)), ("back/elbow A/no flip", np.ones(6))]
+    assert pick_solution(sols, None) is sols[0][1]
+    assert pick_solution(sols, 1) is sols[1][1]
+    assert pick_solution(sols, "back/elbow A/no flip") is sols[1][1]
+    with pytest.raises(InputError, match="index 2 out of range; 2 solution"):
+        pick_solution(sols, 2)
+    with pytest.raises(UnreachableError, match="available"):
+        pick_solution(sols, "front/elbow B/flip")

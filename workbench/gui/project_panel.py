@@ -8,7 +8,6 @@ import viser
 
 from workbench.errors import ProjectError
 from workbench.gui.notify import guarded, notify
-from workbench.project import parse_project_json
 from workbench.service import Workbench
 
 
@@ -45,8 +44,7 @@ class ProjectPanel:
         file = self.upload.value
         if not file.name.lower().endswith(".json"):
             raise ProjectError(f"{file.name}: expected a .json project file")
-        project = parse_project_json(file.content, source=file.name)
-        self.wb.replace_project(project)
+        project = self.wb.replace_from_json(file.content, source=file.name)
         self.on_replaced()
         self.refresh()
         notify(

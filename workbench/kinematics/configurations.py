@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import UnreachableError
+from workbench.errors import InputError, UnreachableError
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.model import RobotModel
 
@@ -36,3 +36,28 @@ def labelled_solutions(
         )
     found.sort(key=lambda s: float(np.linalg.norm(s[1] - qn)))
     return found
+
+
+def pick_solution(
+    solutions: list[tuple[str, FloatArray]], configuration: int | str | None
+) -> FloatArray:
+    """Return the q of `solutions` (as `labelled_solutions` gives them) that `configuration` names.
+
+    None: the first (nearest); an int: that index; a str: that label. A bad index raises
+    InputError, a label that cannot reach the pose UnreachableError; both list what exists.
+    """
+    if configuration is None:
+        return solutions[0][1]
+    if isinstance(configuration, int):
+        if not 0 <= configuration < len(solutions):
+            raise InputError(
+                f"configuration: index {configuration} out of range; {len(solutions)} solution(s) exist"
+            )
+        return solutions[configuration][1]
+    for label, q in solutions:
+        if label == configuration:
+            return q
+    raise UnreachableError(
+        f"configuration {configuration!r} cannot reach this pose; available:"
+        f" {[label for label, _ in solutions]}"
+    )

@@ -53,6 +53,17 @@ def joint_array(q: ArrayLike, dof: int, name: str = "q") -> FloatArray:
     return arr
 
 
+def joint_vector(q: ArrayLike, dof: int, name: str = "q") -> FloatArray:
+    """Return one configuration (dof,) [rad] as a finite float array; raise InputError otherwise."""
+    try:
+        shape = np.shape(q)
+    except ValueError:  # ragged nesting: let joint_array name it
+        shape = None
+    if shape is not None and shape != (dof,):
+        raise InputError(f"{name}: expected {dof} joint values [rad], got shape {shape}")
+    return joint_array(q, dof, name)
+
+
 def transform_array(T: ArrayLike, name: str = "T") -> FloatArray:
     """Return (..., 4, 4) rigid transforms as floats (`geometry.check_transform`, batched)."""
     return check_transform(T, name, batch=True)

@@ -12,14 +12,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision import CollisionPolicy, ContactReport, RobotCollisionChecker
-from workbench.errors import InputError, JointLimitError, UnreachableError, WorkbenchError
+from workbench.errors import InputError, JointLimitError, WorkbenchError
 from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import DHRobot, RobotModel, Singularities
-from workbench.kinematics.configurations import labelled_solutions
+from workbench.kinematics.configurations import labelled_solutions, pick_solution
+from workbench.kinematics.dh_chain import joint_vector
 from workbench.project import (
     Project,
     load_project,
+    parse_project_json,
     project_from_dict,
     project_to_json,
     save_project,
@@ -40,15 +42,6 @@ class IKSolution:
 
     q: NDArray[np.float64]
     label: str
-
-
-def _as_vector(value: ArrayLike, n: int, name: str) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=float)
-    if arr.shape != (n,):
-        raise InputError(f"{name}: expected {n} values, got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise InputError(f"{name}: values must be finite, got {arr.tolist()}")
-    return arr
 
 
 class Workbench:
@@ -105,6 +98,15 @@ class Workbench:
         with self._lock:
             self._load(project)
 
+    def replace_from_json(self, text: str | bytes, *, source: str = "project") -> Project:
+        """Switch to the project in JSON `text` (validated; `source` names it in errors); return it.
+
+        On any error (ProjectError naming the field) the current project stays as it was.
+        """
+        project = parse_project_json(text, source=source)
+        self.replace_project(project)
+        return project
+
     # -- project ----------------------------------------------------------------------
     @property
     def project(self) -> Project:
@@ -149,7 +151,7 @@ class Workbench:
     def set_joints(self, q: ArrayLike) -> None:
         """Move the robot to joints `q` [rad]; raises JointLimitError naming the joint."""
         model = self._setup.model
-        q = _as_vector(q, model.dof, "joints")
+        q = joint_vector(q, model.dof, "joints")
         lo, hi = model.limits[:, 0], model.limits[:, 1]
         bad = np.flatnonzero((q < lo - 1e-9) | (q > hi + 1e-9))
         if bad.size:
@@ -164,7 +166,7 @@ class Workbench:
 
     def link_poses(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
         """Return world poses (dof + 1, 4, 4) of the base and every link at `q` (default: current)."""
-        qq = self._q if q is None else _as_vector(q, self.robot.dof, "q")
+        qq = self._q if q is None else joint_vector(q, self.robot.dof, "q")
         return self._setup.T_world_base @ self.robot.link_transforms(qq)
 
     def tcp_pose(self, q: ArrayLike | None = None) -> NDArray[np.float64]:
@@ -194,23 +196,7 @@ class Workbench:
         current joints. Unreachable poses raise UnreachableError and the robot stays.
         """
         sols = self.ik_solutions(T_world_tcp)
-        if configuration is None:
-            pick = sols[0]
-        elif isinstance(configuration, int):
-            if not 0 <= configuration < len(sols):
-                raise InputError(
-                    f"configuration: index {configuration} out of range; {len(sols)} solution(s) exist"
-                )
-            pick = sols[configuration]
-        else:
-            match = [s for s in sols if s.label == configuration]
-            if not match:
-                raise UnreachableError(
-                    f"configuration {configuration!r} cannot reach this pose; available:"
-                    f" {[s.label for s in sols]}"
-                )
-            pick = match[0]
-        self.set_joints(pick.q)
+        self.set_joints(pick_solution([(s.label, s.q) for s in sols], configuration))
         return self.joints
 
     def singularities(self) -> Singularities:
@@ -238,7 +224,7 @@ class Workbench:
     def collision_status(self, q: ArrayLike | None = None) -> ContactReport:
         """Return the collision report at `q` (default: current joints, cached)."""
         if q is not None:
-            return self._checker.check(_as_vector(q, self.robot.dof, "q"))
+            return self._checker.check(joint_vector(q, self.robot.dof, "q"))
         with self._lock:
             if self._report is None:
                 self._report = self._checker.check(self._q)
@@ -287,7 +273,7 @@ class Workbench:
         q_start = (
             self._q
             if spec.start is None
-            else _as_vector(spec.start, self.robot.dof, "program.start")
+            else joint_vector(spec.start, self.robot.dof, "program.start")
         )
         plan = plan_motion(
             spec,
