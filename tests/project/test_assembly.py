@@ -41,10 +41,13 @@ def test_the_example_section_in_si_matches_its_mm_and_degrees():
             np.testing.assert_allclose(T[:3, :3], _rot(*pose.rpy), atol=1e-12)
         assert q.robot == p.robot and q.color == tuple(p.color)
     for r, q in zip(spec.robots, si.robots, strict=True):
-        np.testing.assert_allclose(q.base[:3, 3], np.array(r.base.xyz) / 1000.0, atol=1e-15)
-        assert q.tool_size == pytest.approx(tuple(np.array(r.tool_size) / 1000.0))
+        np.testing.assert_allclose(q.robot.T_world_base[:3, 3], np.array(r.base.xyz) / 1000.0)
+        np.testing.assert_allclose(q.robot.T_world_base[:3, :3], _rot(*r.base.rpy), atol=1e-12)
+        np.testing.assert_allclose(q.tool.T_flange_tcp[:3, 3], np.array(r.tcp.xyz) / 1000.0)
+        np.testing.assert_allclose(q.tool.size, np.array(r.tool_size) / 1000.0)
         if r.joints is not None:
-            np.testing.assert_allclose(q.joints, np.radians(r.joints), atol=1e-15)
+            np.testing.assert_allclose(q.robot.joints, np.radians(r.joints), atol=1e-15)
+        assert q.robot.preset == r.preset and q.name == q.robot.name == r.name
     assert si.speed == pytest.approx(spec.speed / 100.0)
     assert si.planner.cell_size == pytest.approx(spec.planner.cell_size / 1000.0)
     assert [t.part for t in si.sequence] == [t.part for t in spec.tasks()]

@@ -16,32 +16,15 @@ import numpy as np
 from numpy.typing import NDArray
 from pydantic import Field, model_validator
 
-from workbench.geometry.transforms import matrix_to_rpy, xyz_rpy_to_transform
 from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
+from workbench.project.units import MM, matrix_to_pose, pose_to_matrix
 
 if TYPE_CHECKING:
-    from workbench.project.models import Robot, Tool
-
-_MM = 1e-3  # m per mm
-_DEG = np.pi / 180.0  # rad per deg
-
-
-def _matrix(pose: Pose) -> NDArray[np.float64]:
-    """Return the (4, 4) transform [m] of a pose (mm, deg)."""
-    return xyz_rpy_to_transform(np.asarray(pose.xyz) * _MM, np.asarray(pose.rpy) * _DEG)
-
-
-def _pose(T: NDArray[np.float64]) -> Pose:
-    """Return the pose (mm, deg) of a (4, 4) transform [m]."""
-    T = np.asarray(T, float)
-    return Pose(
-        xyz=[float(v) for v in T[:3, 3] / _MM],
-        rpy=[float(v) for v in matrix_to_rpy(T[:3, :3]) / _DEG],
-    )
+    from workbench.project.models import RobotSI, ToolSI
 
 
 def _mm(v: float | None) -> float | None:
-    return None if v is None else v * _MM
+    return None if v is None else v * MM
 
 
 def _rgb(c: list[int]) -> tuple[int, int, int]:
@@ -51,14 +34,11 @@ def _rgb(c: list[int]) -> tuple[int, int, int]:
 # -- the section in SI (m, rad, s; speed a fraction), what the service and the domain use ---------
 @dataclass(frozen=True, eq=False)
 class AssemblyRobotSI:
-    """A further arm: preset, base (4, 4) [m], home joints [rad] (None: zero), TCP (4, 4), tool box [m]."""
+    """A further arm: its robot and tool sections in SI (built as the project's robot is)."""
 
     name: str
-    preset: str
-    base: NDArray[np.float64]
-    joints: NDArray[np.float64] | None
-    tcp: NDArray[np.float64]
-    tool_size: tuple[float, float, float] | None
+    robot: RobotSI
+    tool: ToolSI
     color: tuple[int, int, int]
 
 
@@ -133,28 +113,17 @@ class AssemblyRobotSpec(StrictModel):
     tool_size: Vec3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
     color: Color = Field(default_factory=lambda: [200, 215, 235])
 
-    def sections(self) -> tuple[Robot, Tool]:
-        """Return this arm as a project `robot` and `tool` section (built as the main robot is)."""
+    def to_si(self) -> AssemblyRobotSI:
+        """Return this arm in SI: a project `robot` (preset, base, joints) and `tool` (TCP, box)."""
         from workbench.project.models import Robot, Tool  # models imports this module
 
         robot = Robot(name=self.name, preset=self.preset, base=self.base, joints=self.joints)
-        return robot, Tool(tcp=self.tcp, size=self.tool_size)
-
-    def to_si(self) -> AssemblyRobotSI:
-        """Return this robot in SI."""
-        return AssemblyRobotSI(
-            name=self.name,
-            preset=self.preset,
-            base=_matrix(self.base),
-            joints=None if self.joints is None else np.asarray(self.joints, float) * _DEG,
-            tcp=_matrix(self.tcp),
-            tool_size=None if self.tool_size is None else _vec(self.tool_size),
-            color=_rgb(self.color),
-        )
+        tool = Tool(tcp=self.tcp, size=self.tool_size)
+        return AssemblyRobotSI(self.name, robot.to_si(), tool.to_si(), _rgb(self.color))
 
 
 def _vec(v: list[float]) -> tuple[float, float, float]:
-    x, y, z = (float(c) for c in np.asarray(v, float) * _MM)
+    x, y, z = (float(c) for c in np.asarray(v, float) * MM)
     return (x, y, z)
 
 
@@ -194,16 +163,16 @@ class AssemblyPartSpec(StrictModel):
             size=None if self.size is None else _vec(self.size),
             radius=_mm(self.radius),
             height=_mm(self.height),
-            start=_matrix(self.start),
-            goal=_matrix(self.goal),
-            grasp=_matrix(self.grasp),
+            start=pose_to_matrix(self.start),
+            goal=pose_to_matrix(self.goal),
+            grasp=pose_to_matrix(self.grasp),
             robot=self.robot,
             color=_rgb(self.color),
         )
 
     def set_pose(self, which: Literal["start", "goal"], T_world_part: NDArray[np.float64]) -> None:
         """Set the `which` pose from a (4, 4) transform [m] (stored in mm and degrees)."""
-        setattr(self, which, _pose(T_world_part))
+        setattr(self, which, matrix_to_pose(T_world_part))
 
 
 class AssemblyPlannerSpec(StrictModel):
@@ -240,7 +209,7 @@ class AssemblyTaskSpec(StrictModel):
 
     def to_si(self) -> AssemblyTaskSI:
         """Return this part move with its distances in metres."""
-        return AssemblyTaskSI(self.part, self.approach * _MM, self.retreat * _MM)
+        return AssemblyTaskSI(self.part, self.approach * MM, self.retreat * MM)
 
 
 class AssemblySpec(StrictModel):

@@ -131,15 +131,15 @@ class AssemblyService(SectionService[AssemblySpec]):
                         main, wb.setup, wb.checker, wb.joints, (235, 235, 240), main=True
                     )
                 }
-                for i, (r, si) in enumerate(zip(self.spec.robots, self.si.robots, strict=True)):
+                for i, r in enumerate(self.si.robots):
                     if r.name in arms:
                         field = f"assembly.robots[{i}].name"
                         raise ProjectError(
                             f"{field}: {r.name!r} is already the project's robot; rename it",
                             [(field, "duplicate robot name")],
                         )
-                    setup = build_robot(*r.sections(), wb.base_dir)
-                    arms[r.name] = AssemblyArm.build(r.name, setup, setup.q0, cell, si.color)
+                    setup = build_robot(r.robot, r.tool, wb.base_dir)
+                    arms[r.name] = AssemblyArm.build(r.name, setup, setup.q0, cell, r.color)
                 self._arms = arms
             return self._arms
 
