@@ -151,8 +151,9 @@ def mz07_cell_field() -> None:
 
 def robot_checks() -> None:
     """Spheres + SDF (batched) against python-fcl mesh collide/distance of the same links."""
-    from workbench.collision.conservative import ConservativeChecker
-    from workbench.geometry.transforms import matrix_to_wxyz
+    from workbench.collision import RobotCollisionChecker, Solid
+    from workbench.collision.engine import CollisionEngine
+    from workbench.collision.shapes import bvh_model, fcl_transform
     from workbench.kinematics import DHRobot
     from workbench.kinematics.link_shapes import link_meshes
 
@@ -170,44 +171,43 @@ def robot_checks() -> None:
     sph.apply_translation((0.15, 0.45, 0.55))
     cell = trimesh.util.concatenate([*parts, sph])
     t = time.perf_counter()
-    checker = ConservativeChecker(robot, meshes, cell, spheres_per_link=6, resolution=24)
+    exact = RobotCollisionChecker(
+        robot, meshes, cell=[(Solid("cell", "mesh", mesh=cell), np.eye(4))]
+    )
+    checker = CollisionEngine(exact, "spheres", spheres_per_link=6, resolution=24).checker
     setup = time.perf_counter() - t
     rng = np.random.default_rng(0)
     lim = np.asarray(robot.limits)
     q = rng.uniform(lim[:, 0], lim[:, 1], (10_000, 6))
     q[:, 1:3] = rng.uniform(-0.9, 0.9, (10_000, 2))
     t = time.perf_counter()
-    rep = checker.check(q, early_exit=True)
+    clearance, _ = checker.cell_clearance(q, early_exit=True)  # type: ignore[union-attr]
+    collides = clearance <= 0.0
     ours = (time.perf_counter() - t) / len(q)
 
-    def bvh(m: trimesh.Trimesh) -> fcl.BVHModel:
-        model = fcl.BVHModel()
-        model.beginModel(len(m.vertices), len(m.faces))
-        model.addSubModel(np.asarray(m.vertices), np.asarray(m.faces))
-        model.endModel()
-        return model
-
-    cell_obj = fcl.CollisionObject(bvh(cell), fcl.Transform())
-    links = [fcl.CollisionObject(bvh(m), fcl.Transform()) for m in meshes[1:]]
+    cell_obj = fcl.CollisionObject(bvh_model(cell.vertices, cell.faces), fcl.Transform())
+    links = [
+        fcl.CollisionObject(bvh_model(m.vertices, m.faces), fcl.Transform()) for m in meshes[1:]
+    ]
     n_fcl = 2000
     T = robot.link_transforms(q[:n_fcl])
     t = time.perf_counter()
     hits = np.zeros(n_fcl, dtype=bool)
     for n in range(n_fcl):
         for i, obj in enumerate(links, start=1):
-            obj.setTransform(fcl.Transform(matrix_to_wxyz(T[n, i, :3, :3]), T[n, i, :3, 3]))
+            obj.setTransform(fcl_transform(T[n, i]))
             hits[n] |= fcl.collide(obj, cell_obj, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
     collide = (time.perf_counter() - t) / n_fcl
     n_dist = 200
     t = time.perf_counter()
     for n in range(n_dist):
         for i, obj in enumerate(links, start=1):
-            obj.setTransform(fcl.Transform(matrix_to_wxyz(T[n, i, :3, :3]), T[n, i, :3, 3]))
+            obj.setTransform(fcl_transform(T[n, i]))
             fcl.distance(obj, cell_obj, fcl.DistanceRequest(), fcl.DistanceResult())
     dist = (time.perf_counter() - t) / n_dist
-    missed = int(np.sum(hits & ~rep.collides[:n_fcl]))
+    missed = int(np.sum(hits & ~collides[:n_fcl]))
     print(
-        f"robot vs cell, MZ07 links 1-6 ({len(checker.radii)} spheres), {len(cell.faces)}-triangle cell, setup {setup:.1f} s"
+        f"robot vs cell, MZ07 links 1-6 ({len(checker.cell_spheres)} spheres), {len(cell.faces)}-triangle cell, setup {setup:.1f} s"
     )
     print(
         f"  spheres+SDF batched over 10000 configurations (early exit per link): {ours * 1e6:8.2f} us/configuration"
@@ -219,7 +219,7 @@ def robot_checks() -> None:
         f"  fcl mesh distance, 6 links ({n_dist} configurations): {dist * 1e6:8.2f} us   ratio {dist / ours:6.1f}x"
     )
     print(
-        f"  misses against fcl on the first {n_fcl}: {missed}; flagged {rep.collides[:n_fcl].sum()}, fcl hits {hits.sum()} (no containment test here)"
+        f"  misses against fcl on the first {n_fcl}: {missed}; flagged {collides[:n_fcl].sum()}, fcl hits {hits.sum()} (no containment test here)"
     )
 
 

@@ -214,7 +214,8 @@ def test_a_new_node_is_always_placed_even_where_a_dropped_one_was():
     """The certifier must re-place poses for every new node: a dropped node's id() is reused."""
     from types import SimpleNamespace
 
-    from workbench.collision.path_check import PathCertifier, _Node
+    from workbench.collision.path_check import PathCertifier
+    from workbench.collision.path_oracle import PathNode
 
     placed: list[np.ndarray] = []
     oracle = SimpleNamespace(
@@ -224,9 +225,9 @@ def test_a_new_node_is_always_placed_even_where_a_dropped_one_was():
     )
     cert = PathCertifier(oracle)  # type: ignore[arg-type]
 
-    def node(value: float) -> _Node:
+    def node(value: float) -> PathNode:
         z = np.zeros(1)
-        return _Node(0.0, z, z, z, np.full((1, 4, 4), value), z, z)
+        return PathNode(0.0, z, z, z, np.full((1, 4, 4), value), z, z)
 
     # With an id() check the dropped node's address comes back for the next node (CPython) and
     # that node's poses are never placed; holding the node itself keeps it alive instead.

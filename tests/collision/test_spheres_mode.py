@@ -1,4 +1,7 @@
-"""Spheres + SDF conservative check: zero false negatives against python-fcl + containment."""
+"""Spheres mode, links against the cell: zero false negatives against python-fcl + containment.
+
+(These are the twin tests of the former `ConservativeChecker`, which folded into `SpheresMode`:
+`cell_clearance` is its check, `early_exit` included.)"""
 
 from __future__ import annotations
 
@@ -7,7 +10,9 @@ import numpy as np
 import pytest
 import trimesh
 
-from workbench.collision.conservative import ConservativeChecker
+from workbench.collision import RobotCollisionChecker, Solid
+from workbench.collision.engine import CollisionEngine
+from workbench.collision.spheres_mode import SpheresMode
 from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_wxyz
 from workbench.kinematics import DHRobot
@@ -102,70 +107,82 @@ def _exact_distance(robot: DHRobot, meshes: list[trimesh.Trimesh], q: np.ndarray
     return out
 
 
+def _checker(robot: DHRobot, meshes: list[trimesh.Trimesh]) -> RobotCollisionChecker:
+    cell = [
+        (Solid(f"box{k}", "box", size=size), _translation(c)) for k, (c, size) in enumerate(BOXES)
+    ]
+    ball = trimesh.creation.icosphere(subdivisions=3, radius=SPHERE[1])
+    cell.append((Solid("ball", "mesh", mesh=ball), _translation(SPHERE[0])))
+    return RobotCollisionChecker(robot, meshes, cell=cell)
+
+
+def _translation(c: tuple[float, float, float]) -> np.ndarray:
+    T = np.eye(4)
+    T[:3, 3] = c
+    return T
+
+
 @pytest.fixture(scope="module")
-def setup() -> tuple[DHRobot, list[trimesh.Trimesh], ConservativeChecker]:
+def setup() -> tuple[DHRobot, list[trimesh.Trimesh], SpheresMode]:
     robot = DHRobot.mz07()
     meshes = link_meshes(robot)
-    return (
-        robot,
-        meshes,
-        ConservativeChecker(robot, meshes, _cell(), spheres_per_link=6, resolution=24),
-    )
+    eng = CollisionEngine(_checker(robot, meshes), "spheres", spheres_per_link=6, resolution=24)
+    assert isinstance(eng.checker, SpheresMode)
+    return robot, meshes, eng.checker
 
 
 def test_zero_false_negatives_on_10000_configurations(setup) -> None:
-    robot, meshes, checker = setup
+    robot, meshes, spheres = setup
     rng = np.random.default_rng(0)
     lim = np.asarray(robot.limits)
     q = rng.uniform(lim[:, 0], lim[:, 1], (10_000, 6))
     q[:, 1:3] = rng.uniform(-0.9, 0.9, (10_000, 2))  # keep the arm over the obstacles
-    rep = checker.check(q)
+    clearance, _ = spheres.cell_clearance(q)
+    flagged = clearance <= 0.0
     exact = _exact(robot, meshes, q)
     assert exact.sum() > 1000  # many configurations do touch the cell
-    assert not np.any(exact & ~rep.collides), f"missed {np.sum(exact & ~rep.collides)}"
-    fp = np.sum(rep.collides & ~exact) / max(np.sum(~exact), 1)
+    assert not np.any(exact & ~flagged), f"missed {np.sum(exact & ~flagged)}"
+    fp = np.sum(flagged & ~exact) / max(np.sum(~exact), 1)
     assert fp < 0.5  # conservative, not useless (figure printed with -s)
     print(f"\n10000 configurations: {exact.sum()} collide, false-positive rate {fp:.1%}")
     # Early exit (one bounding sphere per link first): never misses either. Its clearance is
-    # not a bound of the full check's (the field is not 1-Lipschitz), but both are, less
-    # max_error, lower bounds of python-fcl's distance: checked on the free configurations
-    # nearest to the cell by either report (where a wrong bound would show first).
-    fast = checker.check(q, early_exit=True)
-    assert not np.any(exact & ~fast.collides)
+    # not a bound of the full check's (the field is not 1-Lipschitz), but both are lower
+    # bounds of python-fcl's distance: checked on the free configurations nearest to the
+    # cell by either report (where a wrong bound would show first).
+    fast, _ = spheres.cell_clearance(q, early_exit=True)
+    assert not np.any(exact & ~(fast <= 0.0))
     free = np.flatnonzero(~exact)
     near = np.unique(
         np.r_[
-            free[np.argsort(rep.clearance[free])[:150]],
-            free[np.argsort(fast.clearance[free])[:150]],
+            free[np.argsort(clearance[free])[:150]],
+            free[np.argsort(fast[free])[:150]],
         ]
     )
     dist = _exact_distance(robot, meshes, q[near])
-    err = checker.sdf.max_error
-    assert np.all(rep.clearance[near] - err <= dist + 1e-6)
-    assert np.all(fast.clearance[near] - err <= dist + 1e-6)
+    assert np.all(clearance[near] <= dist + 1e-6)
+    assert np.all(fast[near] <= dist + 1e-6)
     print(f"near: {len(near)}, distance max {dist.max():.4f}, median {np.median(dist):.4f} m")
     assert np.median(dist) < 0.02  # near the cell: the bounds are tested where they matter
 
 
 def test_spheres_contain_every_link_vertex(setup) -> None:
-    robot, meshes, checker = setup
+    robot, meshes, spheres = setup
     q = np.random.default_rng(1).uniform(-1, 1, (20, 6))
-    c = checker.sphere_centres(q)
+    c = spheres.sphere_centres(q)
     T = robot.link_transforms(q)
-    for i in checker.links:
+    for i in spheres.bodies.checked:
         v = np.einsum("nij,vj->nvi", T[:, i, :3, :3], meshes[i].vertices) + T[:, i, None, :3, 3]
-        own = checker.sphere_link == i
+        own = spheres.sphere_body == i
         d = np.linalg.norm(v[:, :, None] - c[:, None, own], axis=3)
-        assert np.all(np.any(d <= checker.radii[own] + 1e-12, axis=2))
+        assert np.all(np.any(d <= spheres.radii[own] + 1e-12, axis=2))
 
 
 def test_bad_input(setup) -> None:
-    robot, meshes, checker = setup
-    with pytest.raises(InputError, match="q must have shape"):
-        checker.check(np.zeros((3, 5)))
+    robot, meshes, spheres = setup
+    with pytest.raises(InputError, match="q: expected finite joints of shape"):
+        spheres.cell_clearance(np.zeros((3, 5)))
+    checker = _checker(robot, meshes)
     with pytest.raises(InputError, match="margin"):
-        ConservativeChecker(robot, meshes, _cell(), margin=-1.0)
-    with pytest.raises(InputError, match="links"):
-        ConservativeChecker(robot, meshes, _cell(), links=[9])
-    with pytest.raises(InputError, match="count"):
-        ConservativeChecker(robot, meshes, _cell(), links=[1], spheres_per_link=0)
+        CollisionEngine(checker, "spheres", margin=-1.0)
+    with pytest.raises(InputError, match="spheres_per_link"):
+        CollisionEngine(checker, "spheres", spheres_per_link=0)

@@ -36,6 +36,7 @@ from workbench.assembly.cells import (
     subdivide_cached,
     winding_number,
 )
+from workbench.collision.shapes import bvh_model, fcl_transform
 from workbench.errors import InputError
 
 # An obstacle grid never has more than this many cells along an axis; its cells may be
@@ -58,7 +59,7 @@ class _Body:
         self.mesh = mesh
         self.grid = grid
         self.bounds = np.asarray(mesh.bounds, dtype=float)
-        self.fcl_obj = fcl.CollisionObject(_bvh(mesh), fcl.Transform())
+        self.fcl_obj = fcl.CollisionObject(bvh_model(mesh.vertices, mesh.faces), fcl.Transform())
         labels = trimesh.graph.connected_component_labels(mesh.face_adjacency, len(mesh.faces))
         # Up to 32 vertices per connected component, for the containment test: with the
         # surfaces apart, each component lies wholly inside or wholly outside the other body.
@@ -74,25 +75,13 @@ class _Body:
         self.triangles = np.ascontiguousarray(mesh.triangles, dtype=float)
 
 
-def _bvh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
-    m = fcl.BVHModel()
-    m.beginModel(len(mesh.vertices), len(mesh.faces))
-    m.addSubModel(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int32))
-    m.endModel()
-    return m
-
-
-def _fcl_tf(T: NDArray[np.float64]) -> fcl.Transform:
-    return fcl.Transform(np.ascontiguousarray(T[:3, :3]), np.ascontiguousarray(T[:3, 3]))
-
-
 def exact_interference(
     mesh_a: trimesh.Trimesh, T_world_a: ArrayLike, mesh_b: trimesh.Trimesh, T_world_b: ArrayLike
 ) -> bool:
     """Return True if two closed meshes placed at (4, 4) poses [m] intersect or one encloses the other."""
     Ta, Tb = np.asarray(T_world_a, float), np.asarray(T_world_b, float)
-    oa = fcl.CollisionObject(_bvh(mesh_a), _fcl_tf(Ta))
-    ob = fcl.CollisionObject(_bvh(mesh_b), _fcl_tf(Tb))
+    oa = fcl.CollisionObject(bvh_model(mesh_a.vertices, mesh_a.faces), fcl_transform(Ta))
+    ob = fcl.CollisionObject(bvh_model(mesh_b.vertices, mesh_b.faces), fcl_transform(Tb))
     if fcl.collide(oa, ob, fcl.CollisionRequest(), fcl.CollisionResult()) > 0:
         return True
     T_b_a = np.linalg.solve(Tb, Ta)
@@ -239,7 +228,7 @@ class InterferenceChecker:
     def exact_pair(self, T: NDArray[np.float64], k: int) -> bool:
         """Return True if the part at pose T (4, 4) truly interferes with obstacle `k` (fcl + containment)."""
         T = np.asarray(T, dtype=float)
-        self.moving.fcl_obj.setTransform(_fcl_tf(T))
+        self.moving.fcl_obj.setTransform(fcl_transform(T))
         ob = self.obstacles[k]
         if fcl.collide(self.moving.fcl_obj, ob.fcl_obj, self._request, fcl.CollisionResult()):
             return True
@@ -367,7 +356,7 @@ class InterferenceChecker:
             # needs surfaces apart, on the poses before it in one vectorised pass.
             hit, apart = -1, []
             for i in np.nonzero(c.any(axis=1))[0].tolist():
-                self.moving.fcl_obj.setTransform(_fcl_tf(T[rows[i]]))
+                self.moving.fcl_obj.setTransform(fcl_transform(T[rows[i]]))
                 for k in np.nonzero(c[i])[0].tolist():
                     self.stats.exact_pairs += 1
                     if fcl.collide(

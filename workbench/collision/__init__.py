@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from workbench.collision.fcl_checker import CollisionReport, CollisionScene
+from workbench.collision.fcl_checker import CollisionScene, ContactReport
 from workbench.collision.plan_check import (
     CollisionPolicy,
     check_motion,
@@ -15,7 +15,7 @@ from workbench.collision.shapes import Solid, bvh_model, check_mesh, fcl_transfo
 
 __all__ = [
     "CollisionPolicy",
-    "CollisionReport",
+    "ContactReport",
     "CollisionScene",
     "PathReport",
     "RobotCollisionChecker",

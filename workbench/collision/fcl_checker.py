@@ -20,8 +20,8 @@ from workbench.errors import InputError
 
 
 @dataclass(frozen=True)
-class CollisionReport:
-    """Result of one check: colliding pairs by name and the clearance of the rest [m]."""
+class ContactReport:
+    """One configuration's exact check: the pairs in contact by name and the clearance of the rest [m]."""
 
     colliding: tuple[tuple[str, str], ...]
     min_distance: float  # smallest distance over checked pairs; 0 when any pair collides
@@ -38,7 +38,9 @@ class CollisionReport:
         return {name for pair in self.colliding for name in pair}
 
 
-class _Entry:
+class SceneBody:
+    """A named solid of a scene: its fcl object, mesh, world pose and bounding box, as placed."""
+
     def __init__(self, solid: Solid) -> None:
         self.solid = solid
         self.obj = fcl.CollisionObject(solid.fcl_geometry(), fcl.Transform())
@@ -93,10 +95,10 @@ class CollisionScene:
         dupes = {n for n in names if names.count(n) > 1}
         if dupes:
             raise InputError(f"body names must be unique, repeated: {sorted(dupes)}")
-        self.moving = {s.name: _Entry(s) for s in moving}
+        self.moving = {s.name: SceneBody(s) for s in moving}
         self.static = {}
         for solid, T in static:
-            entry = _Entry(solid)
+            entry = SceneBody(solid)
             entry.place(T)
             self.static[solid.name] = entry
         skip = {frozenset(p) for p in ignore}
@@ -108,7 +110,8 @@ class CollisionScene:
                 raise InputError(f"self-collision pair ({a}, {b}) names an unknown moving body")
             self.pairs.append((a, b))
 
-    def _entry(self, name: str) -> _Entry:
+    def entry(self, name: str) -> SceneBody:
+        """Return the moving or static body called `name`."""
         return self.moving.get(name) or self.static[name]
 
     def place(self, poses: dict[str, NDArray[np.float64]]) -> None:
@@ -118,7 +121,7 @@ class CollisionScene:
 
     def collides(self, a: str, b: str) -> bool:
         """Return whether bodies a and b (as placed) touch, or one holds the other."""
-        ea, eb = self._entry(a), self._entry(b)
+        ea, eb = self.entry(a), self.entry(b)
         if fcl.collide(ea.obj, eb.obj, fcl.CollisionRequest(), fcl.CollisionResult()) > 0:
             return True
         if not _aabbs_overlap(ea.aabb, eb.aabb):
@@ -129,19 +132,19 @@ class CollisionScene:
 
     def distance(self, a: str, b: str) -> float:
         """Return fcl's distance [m] between the surfaces of bodies a and b as placed (>= 0)."""
-        ea, eb = self._entry(a), self._entry(b)
+        ea, eb = self.entry(a), self.entry(b)
         d = fcl.distance(ea.obj, eb.obj, fcl.DistanceRequest(), fcl.DistanceResult())
         return max(float(d), 0.0)
 
     def aabb_gap(self, a: str, b: str) -> float:
         """Return the distance [m] between the world bounding boxes of a and b (0 when they overlap)."""
-        ea, eb = self._entry(a), self._entry(b)
+        ea, eb = self.entry(a), self.entry(b)
         gap = np.maximum(np.maximum(ea.aabb[0] - eb.aabb[1], eb.aabb[0] - ea.aabb[1]), 0.0)
         return float(np.sqrt(gap @ gap))
 
     def check(
         self, poses: dict[str, NDArray[np.float64]], *, distance: bool = True
-    ) -> CollisionReport:
+    ) -> ContactReport:
         """Return the report for moving bodies placed at `poses` (name -> (4, 4) world pose)."""
         self.place(poses)
         colliding: list[tuple[str, str]] = []
@@ -155,7 +158,7 @@ class CollisionScene:
                 d = self.distance(a, b)
                 if d < best:
                     best, best_pair = d, (a, b)
-        return CollisionReport(tuple(colliding), float(best), best_pair, len(self.pairs))
+        return ContactReport(tuple(colliding), float(best), best_pair, len(self.pairs))
 
 
 def _aabbs_overlap(

@@ -1,6 +1,6 @@
 """Spheres fixed in rigid bodies, padded per body so one batched matmul places them all.
 
-Both the conservative checker and the collision engine place many small spheres (a few per
+The spheres mode of the collision engine places many small spheres (a few per
 body) at many configurations. Gathering a (N, S, 4, 4) copy of the body frames per sphere
 costs more than the placement itself; instead the centres are stored per body as a
 homogeneous (B, 4, K) block (K = most spheres of one body) and placed with one

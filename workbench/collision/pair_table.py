@@ -20,16 +20,21 @@ valid, looser).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
+from workbench.collision.bodies import Pair, RobotBodies
+from workbench.collision.path_check import NO_BOUND
 from workbench.errors import InputError
-from workbench.geometry.npz_cache import load_entry, store_entry
+from workbench.geometry.npz_cache import cache_path, load_entry, store_entry
 
 FloatArray = NDArray[np.float64]
+# Grid step of the engine's pair tables: their bound is at most TABLE_TOL [m] below fcl's distance.
+TABLE_TOL = 0.006
 # Most nodes along one joint: a step below range / MAX_NODES would make a huge, sparse table.
 MAX_NODES = 4096
 # Stored in every cache entry; bump when the entry changes (2: npz_cache, format field), so
@@ -147,3 +152,86 @@ def pair_joints(frame_a: int, frame_b: int | None) -> NDArray[np.int64]:
         return np.arange(0, frame_a, dtype=np.int64)
     lo, hi = sorted((frame_a, frame_b))
     return np.arange(lo, hi, dtype=np.int64)
+
+
+class PairTables:
+    """A `PairTable` for every exact pair of `bodies` whose distance depends on one or two joints.
+
+    Tables fill lazily and are kept, so later paths reuse the nodes computed so far; with
+    `cache_dir` also on disk (``table-<sha256>.npz``: digest of both meshes, the bodies' poses
+    at probe configurations (kinematics, base, tool) and the grid), written by `save`.
+    distance(pair, qs (M, dof)) -> (M,) [m] gives the exact distance at node configurations.
+    """
+
+    def __init__(
+        self,
+        bodies: RobotBodies,
+        distance: Callable[[Pair, FloatArray], FloatArray],
+        *,
+        margin: float,
+        cache_dir: str | None,
+        enabled: bool = True,
+    ) -> None:
+        self.bodies, self.margin = bodies, margin
+        self.tables: dict[Pair, PairTable] = {}
+        limits = np.asarray(bodies.robot.limits, float)
+        for a, b in bodies.scene.pairs if enabled else []:
+            fa = int(bodies.frame[bodies.index[a]])
+            fb = int(bodies.frame[bodies.index[b]]) if b in bodies.index else None
+            joints = pair_joints(fa, fb)
+            lever = bodies.pair_lever[(a, b)][joints]
+            if not 1 <= len(joints) <= 2 or not np.all(lever > 0):
+                continue
+            table = PairTable(
+                joints,
+                limits[joints, 0],
+                limits[joints, 1],
+                lever,
+                bodies.dof,
+                functools.partial(distance, (a, b)),
+                tol=TABLE_TOL,
+            )
+            if cache_dir is not None:
+                table.attach(self._path(cache_dir, (a, b), table))
+            self.tables[(a, b)] = table
+        pairs = list(bodies.pair_lever)
+        self._cols = [(pairs.index(p), t) for p, t in self.tables.items()]
+
+    def _path(self, cache_dir: str | Path, pair: Pair, table: PairTable) -> Path:
+        """Return the cache entry of a pair table, keyed by everything its values depend on."""
+        b = self.bodies
+        probes = np.random.default_rng(0).uniform(-1.0, 1.0, (3, b.dof))
+        T = b.poses(probes)
+        inputs: list[NDArray] = []
+        kinds = []
+        for name in pair:
+            e = b.scene.entry(name)
+            pose = T[:, b.index[name]] if name in b.index else e.T
+            inputs += [np.asarray(e.mesh.vertices, float), np.asarray(e.mesh.faces, np.int64)]
+            inputs.append(np.asarray(pose, float))
+            kinds.append(str(e.solid.kind))
+        inputs += [table.joints, table.lower, table.step, table.count]
+        return cache_path(cache_dir, "table", inputs, {"kinds": kinds, "format": 2})
+
+    def save(self) -> None:
+        """Write the tables that gained nodes to their cache files (if any)."""
+        for table in self.tables.values():
+            table.save()
+
+    def bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray:
+        """Return (N, P): lower bounds [m] of the exact pairs' distances, less the margin.
+
+        qs (N, dof) [rad]; mask (N, P) says which entries are wanted (pairs in `pair_lever`
+        order). Wanted entries of pairs without a table get NO_BOUND (no information);
+        entries not wanted are NaN. Only wanted entries fill table nodes.
+        """
+        out = np.full(mask.shape, np.nan)
+        out[mask] = NO_BOUND
+        for col, table in self._cols:
+            rows = np.flatnonzero(mask[:, col])
+            if rows.size:
+                # A table that would need more new nodes (fcl distances) than the queries it
+                # answers costs more than they do: it says nothing this time (not filled).
+                b = table.bound(qs[rows], max_new=rows.size)
+                out[rows, col] = np.maximum(b - self.margin, NO_BOUND)
+        return out

@@ -19,14 +19,14 @@ between samples.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
+from workbench.collision.path_oracle import Pair, PathNode, PathOracle, PathOutcome, chord_bound
+
 FloatArray = NDArray[np.float64]
-Pair = tuple[str, str]
 Sampler = Callable[[FloatArray], FloatArray]
 # (t0 (M,), t1 (M,)) [s] -> (M, dof) [rad/s^2]: a bound of |q''| over each interval.
 AccelerationBound = Callable[[FloatArray, FloatArray], FloatArray]
@@ -45,68 +45,6 @@ RENEW = 0.8
 NO_BOUND = -1e9
 
 
-def _chord_bound(a: FloatArray, b: FloatArray, travel: FloatArray) -> FloatArray:
-    """Return the least clearance along a joint segment [m] from end bounds a, b and travel.
-
-    Clearance at travel x from a is at least max(a - x, b - (travel - x)); its minimum over
-    x in [0, travel] is (a + b - travel) / 2 where |a - b| <= travel, else max(a, b) - travel.
-    """
-    return np.where(np.abs(a - b) <= travel, (a + b - travel) / 2, np.maximum(a, b) - travel)
-
-
-class PathOracle(Protocol):
-    """What the certifier needs of an engine (see `CollisionEngine`)."""
-
-    dof: int
-    item_group: NDArray[np.int64]
-    group_start: NDArray[np.int64]
-    group_pairs: list[list[Pair]]
-    always_pairs: list[Pair]
-    pair_lever: dict[Pair, FloatArray]
-    margin: float
-
-    def path_items(self, qs: FloatArray) -> tuple[FloatArray, FloatArray]: ...
-
-    def contained(self, qs: FloatArray) -> NDArray[np.bool_]: ...
-
-    def poses(self, qs: FloatArray) -> FloatArray: ...
-
-    def place(self, poses: FloatArray) -> None: ...
-
-    def aabb_gaps(self, poses: FloatArray) -> FloatArray: ...
-
-    def table_bounds(self, qs: FloatArray, mask: NDArray[np.bool_]) -> FloatArray: ...
-
-    def pair_collides(self, pair: Pair) -> bool: ...
-
-    def pair_distance(self, pair: Pair) -> float: ...
-
-
-@dataclass
-class _Node:
-    t: float
-    q: FloatArray
-    clr: FloatArray  # (G,) least item clearance per group [m] (the between-samples items)
-    gmin: FloatArray  # (G,) least item clearance per group [m]
-    poses: FloatArray  # (B, 4, 4) world poses of the moving bodies
-    gaps: FloatArray  # (P,) bounding-box gaps of the exact pairs, less the margin [m]
-    tab: FloatArray  # (P,) pair-table lower bounds, less the margin [m]; NaN: not looked up
-    hits: tuple[Pair, ...] = ()
-    dist: dict[tuple[Pair, int], float] = field(default_factory=dict)
-
-
-@dataclass
-class PathOutcome:
-    """What the certifier found (SI units); `events` are (time, interval start, q, hits)."""
-
-    sample_hits: dict[int, tuple[Pair, ...]]
-    flagged: int
-    events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]]
-    clearance: float
-    evaluated: int
-    exact_pairs: int
-
-
 class PathCertifier:
     """Certify a sampled joint path with an engine's items, confirming flagged groups exactly."""
 
@@ -114,7 +52,7 @@ class PathCertifier:
         self.o = oracle
         # The node whose poses the exact checker holds, kept by reference: an id() would be
         # reused by a new node once the placed one is dropped, and its poses never placed.
-        self._placed: _Node | None = None
+        self._placed: PathNode | None = None
         self.exact_pairs = 0
         # Per pair, configurations with an exact distance: the distance at any q is at least
         # d - |q - q_anchor| @ lever (the lever bound along the straight joint segment).
@@ -130,7 +68,7 @@ class PathCertifier:
         for g, cols in enumerate(self.group_cols):
             self.group_member[g, cols] = 1
 
-    def _nodes(self, t: FloatArray, q: FloatArray) -> list[_Node]:
+    def _nodes(self, t: FloatArray, q: FloatArray) -> list[PathNode]:
         clr, lev = self.o.path_items(q)
         gmin = np.minimum.reduceat(clr, self.o.group_start, axis=1)
         # One item per group between samples: its least clearance with the largest lever of its
@@ -150,7 +88,8 @@ class PathCertifier:
         tab = self.o.table_bounds(q, flagged)
         flagged &= ~(tab + self.o.margin > 0.0)
         nodes = [
-            _Node(float(t[i]), q[i], gmin[i], gmin[i], T[i], gaps[i], tab[i]) for i in range(len(q))
+            PathNode(float(t[i]), q[i], gmin[i], gmin[i], T[i], gaps[i], tab[i])
+            for i in range(len(q))
         ]
         for i, j in zip(*np.nonzero(flagged), strict=True):
             node, p = nodes[i], self.pairs[j]
@@ -172,7 +111,7 @@ class PathCertifier:
                 node.hits += (p,)
         return nodes
 
-    def _tabs(self, ends: list[_Node], want: NDArray[np.bool_]) -> FloatArray:
+    def _tabs(self, ends: list[PathNode], want: NDArray[np.bool_]) -> FloatArray:
         """Return (W, P) table bounds at the interval ends, looking up the wanted ones not yet known."""
         tab = np.array([n.tab for n in ends])
         miss = want & np.isnan(tab)
@@ -185,12 +124,12 @@ class PathCertifier:
             tab = np.array([n.tab for n in ends])
         return np.where(np.isnan(tab), NO_BOUND, tab)
 
-    def _place(self, node: _Node) -> None:
+    def _place(self, node: PathNode) -> None:
         if self._placed is not node:
             self.o.place(node.poses)
             self._placed = node
 
-    def _anchored(self, node: _Node, pair: Pair) -> float:
+    def _anchored(self, node: PathNode, pair: Pair) -> float:
         """Return the anchors' bound at node where it keeps RENEW of the anchor's distance, else -inf.
 
         Renewing anchors before their bound decays to 0 keeps the reported clearance within
@@ -203,7 +142,7 @@ class PathCertifier:
         k = int(np.argmax(b))
         return float(b[k]) if b[k] >= RENEW * d[k] else -np.inf
 
-    def _lower(self, node: _Node, pair: Pair, tier: int) -> float:
+    def _lower(self, node: PathNode, pair: Pair, tier: int) -> float:
         """Return a lower bound [m] of the pair's distance (less the margin) at node.
 
         tier 0: the gap between bounding boxes; 1: the best anchor's lever bound; 2: fcl's
@@ -281,7 +220,7 @@ class PathCertifier:
             else:
                 dev = np.broadcast_to(deviation, dq.shape)
             travel, tube = dq @ lev.T, dev @ lev.T
-            group_lo = _chord_bound(a, b, travel) - tube
+            group_lo = chord_bound(a, b, travel) - tube
             group_fail = ~(group_lo > 0.0)
             ga = np.array([w[0].gmin for w in work])
             gb = np.array([w[1].gmin for w in work])
@@ -291,7 +230,7 @@ class PathCertifier:
             pa = np.array([w[0].gaps for w in work])
             pb = np.array([w[1].gaps for w in work])
             ptravel, ptube = dq @ self.plev.T, dev @ self.plev.T
-            pair_lo = _chord_bound(pa, pb, ptravel) - ptube  # (W, P)
+            pair_lo = chord_bound(pa, pb, ptravel) - ptube  # (W, P)
             # Pairs of the exact groups: box gaps first; anchors and fcl only where those fail
             # and the interval's fast items pass.
             fast_fail = np.any(group_fail & ~exact, axis=1)
@@ -301,7 +240,7 @@ class PathCertifier:
             ta = self._tabs([w[0] for w in work], want)
             tb = self._tabs([w[1] for w in work], want)
             pair_lo = np.where(
-                want, np.maximum(pair_lo, _chord_bound(ta, tb, ptravel) - ptube), pair_lo
+                want, np.maximum(pair_lo, chord_bound(ta, tb, ptravel) - ptube), pair_lo
             )
             pb = np.where(pairs_in, pair_lo, np.inf)
             failed: set[int] = set()
@@ -372,7 +311,7 @@ class PathCertifier:
             db = self._lower(w[1], pair, tier)
             if np.isfinite(da) and np.isfinite(db):
                 lo = max(
-                    lo, float(_chord_bound(np.array(da), np.array(db), np.array(travel))) - tube
+                    lo, float(chord_bound(np.array(da), np.array(db), np.array(travel))) - tube
                 )
         return lo
 
@@ -407,7 +346,7 @@ class PathCertifier:
             # Box-gap bounds of the group's pairs on these rows: a pair whose gap bound on
             # row k is above the group's fcl bound there cannot be its least; no fcl for it.
             L = self.plev[cols]
-            gap_lo = _chord_bound(ga[rows][:, cols], gb[rows][:, cols], dq[rows] @ L.T)
+            gap_lo = chord_bound(ga[rows][:, cols], gb[rows][:, cols], dq[rows] @ L.T)
             gap_lo = gap_lo - dev[rows] @ L.T
             lo = np.full(len(rows), np.inf)
             for c in np.argsort(gap_lo[kr], kind="stable"):
@@ -421,7 +360,7 @@ class PathCertifier:
                 Lp = L[c]
                 da = np.max(anchor_d[None] - np.abs(qa[rows, None] - anchor_q[None]) @ Lp, axis=1)
                 db = np.max(anchor_d[None] - np.abs(qb[rows, None] - anchor_q[None]) @ Lp, axis=1)
-                pair_lo = _chord_bound(da, db, dq[rows] @ Lp) - dev[rows] @ Lp
+                pair_lo = chord_bound(da, db, dq[rows] @ Lp) - dev[rows] @ Lp
                 lo = np.minimum(lo, np.maximum(pair_lo, gap_lo[:, c]))
             B[rows, g] = np.maximum(B[rows, g], lo)
             tight[k, g] = True

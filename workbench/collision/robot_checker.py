@@ -10,7 +10,7 @@ import numpy as np
 import trimesh
 from numpy.typing import NDArray
 
-from workbench.collision.fcl_checker import CollisionReport, CollisionScene
+from workbench.collision.fcl_checker import CollisionScene, ContactReport
 from workbench.collision.shapes import Solid
 
 
@@ -28,7 +28,7 @@ class PathReport:
 
     collision_free: bool
     first_index: int | None
-    first_report: CollisionReport | None
+    first_report: ContactReport | None
     min_distance: float
     samples: int
     colliding_indices: tuple[int, ...]
@@ -103,7 +103,7 @@ class RobotCollisionChecker:
         """Return the world pose of every moving body (links, tool) at `q`."""
         return self._poses(q)
 
-    def check(self, q: NDArray[np.float64], *, distance: bool = True) -> CollisionReport:
+    def check(self, q: NDArray[np.float64], *, distance: bool = True) -> ContactReport:
         """Return the collision report of configuration `q` [rad]."""
         return self.scene.check(self._poses(q), distance=distance)
 
@@ -122,7 +122,7 @@ class RobotCollisionChecker:
         """
         qs = np.atleast_2d(np.asarray(qs, float))
         hits: list[int] = []
-        first: CollisionReport | None = None
+        first: ContactReport | None = None
         dmin = np.inf
         for i, q in enumerate(qs):
             if progress is not None and i % 50 == 0:

@@ -8,7 +8,7 @@ from typing import Literal
 import fcl
 import numpy as np
 import trimesh
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike
 
 from workbench.errors import InputError, MeshError
 
@@ -52,7 +52,8 @@ class Solid:
             return fcl.Box(*self.size)  # type: ignore[misc]
         if self.kind == "cylinder":
             return fcl.Cylinder(self.radius, self.height)
-        return bvh_model(self.to_trimesh())
+        mesh = self.to_trimesh()
+        return bvh_model(mesh.vertices, mesh.faces)
 
 
 def check_mesh(mesh: trimesh.Trimesh | None, name: str) -> trimesh.Trimesh:
@@ -66,15 +67,20 @@ def check_mesh(mesh: trimesh.Trimesh | None, name: str) -> trimesh.Trimesh:
     return mesh
 
 
-def bvh_model(mesh: trimesh.Trimesh) -> fcl.BVHModel:
-    """Return a python-fcl BVH (a surface, not a solid) of `mesh`."""
+def bvh_model(vertices: ArrayLike, faces: ArrayLike) -> fcl.BVHModel:
+    """Return a python-fcl BVH (a surface, not a solid) of a triangle mesh: vertices (V, 3) [m],
+    faces (F, 3) vertex indices. The project's one fcl BVH construction."""
+    v = np.ascontiguousarray(vertices, float)
+    f = np.ascontiguousarray(faces, np.int32)
     model = fcl.BVHModel()
-    model.beginModel(len(mesh.vertices), len(mesh.faces))
-    model.addSubModel(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int32))
+    model.beginModel(len(v), len(f))
+    model.addSubModel(v, f)
     model.endModel()
     return model
 
 
-def fcl_transform(T: NDArray[np.float64]) -> fcl.Transform:
-    """Return a python-fcl transform from a (4, 4) matrix."""
-    return fcl.Transform(np.asarray(T[:3, :3], float), np.asarray(T[:3, 3], float))
+def fcl_transform(T: ArrayLike) -> fcl.Transform:
+    """Return a python-fcl transform from a (4, 4) matrix: its rotation matrix and translation
+    as they are (fcl takes a matrix; no quaternion conversion of ours)."""
+    M = np.asarray(T, float)
+    return fcl.Transform(np.ascontiguousarray(M[:3, :3]), np.ascontiguousarray(M[:3, 3]))

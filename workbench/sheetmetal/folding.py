@@ -14,6 +14,7 @@ import fcl
 import numpy as np
 from numpy.typing import NDArray
 
+from workbench.collision.shapes import bvh_model, fcl_transform
 from workbench.errors import InputError
 from workbench.geometry.obb import OBB
 from workbench.sheetmetal.kfactor import flange_rise
@@ -213,11 +214,7 @@ def _prism_bvh(part: SheetMetalPart, f: int) -> fcl.BVHModel:
             [np.c_[j, (j + 1) % n, n + j], np.c_[(j + 1) % n, n + (j + 1) % n, n + j]]
         )
         tris = np.concatenate([caps, caps[:, ::-1] + n, walls])
-        m = fcl.BVHModel()
-        m.beginModel(len(V), len(tris))
-        m.addSubModel(V, tris)
-        m.endModel()
-        cache[f] = m
+        cache[f] = bvh_model(V, tris)
     return cache[f]
 
 
@@ -227,7 +224,7 @@ def _check_intersections(part: SheetMetalPart, state: FoldedState) -> None:
     objs = [
         fcl.CollisionObject(
             _prism_bvh(part, f),
-            fcl.Transform(state.T_part_flange[f, :3, :3], state.T_part_flange[f, :3, 3]),
+            fcl_transform(state.T_part_flange[f]),
         )
         for f in range(nf)
     ]
