@@ -15,7 +15,7 @@ from workbench import Workbench
 from workbench.errors import InputError, ProjectError, UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.motion import validate_trajectory
-from workbench.service.convert import DEG, MM, pose_to_matrix
+from workbench.project.units import DEG, MM, pose_to_matrix
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "bending_cell.json"

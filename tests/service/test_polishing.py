@@ -24,7 +24,7 @@ from workbench.polishing import (
     simulate_hybrid_force_control,
     spiral_toolpath,
 )
-from workbench.service.convert import pose_to_matrix
+from workbench.project.units import pose_to_matrix
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "polishing_cell.json"

@@ -6,14 +6,13 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 import viser
 import viser.uplot as uplot
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.motion import SampledMotion
+from workbench.service import SampledMotion
 
 DEG_PER_RAD = 180.0 / np.pi  # display only
 MM_PER_M = 1000.0  # display only
@@ -21,44 +20,6 @@ SPEEDS = ("0.25x", "0.5x", "1x", "2x", "4x")
 # uPlot reads x as a date unless told otherwise: every plot with a non-time x axis uses this.
 SECONDS: dict[str, uplot.Scale] = {"x": uplot.Scale(time=False)}
 JOINT_COLORS = ("#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42a5a5")
-
-
-@dataclass(frozen=True)
-class Motion:
-    """Deprecated: the timeline's former motion type; use `workbench.motion.SampledMotion`.
-
-    Kept while panels still build it; `Timeline.load` accepts both.
-    """
-
-    name: str
-    times: NDArray[np.float64]
-    positions: NDArray[np.float64]
-    velocities: NDArray[np.float64]
-    accelerations: NDArray[np.float64]
-    tcp_speed: NDArray[np.float64]
-    colliding: NDArray[np.bool_]
-    velocity_limits: NDArray[np.float64]
-    acceleration_limits: NDArray[np.float64]
-
-    @property
-    def duration(self) -> float:
-        """Return the motion's length [s]."""
-        return float(self.times[-1])
-
-    def at(self, t: float) -> NDArray[np.float64]:
-        """Return joints [rad] at time `t` [s], interpolated linearly between samples."""
-        return self.sampled().at(t)
-
-    def sampled(self) -> SampledMotion:
-        """Return the same samples as a `SampledMotion` (TCP speed kept by the timeline)."""
-        return SampledMotion(
-            self.times,
-            self.positions,
-            self.velocities,
-            self.accelerations,
-            colliding=self.colliding,
-            name=self.name,
-        )
 
 
 class Timeline:
@@ -93,33 +54,24 @@ class Timeline:
     # -- loading --------------------------------------------------------------------------
     def load(
         self,
-        motion: SampledMotion | Motion,
+        motion: SampledMotion,
         *,
-        velocity_limits: ArrayLike | None = None,
-        acceleration_limits: ArrayLike | None = None,
+        velocity_limits: ArrayLike,
+        acceleration_limits: ArrayLike,
         follow: Callable[[float], None] | None = None,
     ) -> None:
         """Show `motion` on the timeline and its plots, at t = 0, paused.
 
         velocity_limits, acceleration_limits (dof,) [rad/s, rad/s^2] scale the plots to
-        percent of the limit (a `Motion` brings its own). `follow(t)` is called whenever the
+        percent of the limit. `follow(t)` is called whenever the
         robot is posed at time `t` [s], for what moves with it (a carried part, a tool path
         marker); a later `load` replaces it.
         """
         self.pause()
-        if isinstance(motion, Motion):
-            speed = np.asarray(motion.tcp_speed, float)
-            vel_lim: ArrayLike = motion.velocity_limits
-            acc_lim: ArrayLike = motion.acceleration_limits
-            motion = motion.sampled()
-        else:
-            speed = motion.tcp_speed
-            if velocity_limits is None or acceleration_limits is None:
-                raise ValueError("load: give velocity_limits and acceleration_limits (dof,)")
-            vel_lim, acc_lim = velocity_limits, acceleration_limits
+        speed = motion.tcp_speed
         self.motion = motion
         self._tcp_speed = speed
-        self._limits = (np.asarray(vel_lim, float), np.asarray(acc_lim, float))
+        self._limits = (np.asarray(velocity_limits, float), np.asarray(acceleration_limits, float))
         self._follow = follow
         self.time.max = max(motion.duration, 0.01)
         self.time.value = 0.0  # type: ignore[misc]

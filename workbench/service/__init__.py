@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from workbench.motion import SampledMotion
 from workbench.service.cell import CellBody
 from workbench.service.motion_plan import EXPORT_FORMATS, MotionPlan
 from workbench.service.robot_setup import RobotSetup
@@ -13,5 +14,6 @@ __all__ = [
     "IKSolution",
     "MotionPlan",
     "RobotSetup",
+    "SampledMotion",
     "Workbench",
 ]

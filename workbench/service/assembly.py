@@ -31,7 +31,7 @@ from workbench.geometry import check_transform
 from workbench.motion import Program
 from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
 from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec, AssemblyTaskSI
-from workbench.service.convert import load_mesh_file
+from workbench.service.mesh_files import load_mesh_file
 from workbench.service.motion_plan import EXPORT_FORMATS
 from workbench.service.robot_setup import build_robot
 from workbench.service.section import SectionService

@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from workbench.collision import Solid
 from workbench.project.models import CellObject, CellObjectSI
-from workbench.service.convert import load_mesh_file
+from workbench.service.mesh_files import load_mesh_file
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,7 @@ from workbench.errors import ProjectError
 from workbench.kinematics.model import RobotModel
 from workbench.project.models import Robot, RobotSI, Tool, ToolSI
 from workbench.project.units import to_deg
-from workbench.service.convert import load_mesh_file
+from workbench.service.mesh_files import load_mesh_file
 
 
 @dataclass(frozen=True)

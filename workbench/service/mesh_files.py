@@ -1,5 +1,4 @@
-"""Mesh files of a project loaded in metres; the unit names below are re-exported from
-`workbench.project.units` (their home) for callers not yet switched."""
+"""Mesh files named by a project, loaded and scaled to metres."""
 
 from __future__ import annotations
 
@@ -9,9 +8,6 @@ import numpy as np
 import trimesh
 
 from workbench.errors import MeshError
-from workbench.project.units import DEG, MM, matrix_to_pose, pose_to_matrix
-
-__all__ = ["DEG", "MM", "load_mesh_file", "matrix_to_pose", "pose_to_matrix"]
 
 
 def load_mesh_file(path: str, base_dir: Path, scale: float, field: str) -> trimesh.Trimesh:
