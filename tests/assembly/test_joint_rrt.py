@@ -102,6 +102,7 @@ def test_the_pose_space_path_exists_but_the_robot_cannot_follow_it(scene):
     assert rep.first_report is not None and ("block" in rep.first_report.colliding_bodies())
 
 
+@pytest.mark.slow  # over 5 s here
 def test_the_joint_space_planner_solves_it_and_the_path_rechecks_free(scene):
     robot, obstacles, part, space = scene
     path = plan_carried_path(space, START, GOAL, Q_HOME, seed=0, max_time=60.0)

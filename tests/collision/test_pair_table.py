@@ -113,6 +113,7 @@ def test_bad_table_input() -> None:
         PairTable(np.array([0]), np.zeros(1), np.ones(1), np.ones(1), 6, lambda q: q[:, 0], tol=0.0)
 
 
+@pytest.mark.slow  # over 5 s here
 def test_tables_are_cached_on_disk(tmp_path_factory: pytest.TempPathFactory) -> None:
     """A new engine on the same cell loads the nodes a path check computed; bounds agree."""
     wb = Workbench.from_dict(PROJECT)

@@ -261,6 +261,7 @@ def _dense_times(traj, t0: float, t1: float, step: float, lever: np.ndarray) -> 
     return np.linspace(t0, t1, max(count, 2))
 
 
+@pytest.mark.slow  # over 5 s here
 def test_a_planned_trajectory_is_checked_on_its_real_motion(
     monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory
 ) -> None:

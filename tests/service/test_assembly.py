@@ -301,6 +301,7 @@ def _robot_hits_parts(wb: Workbench, robot: str, q: np.ndarray, held: str) -> bo
     return False
 
 
+@pytest.mark.slow  # over 5 s here
 @pytest.mark.parametrize("name", ["plate_b", "screw_2"])
 def test_joint_space_plan_of_a_carried_part_rechecks_free_densely(wb, name):
     a = wb.assembly

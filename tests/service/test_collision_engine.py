@@ -89,6 +89,7 @@ def test_bad_input_through_the_service(svc: CollisionService) -> None:
         CollisionService(svc.wb, spheres_per_link=0, cache_dir=svc.cache_dir).engine()
 
 
+@pytest.mark.slow  # over 5 s here
 def test_open_mesh_obstacle_from_the_project_warns_and_stays_conservative(tmp_path: Path) -> None:
     """A non-watertight obstacle (a box without its top) gets an unsigned field and a warning."""
     import trimesh

@@ -22,6 +22,7 @@ def cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return tmp_path_factory.mktemp("wbcache")
 
 
+@pytest.mark.slow  # over 5 s here
 def test_plan_uses_the_fast_mode_and_matches_the_dense_check(
     cache: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
