@@ -11,7 +11,7 @@ import pytest
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import rot_x
 from workbench.kinematics import MZ07_SEED_DH, MZ07_SEED_TOOL, DHRobot
-from workbench.kinematics.configurations import pick_solution
+from workbench.kinematics.configurations import branch_solutions, pick_solution
 from workbench.kinematics.dh_chain import dh_fk, joint_vector
 
 RNG_SEED = 0
@@ -235,3 +235,21 @@ def test_pick_solution_by_index_label_or_nearest():
         pick_solution(sols, 2)
     with pytest.raises(UnreachableError, match="available"):
         pick_solution(sols, "front/elbow B/flip")
+
+
+def test_branch_solutions_are_the_valid_branches_and_reach_the_pose():
+    robot = DHRobot.mz07()
+    rng = np.random.default_rng(7)
+    lo, hi = robot.limits[:, 0], robot.limits[:, 1]
+    for _ in range(50):
+        q = rng.uniform(lo, hi)
+        T = robot.fk(q)
+        rows, branches = branch_solutions(robot, T, q)
+        qb, valid = robot.ik_batch(T[None], q_near=q)
+        assert branches.tolist() == np.flatnonzero(valid[0]).tolist()
+        np.testing.assert_allclose(robot.fk(rows), np.broadcast_to(T, (len(rows), 4, 4)), atol=1e-9)
+        assert np.min(np.abs(rows - q).max(axis=1)) < 1e-7, "the original is among them"
+    far = np.eye(4)
+    far[:3, 3] = [10.0, 0.0, 0.0]
+    rows, branches = branch_solutions(robot, far)
+    assert rows.shape == (0, 6) and branches.shape == (0,)

@@ -9,8 +9,6 @@ body's frame (`relative_levers`).
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 import trimesh
 from numpy.typing import ArrayLike, NDArray
@@ -35,9 +33,8 @@ class RobotBodies:
     def __init__(self, exact: RobotCollisionChecker) -> None:
         self.exact = exact
         self.scene = exact.scene
-        robot: Any = exact.robot
-        self.robot = robot
-        self.dof: int = robot.dof
+        self.robot = exact.robot
+        self.dof: int = self.robot.dof
         self.T_world_base = exact.T_world_base
         self.names = list(exact.link_names) + (["tool"] if exact.has_tool else [])
         self.frame = np.array(list(range(self.dof + 1)) + ([self.dof] if exact.has_tool else []))
@@ -48,7 +45,7 @@ class RobotBodies:
         self.self_pairs: list[Pair] = [(a, b) for a, b in pairs if a in moving and b in moving]
         self.cell_pairs: list[Pair] = [(a, b) for a, b in pairs if b not in moving]
         self.obstacles = list(self.scene.static)
-        self.levers_of = JointLevers(robot)
+        self.levers_of = JointLevers(self.robot)
         self.checked = sorted({self.index[a] for a, _ in self.cell_pairs})
         self.lever = np.stack(
             [

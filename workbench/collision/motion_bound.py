@@ -11,28 +11,20 @@ Revolute joints only (a prismatic joint is refused).
 
 from __future__ import annotations
 
-from typing import Protocol
-
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.model import RobotModel
 
 FloatArray = NDArray[np.float64]
-
-
-class _Chain(Protocol):
-    dof: int
-    limits: FloatArray
-
-    def link_transforms(self, q: FloatArray) -> FloatArray: ...
 
 
 class JointLevers:
     """Axis points of a serial robot's joints and the lever bounds they give."""
 
-    def __init__(self, robot: _Chain) -> None:
+    def __init__(self, robot: RobotModel) -> None:
         n = robot.dof
         lim = np.asarray(robot.limits, float)
         q0 = np.clip(np.zeros(n), lim[:, 0], lim[:, 1])

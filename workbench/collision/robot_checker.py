@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 import trimesh
@@ -12,14 +11,7 @@ from numpy.typing import NDArray
 
 from workbench.collision.fcl_checker import CollisionScene, ContactReport
 from workbench.collision.shapes import Solid
-
-
-class ChainRobot(Protocol):
-    """What the checker needs of a robot: joint count and link frames."""
-
-    dof: int
-
-    def link_transforms(self, q: NDArray[np.float64]) -> NDArray[np.float64]: ...
+from workbench.kinematics.model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -44,7 +36,7 @@ class RobotCollisionChecker:
 
     def __init__(
         self,
-        robot: ChainRobot,
+        robot: RobotModel,
         link_meshes: list[trimesh.Trimesh],
         *,
         T_world_base: NDArray[np.float64] | None = None,

@@ -12,6 +12,27 @@ from workbench.kinematics.model import RobotModel
 FloatArray = NDArray[np.float64]
 
 
+def branch_solutions(
+    model: RobotModel, T_base_flange: ArrayLike, q_near: ArrayLike | None = None
+) -> tuple[FloatArray, NDArray[np.int64]]:
+    """Return (q (k, dof) [rad], branch (k,)): the IK solutions of one pose (4, 4) in limits.
+
+    Analytic models: one row per valid arm configuration, `branch` its index (0..7), wide
+    joints on the turn nearest q_near. Numeric models: the solver's rows, branch -1. An
+    unreachable pose gives k = 0 (no error).
+    """
+    T = np.asarray(T_base_flange, dtype=float)
+    if model.is_analytic:
+        qb, valid = model.ik_batch(T[None], q_near=q_near)
+        b = np.flatnonzero(valid[0])
+        return np.asarray(qb[0, b], float).reshape(-1, model.dof), b.astype(np.int64)
+    try:
+        rows = np.asarray(model.ik(T, q_near=q_near), float).reshape(-1, model.dof)
+    except UnreachableError:
+        rows = np.zeros((0, model.dof))
+    return rows, np.full(len(rows), -1, dtype=np.int64)
+
+
 def labelled_solutions(
     model: RobotModel, T_base_flange: ArrayLike, q_near: ArrayLike
 ) -> list[tuple[str, FloatArray]]:
@@ -22,14 +43,12 @@ def labelled_solutions(
     stable as the arm moves. Numeric models: 'solution k'. Raises UnreachableError when
     there is none.
     """
-    T = np.asarray(T_base_flange, dtype=float)
     qn = np.asarray(q_near, dtype=float)
-    if model.is_analytic:
-        qb, valid = model.ik_batch(T[None], q_near=qn)
-        found = [(branch_name(b), np.array(qb[0, b])) for b in range(qb.shape[1]) if valid[0, b]]
-    else:
-        rows = np.asarray(model.ik(T, q_near=qn), float).reshape(-1, model.dof)
-        found = [(f"solution {k + 1}", row) for k, row in enumerate(rows)]
+    rows, branches = branch_solutions(model, T_base_flange, qn)
+    found = [
+        (branch_name(int(b)) if b >= 0 else f"solution {k + 1}", np.array(q))
+        for k, (q, b) in enumerate(zip(rows, branches, strict=True))
+    ]
     if not found:
         raise UnreachableError(
             "the TCP pose is unreachable: no inverse-kinematics solution within the joint limits"

@@ -8,21 +8,17 @@ part's frames follow the TCP: T_world_part = T_world_tcp · T_part_tcp⁻¹.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.model import RobotModel
 from workbench.sheetmetal.die import Die, DiePlacement
 from workbench.sheetmetal.grasp import Grasp, T_flange_grasp, T_part_grasp
 from workbench.sheetmetal.obbtree import FramesReport, OBBTree
 from workbench.sheetmetal.obstacles import Obstacles, confirm_exact
 from workbench.sheetmetal.part import SheetMetalPart
-
-
-class _Forward(Protocol):
-    def fk(self, q: NDArray[np.float64]) -> NDArray[np.float64]: ...
 
 
 @dataclass(frozen=True, eq=False)
@@ -53,7 +49,7 @@ def transfer_poses(
 
 
 def world_tcp(
-    robot: _Forward,
+    robot: RobotModel,
     T_world_base: NDArray[np.float64],
     T_flange_tcp: NDArray[np.float64],
     q: NDArray[np.float64],

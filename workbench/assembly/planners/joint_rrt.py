@@ -42,6 +42,7 @@ from workbench.errors import CollisionError, InputError, PlanningError, Unreacha
 from workbench.geometry import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import RobotModel
+from workbench.kinematics.configurations import branch_solutions
 
 FloatArray = NDArray[np.float64]
 CARRIED_PART = "carried part"  # the held part's name among the bodies checked for contact
@@ -398,16 +399,7 @@ def carry_ends(
     model = space.model
     sols: dict[str, tuple[FloatArray, NDArray[np.int64]]] = {}
     for name, T in ends.items():
-        if model.is_analytic:
-            qb, ok = model.ik_batch(T[None], q_near=ref)
-            b = np.flatnonzero(ok[0])
-            rows, branches = qb[0, b], b
-        else:
-            try:
-                rows = np.asarray(model.ik(T, q_near=ref), dtype=np.float64).reshape(-1, space.dof)
-            except UnreachableError:
-                rows = np.zeros((0, space.dof))
-            branches = np.full(len(rows), -1)
+        rows, branches = branch_solutions(model, T, ref)
         if name == "goal" and q_start is not None:
             rows = np.array([_near_turn(r, np.asarray(q_start, float), space.limits) for r in rows])
         keep = [i for i, r in enumerate(rows) if space.in_limits(r)]
