@@ -14,6 +14,7 @@ if TYPE_CHECKING:
     from workbench.polishing.chart import SurfaceChart, build_chart
     from workbench.polishing.choices import MESH_UNITS, PATTERNS, MeshUnits, Pattern
     from workbench.polishing.coverage import Coverage, path_coverage
+    from workbench.polishing.example_workpiece import make_panel
     from workbench.polishing.fitted_workpiece import FittedWorkpiece, fit_workpiece
     from workbench.polishing.force_control import (
         ForceControlResult,
@@ -41,6 +42,7 @@ _WHERE = {
     "chart": ("SurfaceChart", "build_chart"),
     "choices": ("MESH_UNITS", "PATTERNS", "MeshUnits", "Pattern"),
     "coverage": ("Coverage", "path_coverage"),
+    "example_workpiece": ("make_panel",),
     "fitted_workpiece": ("FittedWorkpiece", "fit_workpiece"),
     "force_control": ("ForceControlResult", "HybridForceParams", "simulate_hybrid_force_control"),
     "process_motion": ("ProcessMotion", "plan_process_motion"),
@@ -55,17 +57,17 @@ _WHERE = {
 _MODULE = {name: module for module, names in _WHERE.items() for name in names}
 
 __all__ = [
+    "LEAD_IN",
+    "LEAD_OUT",
+    "MESH_UNITS",
+    "PATTERNS",
+    "PROCESS",
     "BezierSurface",
     "Coverage",
     "FittedWorkpiece",
     "ForceControlResult",
     "HybridForceParams",
-    "LEAD_IN",
-    "LEAD_OUT",
-    "MESH_UNITS",
     "MeshUnits",
-    "PATTERNS",
-    "PROCESS",
     "Pattern",
     "PolishingPath",
     "PolishingSimulation",
@@ -79,6 +81,7 @@ __all__ = [
     "force_offset",
     "inspect_mesh",
     "load_workpiece",
+    "make_panel",
     "path_coverage",
     "plan_process_motion",
     "plan_process_path",

@@ -2,17 +2,47 @@
 
 from __future__ import annotations
 
-from workbench.sheetmetal.check_cost import CheckCost, check_cost
-from workbench.sheetmetal.die import Die, DiePlacement, bend_on_die, die_part_pose
+from workbench.sheetmetal.check_cost import CheckCost
+from workbench.sheetmetal.die import (
+    Die,
+    DiePlacement,
+    bend_on_die,
+    die_part_pose,
+    die_placements,
+    die_targets,
+)
 from workbench.sheetmetal.folding import FoldedState
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp, checked_grasp, grasp_point
+from workbench.sheetmetal.grasp import (
+    Grasp,
+    T_flange_grasp,
+    T_part_grasp,
+    check_flange,
+    checked_grasp,
+    grasp_point,
+)
 from workbench.sheetmetal.kfactor import bend_allowance, flange_extension, flange_rise, k_factor
 from workbench.sheetmetal.obbtree import CollisionReport, FramesReport, OBBTree
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.part import Bend, Flange, SheetMetalPart
-from workbench.sheetmetal.plan import BendingPlan, FirstCollision, first_collision, playback
+from workbench.sheetmetal.plan import (
+    BendingPlan,
+    FirstCollision,
+    first_collision,
+    playback,
+    robot_frames,
+)
 from workbench.sheetmetal.sequence import check_sequence, sequence_problem
-from workbench.sheetmetal.transfer import Transfer, carried_poses, transfer_poses
+from workbench.sheetmetal.transfer import (
+    Transfer,
+    base_flange_poses,
+    carried_poses,
+    check_part,
+    transfer_poses,
+    world_tcp,
+)
+
+# `check_cost` (the function) stays in its module of the same name: a package attribute of
+# that name would hide the module from `import workbench.sheetmetal.check_cost as m`.
 
 __all__ = [
     "Bend",
@@ -30,21 +60,28 @@ __all__ = [
     "Obstacles",
     "SheetMetalPart",
     "T_flange_grasp",
+    "T_part_grasp",
     "Transfer",
+    "base_flange_poses",
     "bend_allowance",
     "bend_on_die",
     "carried_poses",
     "cell_obstacles",
-    "check_cost",
+    "check_flange",
+    "check_part",
     "check_sequence",
     "checked_grasp",
     "die_part_pose",
+    "die_placements",
+    "die_targets",
     "first_collision",
     "flange_extension",
     "flange_rise",
     "grasp_point",
     "k_factor",
     "playback",
+    "robot_frames",
     "sequence_problem",
     "transfer_poses",
+    "world_tcp",
 ]
