@@ -140,3 +140,26 @@ def test_bad_program_inputs(tmp_path):
     (tmp_path / "bad.json").write_text("{}")
     with pytest.raises(InputError, match="format"):
         load_json(tmp_path / "bad.json")
+
+
+def test_export_dispatches_every_format_and_names_a_bad_one(tmp_path):
+    from workbench.motion.programs import EXPORT_FORMATS, export
+
+    program = _program()
+    times = np.array([0.0, 0.5])
+    joints = np.radians([[0, -30, 60, 0, 45, 0], [10, -20, 50, 5, 40, -5]])
+    assert export("rapid", program, times, joints) == to_rapid(program)
+    assert export("krl", program, times, joints) == str(to_krl(program))
+    assert export("ls", program, times, joints) == to_ls(program)
+    assert export("urscript", program, times, joints) == to_urscript(program)
+    (tmp_path / "s.csv").write_text(export("csv", program, times, joints))
+    (tmp_path / "s.json").write_text(export("json", program, times, joints))
+    t, q = load_csv(tmp_path / "s.csv")
+    tj, qj = load_json(tmp_path / "s.json")
+    np.testing.assert_array_equal(tj, t)
+    np.testing.assert_array_equal(qj, q)
+    np.testing.assert_allclose(t, times, atol=1e-9)
+    np.testing.assert_allclose(q, joints, atol=1e-6)
+    assert set(EXPORT_FORMATS) == {"rapid", "krl", "ls", "urscript", "csv", "json"}
+    with pytest.raises(InputError, match=r"format: 'gcode' is not one of rapid, krl"):
+        export("gcode", program, times, joints)

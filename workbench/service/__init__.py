@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from workbench.motion import SampledMotion
+from workbench.motion.programs import EXPORT_FORMATS
 from workbench.service.cell import CellBody
-from workbench.service.motion_plan import EXPORT_FORMATS, MotionPlan
+from workbench.service.motion_plan import MotionPlan
 from workbench.service.robot_setup import RobotSetup
 from workbench.service.workbench import IKSolution, Workbench
 

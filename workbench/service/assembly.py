@@ -29,10 +29,9 @@ from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, ProjectError, WorkbenchError
 from workbench.geometry import check_transform
 from workbench.motion import Program
-from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
+from workbench.motion.programs import EXPORT_FORMATS, export
 from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec, AssemblyTaskSI
 from workbench.service.mesh_files import load_mesh_file
-from workbench.service.motion_plan import EXPORT_FORMATS
 from workbench.service.robot_setup import build_robot
 from workbench.service.section import SectionService
 
@@ -281,10 +280,7 @@ class AssemblyService(SectionService[AssemblySpec]):
         program = self.robot_program(robot, plan)
         plan = plan or self.last_plan
         assert plan is not None
-        if fmt in ("csv", "json"):
-            return (csv_text if fmt == "csv" else json_text)(plan.times, plan.joints[robot])
-        post = {"rapid": to_rapid, "krl": to_krl, "ls": to_ls, "urscript": to_urscript}[fmt]
-        return str(post(program))
+        return export(fmt, program, plan.times, plan.joints[robot])
 
     def export_key_points(self, fmt: str, plan: PartPlan | None = None) -> str:
         """Return the key points of a part plan (default: the last one) as CSV or JSON text (mm, deg)."""

@@ -22,19 +22,11 @@ from workbench.motion import (
     time_program,
     validate_trajectory,
 )
-from workbench.motion.programs import csv_text, json_text, to_krl, to_ls, to_rapid, to_urscript
+from workbench.motion.programs import export
 from workbench.project.models import ProgramSI
 from workbench.project.units import to_deg
 from workbench.service.robot_setup import RobotSetup
 
-EXPORT_FORMATS = {
-    "rapid": ".mod",
-    "krl": ".src",
-    "ls": ".ls",
-    "urscript": ".script",
-    "csv": ".csv",
-    "json": ".json",
-}
 Progress = Callable[[float, str], None]
 
 
@@ -237,11 +229,4 @@ def plan_from_trajectory(
 
 def export_text(plan: MotionPlan, fmt: str) -> str:
     """Return the plan exported as `fmt` (rapid, krl, ls, urscript, csv or json)."""
-    if fmt not in EXPORT_FORMATS:
-        raise InputError(f"format: {fmt!r} is not one of {', '.join(EXPORT_FORMATS)}")
-    if fmt == "csv":
-        return csv_text(plan.times, plan.positions)
-    if fmt == "json":
-        return json_text(plan.times, plan.positions)
-    post = {"rapid": to_rapid, "krl": to_krl, "ls": to_ls, "urscript": to_urscript}[fmt]
-    return str(post(plan.program))
+    return export(fmt, plan.program, plan.times, plan.positions)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from workbench.motion.programs.export import EXPORT_FORMATS, export
 from workbench.motion.programs.fanuc import to_ls
 from workbench.motion.programs.krl import to_krl
 from workbench.motion.programs.rapid import to_rapid
@@ -16,6 +17,8 @@ from workbench.motion.programs.samples import (
 from workbench.motion.programs.urscript import to_urscript
 
 __all__ = [
+    "EXPORT_FORMATS",
+    "export",
     "csv_text",
     "json_text",
     "load_csv",
