@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from workbench.project.assembly import AssemblySI, AssemblySpec, AssemblyTaskSI
+from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
+from workbench.project.collision import CollisionSpec
 from workbench.project.io import (
     atomic_write_text,
     json_schema,
@@ -28,18 +31,29 @@ from workbench.project.models import (
     Tool,
     ToolSI,
 )
+from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.units import DEG, MM, matrix_to_pose, pose_to_matrix, to_deg, to_mm
 
 __all__ = [
     "DEG",
     "MM",
     "SCHEMA_VERSION",
+    "AssemblySI",
+    "AssemblySpec",
+    "AssemblyTaskSI",
+    "BendingSI",
+    "BendingSpec",
     "Cell",
     "CellObject",
     "CellObjectSI",
+    "CollisionSpec",
     "DHRow",
     "MoveSI",
     "MoveSpec",
+    "PartSI",
+    "PartSpec",
+    "PolishingSI",
+    "PolishingSpec",
     "Pose",
     "ProgramSI",
     "ProgramSpec",

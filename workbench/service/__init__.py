@@ -4,17 +4,27 @@ from __future__ import annotations
 
 from workbench.motion import SampledMotion
 from workbench.motion.programs import EXPORT_FORMATS
+from workbench.service.assembly import AssemblyService
+from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody
+from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan
+from workbench.service.polishing import PolishingService
 from workbench.service.robot_setup import RobotSetup
+from workbench.service.section import SectionService
 from workbench.service.workbench import IKSolution, Workbench
 
 __all__ = [
     "EXPORT_FORMATS",
+    "AssemblyService",
+    "BendingService",
     "CellBody",
+    "CollisionService",
     "IKSolution",
     "MotionPlan",
+    "PolishingService",
     "RobotSetup",
     "SampledMotion",
+    "SectionService",
     "Workbench",
 ]
