@@ -188,3 +188,31 @@ def test_the_readme_project_example_is_a_valid_project() -> None:
     wb = Workbench.from_dict(json.loads(blocks[0]))
     assert wb.project.name == "MZ07 work cell"
     assert wb.project.program is not None and len(wb.project.program.moves) == 3
+
+
+def test_the_readme_links_stay_in_the_repository() -> None:
+    text = (ROOT / "README.md").read_text()
+    targets = re.findall(r"\]\(([^)]+)\)", text)
+    local = [t for t in targets if not t.startswith("https://")]
+    assert local and all((ROOT / t).exists() for t in local), local
+    assert not [t for t in local if ".." in t]
+    for name in sorted(CHECKS):
+        assert f"(examples/{name}.py)" in text, f"the README does not link examples/{name}.py"
+
+
+def test_the_architecture_page_names_every_package_and_module() -> None:
+    doc = (ROOT / "docs" / "architecture.md").read_text()
+    package = ROOT / "workbench"
+    missing = [
+        str(p.relative_to(package))
+        for p in sorted(package.rglob("*.py"))
+        if p.name != "__init__.py" and p.name not in doc
+    ]
+    missing += [
+        f"{d.relative_to(package)}/"
+        for d in sorted(package.rglob("*"))
+        if (d / "__init__.py").exists() and f"{d.name}/" not in doc
+    ]
+    assert missing == [], "docs/architecture.md does not mention these; add a line each"
+    targets = re.findall(r"\]\(([^)]+)\)", doc)
+    assert all((ROOT / "docs" / t).exists() for t in targets), targets
