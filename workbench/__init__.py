@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from workbench.errors import WorkbenchError
+
+if TYPE_CHECKING:  # type checkers see the class; at run time it is imported on first use
+    from workbench.service import Workbench
 
 __all__ = ["Workbench", "WorkbenchError"]
 __version__ = "0.1.0"
