@@ -46,12 +46,13 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
     wb = Workbench.open(PROJECT)
     print(f"planning {wb.project.name!r}:")
     plan = wb.plan_motion(progress=_Progress())
+    name = plan.program.name
     print(plan.summary())
     print(f"cycle time {plan.cycle_time:.3f} s; {'ready to run' if plan.ok else 'NOT ready'}")
 
-    written = []
+    written: list[Path] = []
     for fmt, ext in FORMATS.items():
-        path = out / f"{wb.project.program.name}{ext}"
+        path = out / f"{name}{ext}"
         path.write_text(wb.export_program(fmt))
         written.append(path)
         print(f"wrote {fmt:8s} {path} ({len(path.read_text().splitlines())} lines)")

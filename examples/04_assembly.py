@@ -44,13 +44,13 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
     plan = assembly.plan_sequence(progress=_Progress())
     print(plan.summary())
     for task in plan.tasks:
-        path = task.part_plan.path
+        route = task.part_plan.path
         print(
             f"  {task.part:8s} by {task.robot:8s} picked at {task.t_pick:6.2f} s,"
-            f" placed at {task.t_place:6.2f} s ({path.planner}, {len(path.poses)} key points)"
+            f" placed at {task.t_place:6.2f} s ({route.planner}, {len(route.poses)} key points)"
         )
 
-    written = []
+    written: list[Path] = []
     for robot in assembly.arms:
         path = out / f"assembly_{robot}.mod"
         path.write_text(assembly.export_program(robot, "rapid", plan))
