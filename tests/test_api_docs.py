@@ -329,20 +329,7 @@ def test_every_name_in_all_is_importable(package: str) -> None:
     assert set(names) <= set(star)
 
 
-# Known and left to the module's owner: motion/programs/export.py holds the function
-# `export`, which the package re-exports; renaming the module (not the function) fixes it.
-HIDING = {"motion.programs": "motion.programs.export (function) hides its module export.py"}
-
-
-@pytest.mark.parametrize(
-    "package",
-    [
-        pytest.param(p, marks=pytest.mark.xfail(strict=True, reason=HIDING[p]))
-        if p in HIDING
-        else p
-        for p in PACKAGES
-    ],
-)
+@pytest.mark.parametrize("package", PACKAGES)
 def test_no_public_name_hides_a_module(package: str) -> None:
     # `from .check_cost import check_cost` in an __init__ would make
     # `import workbench.sheetmetal.check_cost as m` return the function, not the module.

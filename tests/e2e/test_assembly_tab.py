@@ -67,7 +67,7 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     t = round(0.5 * (plan.tasks[0].t_pick + plan.tasks[0].t_place), 2)
     set_slider(page, "Time [s]", t)
     wait_for(lambda: abs(app.timeline.time.value - t) < 1e-6, what="the timeline at the typed time")
-    i = int(np.searchsorted(plan.times, t))
+    i = int(np.searchsorted(plan.times, t, side="right")) - 1  # the sample at or before t
     expected = plan.part_poses["plate_a"][i][:3, 3]
     wait_for(
         lambda: np.allclose(app.assembly.part_nodes["plate_a"].position, expected, atol=1e-6),

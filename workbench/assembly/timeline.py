@@ -115,11 +115,13 @@ class AssemblyPlan:
         )
 
     def index_at(self, t: float) -> int:
-        """Return the index of the sample at or just after time t [s] (clipped to the samples)."""
-        return int(np.clip(np.searchsorted(self.times, t), 0, len(self.times) - 1))
+        """Return the index of the last sample at or before time t [s] (clamped to the samples),
+        as `SampledMotion.index_at` does."""
+        k = np.searchsorted(self.times, float(t), side="right") - 1
+        return int(np.clip(k, 0, len(self.times) - 1))
 
     def part_pose(self, name: str, t: float) -> FloatArray:
-        """Return part `name`'s world pose (4, 4) at time t [s] (nearest sample)."""
+        """Return part `name`'s world pose (4, 4) at time t [s] (the sample at or before t)."""
         return self.part_poses[name][self.index_at(t)]
 
     def joints_at(self, robot: str, t: float) -> FloatArray:

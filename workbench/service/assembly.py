@@ -273,7 +273,8 @@ class AssemblyService(SectionService[AssemblySpec]):
     def export_program(self, robot: str, fmt: str, plan: AssemblyPlan | None = None) -> str:
         """Return robot `robot`'s motion of the last sequence as rapid, krl, ls, urscript, csv or json.
 
-        csv and json hold the timed joint samples [s, deg]; the others a robot program.
+        csv and json hold the timed joint samples (t [s], joints [rad] and [deg]); the others
+        a robot program.
         """
         if fmt not in EXPORT_FORMATS:
             raise InputError(f"format: {fmt!r} is not one of {', '.join(EXPORT_FORMATS)}")

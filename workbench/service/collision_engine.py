@@ -15,6 +15,7 @@ from workbench.collision import CollisionPolicy, default_cache_dir, plan_check
 from workbench.collision.engine import MODES, CollisionEngine, ConfigCheck, EnginePathReport
 from workbench.collision.plan_check import POLICY_MODES, RESOLUTION, SPHERES_PER_LINK
 from workbench.errors import InputError
+from workbench.kinematics.dh_chain import joint_array, joint_vector
 from workbench.project.collision import CollisionSpec
 
 if TYPE_CHECKING:
@@ -106,11 +107,7 @@ class CollisionService:
 
     def check(self, q: ArrayLike | None = None, *, mode: str = "spheres") -> ConfigCheck:
         """Return the check of joints q (dof,) [rad] (default: the current joints)."""
-        qq = self.wb.joints if q is None else np.asarray(q, float)
-        if qq.shape != (self.wb.robot.dof,) or not np.all(np.isfinite(qq)):
-            raise InputError(
-                f"q: expected {self.wb.robot.dof} finite joint values [rad], got shape {qq.shape}"
-            )
+        qq = self.wb.joints if q is None else joint_vector(q, self.wb.robot.dof, "q")
         return self.engine(mode).check(qq)
 
     def check_path(
@@ -122,20 +119,18 @@ class CollisionService:
         mode: str = "spheres",
     ) -> EnginePathReport:
         """Return the path report of samples qs (N, dof) [rad] at `times` (N,) [s], between samples too."""
-        q = np.asarray(qs, float)
-        if q.ndim != 2 or q.shape[1] != self.wb.robot.dof or len(q) == 0:
+        q = joint_array(qs, self.wb.robot.dof, "qs")
+        if q.ndim != 2 or len(q) == 0:
             raise InputError(
                 f"qs: expected shape (N, {self.wb.robot.dof}) with N >= 1 [rad], got {q.shape}"
             )
-        if not np.all(np.isfinite(q)):
-            raise InputError("qs: joint values must be finite")
         return self.engine(mode).check_path(q, times, deviation=deviation)
 
     def spheres(
         self, q: ArrayLike | None = None
     ) -> tuple[NDArray[np.float64], NDArray[np.float64], list[str]]:
         """Return world sphere centres (S, 3) [m], radii (S,) [m] and link names at q [rad]."""
-        qq = self.wb.joints if q is None else np.asarray(q, float)
+        qq = self.wb.joints if q is None else joint_vector(q, self.wb.robot.dof, "q")
         return self.engine("spheres").spheres(qq)
 
     def sdf_slice(

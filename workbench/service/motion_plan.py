@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from workbench.collision import CollisionPolicy, PathReport, RobotCollisionChecker, plan_check
+from workbench.collision import CollisionPolicy, RobotCollisionChecker, plan_check
 from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import invert_transform
@@ -47,7 +47,7 @@ class MotionPlan:
     trajectory: Trajectory
     samples: SampledMotion = field(repr=False)
     limits_report: ValidationReport
-    collision_report: PathReport
+    collision_report: EnginePathReport
 
     @property
     def times(self) -> NDArray[np.float64]:
@@ -97,16 +97,7 @@ class MotionPlan:
             if self.limits_report.ok
             else f"{len(self.limits_report.violations)} limit violation(s)"
         )
-        rep_ = self.collision_report
-        if isinstance(rep_, EnginePathReport):
-            lines.append(rep_.message)
-        elif rep_.collision_free:
-            lines.append("collision-free at every sample")
-        else:
-            first = self.collision_report.first_index
-            rep = self.collision_report.first_report
-            pairs = ", ".join(f"{a}–{b}" for a, b in rep.colliding) if rep else ""
-            lines.append(f"first collision at t = {self.times[first]:.3f} s ({pairs})")
+        lines.append(self.collision_report.message)
         return "; ".join(lines)
 
 

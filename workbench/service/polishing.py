@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import trimesh
@@ -287,12 +287,3 @@ class PolishingService(SectionService[PolishingSpec]):
         self.last_simulation = sim
         report(1.0, "done")
         return sim
-
-    def summary(self) -> dict[str, Any]:
-        """Return the workpiece report and the last results as plain values (for display)."""
-        out: dict[str, Any] = {"report": self.report}
-        if self.last_path is not None:
-            out["path"] = self.last_path.summary()
-        if self.last_simulation is not None:
-            out["simulation"] = self.last_simulation.summary()
-        return out

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from workbench.motion.programs.export import EXPORT_FORMATS, export
 from workbench.motion.programs.fanuc import to_ls
+from workbench.motion.programs.formats import EXPORT_FORMATS, export
 from workbench.motion.programs.krl import to_krl
 from workbench.motion.programs.rapid import to_rapid
 from workbench.motion.programs.samples import (

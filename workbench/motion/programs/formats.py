@@ -1,4 +1,4 @@
-"""`export`: one planned motion as the text of a robot program or of its joint samples."""
+"""Export formats, and `export`: one planned motion as the text of a robot program or of its joint samples."""
 
 from __future__ import annotations
 
