@@ -136,6 +136,23 @@ def test_flip_through_gimbal_lock_and_unreachable_name_the_point():
         plan_program(Short(), Program("far", (Move.linear(far, name="far"),)), q0, V)
 
 
+def test_a_jump_from_the_moves_start_to_its_first_point_is_refused():
+    """The first sample of a linear move is checked against the joints it starts from."""
+
+    class OneBranch(Gantry):
+        def ik(self, T, *, q_near=None):
+            return super().ik(T)[:1]  # branch a only
+
+    # The start in branch b (yaw, roll + pi, pitch mirrored): every sample of the line is
+    # reached smoothly in branch a, but the first one only by flipping the wrist.
+    q0 = np.array([0.0, 0.0, 0.5, 0.1 - np.pi, np.pi - 0.2, 0.3 - np.pi])
+    target = _pose([0.1, 0.0, 0.5], np.degrees([0.3, 0.2, 0.1]))
+    prog = Program("lin", (Move.linear(target, speed=0.2, name="L1"),))
+    with pytest.raises(PlanningError, match=r"move 0 \(L1\): point 0 .*joint jump"):
+        plan_program(OneBranch(), prog, q0, V, step=0.01)
+    plan_program(Gantry(), prog, q0, V, step=0.01)  # with both branches it stays in b
+
+
 def test_mz07_linear_and_blended_moves():
     kin = pytest.importorskip("workbench.kinematics")
     robot = kin.DHRobot.mz07()

@@ -1,8 +1,10 @@
 """Joint and linear moves turned into joint waypoints through IK, with blends, then timed.
 
-A linear move is sampled along its straight line (position) and slerp (orientation); the
-samples are solved in one arm configuration (`kinematics.follow_path`); a jump larger than `max_joint_step` or an unreachable sample is an error
-naming the move and the sample. A zone > 0 between two linear moves replaces the corner by
+A linear move is sampled along its straight line (position) and slerp (orientation); each
+sample's IK solution is the one nearest the previous sample (`kinematics.follow_path`,
+``track="nearest"``), the first one nearest the joints the move starts from; a jump larger
+than `max_joint_step` (from the start, or between samples) or an unreachable sample is an
+error naming the move and the sample. A zone > 0 between two linear moves replaces the corner by
 a quadratic Bezier curve that leaves the first line `zone` metres before the corner and
 joins the second line `zone` metres after it (shortened to half of either line).
 """
@@ -70,9 +72,11 @@ def follow_poses(
     max_joint_step: float,
     label: str,
 ) -> NDArray[np.float64]:
-    """Return joints (k, 6) [rad] for poses (k, 4, 4) from q_prev, in one arm configuration.
+    """Return joints (k, 6) [rad] for poses (k, 4, 4), each the IK solution nearest the last
+    (the first nearest q_prev, the joints the move starts from).
 
-    Raises PlanningError naming the move and the point that is unreachable or needs a jump.
+    Raises PlanningError naming the move and the point that is unreachable or needs a joint
+    jump over `max_joint_step` [rad], from q_prev to the first point too.
     """
     names = [f"point {k}" for k in range(len(T_base_flange))]
     try:
@@ -87,6 +91,15 @@ def follow_poses(
         )
     except UnreachableError as exc:
         raise PlanningError(str(exc)) from exc
+    # follow_path bounds the steps between the poses; the step onto the first is the move's.
+    jump = float(np.abs(path.q[0] - q_prev).max())
+    if jump > max_joint_step:
+        raise PlanningError(
+            f"{label}: point 0 at {T_base_flange[0, :3, 3].round(4).tolist()} m needs a joint"
+            f" jump of {jump:.3f} rad from the move's start (more than max_joint_step"
+            f" {max_joint_step} rad): a configuration flip or singularity; move the path or"
+            " split it with a joint move"
+        )
     return path.q
 
 
