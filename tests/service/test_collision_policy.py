@@ -114,3 +114,31 @@ def test_a_bad_policy_in_the_project_names_the_field() -> None:
         Workbench.from_dict(data, base_dir=PROJECTS)
     with pytest.raises(InputError, match="mode"):
         CollisionPolicy(mode="voxels")  # type: ignore[arg-type]
+
+
+def test_an_open_mesh_falls_back_even_when_the_panel_built_the_spheres_engine(
+    tmp_path: Path,
+) -> None:
+    """The plan's fallback does not depend on whether the Robot tab built an engine first."""
+    import numpy as np
+    import trimesh
+
+    from workbench.collision import shared_engine
+
+    box = trimesh.creation.box((0.2, 0.2, 0.2))
+    top = np.flatnonzero(box.face_normals[:, 2] > 0.5)
+    trimesh.Trimesh(box.vertices * 1000, np.delete(box.faces, top, axis=0)).export(
+        tmp_path / "tray.stl"
+    )
+    data = json.loads((PROJECTS / "mz07_cell.json").read_text())
+    data["cell"]["objects"].append(
+        {"name": "tray", "shape": "mesh", "path": "tray.stl", "pose": {"xyz": [-900, 900, 100]}}
+    )
+    wb = Workbench.from_dict(data, base_dir=tmp_path)
+    policy = wb.collision_policy
+    eng, why = shared_engine(wb.checker, policy)
+    assert eng is None and why is not None and "'tray' is not watertight" in why
+    # What the collision panel's build leaves in the checker's cache (a stand-in: the check
+    # must not reach it).
+    wb.checker.engines[policy.key()] = object()
+    assert shared_engine(wb.checker, policy) == (None, why)

@@ -128,7 +128,7 @@ def shared_engine(
     None for the exact mode (the policy asks for the dense check), for an engine that cannot
     be built (e.g. a joint that is not revolute), and in the spheres mode for a cell mesh that
     is not watertight (its field is unsigned: a link wholly inside an obstacle would not be
-    seen; no engine is built for it).
+    seen; no engine is built for it, and one the collision panel built is not used).
     """
     if policy.mode == "exact":
         return None, "the project's collision mode is exact"
@@ -136,7 +136,7 @@ def shared_engine(
         open_meshes = [
             n for n, e in checker.scene.static.items() if e.solid.kind == "mesh" and not e.closed
         ]
-        if open_meshes and policy.key() not in checker.engines:
+        if open_meshes:  # whether or not an engine was built (the GUI's panel builds one)
             return None, (
                 f"obstacle {open_meshes[0]!r} is not watertight, so the cell's distance field"
                 " would have no inside"
