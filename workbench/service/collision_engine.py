@@ -11,9 +11,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.collision import CollisionPolicy, default_cache_dir, plan_check
-from workbench.collision.engine import MODES, CollisionEngine, ConfigCheck, EnginePathReport
-from workbench.collision.plan_check import POLICY_MODES, RESOLUTION, SPHERES_PER_LINK
+from workbench.collision import CollisionPolicy, plan_check
+from workbench.collision.engine import CollisionEngine, ConfigCheck, EnginePathReport
+from workbench.collision.plan_check import POLICY_MODES
 from workbench.errors import InputError
 from workbench.kinematics.dh_chain import joint_array, joint_vector
 from workbench.project.collision import CollisionSpec
@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
 
 Progress = Callable[[float, str], None]
-__all__ = ["RESOLUTION", "SPHERES_PER_LINK", "CollisionService", "default_cache_dir"]
+__all__ = ["CollisionService"]
 
 
 class CollisionService:
@@ -47,9 +47,10 @@ class CollisionService:
         self._cache_dir = Path(cache_dir) if cache_dir is not None else None
 
     def policy(self, mode: str = "spheres") -> CollisionPolicy:
-        """Return the project's collision policy with `mode` and this service's parameters."""
-        if mode not in MODES:
-            raise InputError(f"mode: {mode!r} is not one of {', '.join(MODES)}")
+        """Return the project's collision policy with `mode` and this service's parameters.
+
+        An unknown mode raises InputError naming the modes (`CollisionPolicy` checks it).
+        """
         base = self.wb.collision_policy
         return replace(
             base,
