@@ -31,7 +31,6 @@ class Timeline:
         self.server = server
         self.show = show
         self.motion: SampledMotion | None = None
-        self._tcp_speed = np.zeros(0)
         self._limits = (np.ones(0), np.ones(0))
         self._follow: Callable[[float], None] | None = None
         self._plot_folder: viser.GuiFolderHandle | None = None
@@ -68,9 +67,7 @@ class Timeline:
         marker); a later `load` replaces it.
         """
         self.pause()
-        speed = motion.tcp_speed
         self.motion = motion
-        self._tcp_speed = speed
         self._limits = (np.asarray(velocity_limits, float), np.asarray(acceleration_limits, float))
         self._follow = follow
         self.time.max = max(motion.duration, 0.01)
@@ -132,7 +129,7 @@ class Timeline:
                         scales=SECONDS,
                     )
                 )
-            speed = self._tcp_speed * MM_PER_M
+            speed = m.tcp_speed * MM_PER_M
             top = float(max(speed.max(), 1.0)) * 1.05
             plots.append(
                 self.server.gui.add_uplot(
