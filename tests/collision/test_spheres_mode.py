@@ -186,3 +186,19 @@ def test_bad_input(setup) -> None:
         CollisionEngine(checker, "spheres", margin=-1.0)
     with pytest.raises(InputError, match="spheres_per_link"):
         CollisionEngine(checker, "spheres", spheres_per_link=0)
+
+
+def test_an_empty_cell_clears_every_configuration(setup, engine_cache) -> None:
+    """No obstacles: clearance inf and a body index per configuration, one q or a batch."""
+    robot, meshes, _ = setup
+    eng = CollisionEngine(
+        RobotCollisionChecker(robot, meshes),
+        "spheres",
+        spheres_per_link=6,
+        resolution=24,
+        cache_dir=str(engine_cache),
+    )
+    assert isinstance(eng.checker, SpheresMode) and eng.sdf is None
+    for q, n in ((np.zeros(6), 1), (np.zeros((3, 6)), 3)):
+        clearance, body = eng.checker.cell_clearance(q)
+        assert clearance.shape == body.shape == (n,) and np.all(np.isinf(clearance))

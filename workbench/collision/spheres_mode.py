@@ -217,7 +217,8 @@ class SpheresMode:
         a settled body's bound can exceed its spheres' least by up to 2 * max_error).
         """
         if self.sdf is None or not self.cell_spheres.size:
-            return np.full(len(np.atleast_2d(qs)), np.inf), np.zeros(len(qs), np.int64)
+            n = len(np.atleast_2d(qs))
+            return np.full(n, np.inf), np.zeros(n, np.int64)
         c = self.sphere_centres(qs)
         owners = self.sphere_body[self.cell_spheres]
         if not early_exit:
