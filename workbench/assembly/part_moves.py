@@ -21,7 +21,7 @@ from workbench.assembly.part import AssemblyPart
 from workbench.assembly.plan import PartPath, plan_part_path
 from workbench.assembly.planners.joint_rrt import CarrySpace, plan_carried_path
 from workbench.assembly.workcell import Workcell
-from workbench.errors import CollisionError, InputError, UnreachableError
+from workbench.errors import CollisionError, InputError, PlanningError, UnreachableError
 
 Progress = Callable[[float, str], None]
 #: Planners for a part move: the part's pose (seed 003's single ant, RRT-Connect in SE(3)), or
@@ -111,7 +111,8 @@ def plan_joint_move(
         path = plan_carried_path(
             space, part.start, part.goal, arm.q_home, q_start=q_start, **options
         )
-    except (CollisionError, UnreachableError) as exc:
+    except (CollisionError, UnreachableError, PlanningError) as exc:
+        # PlanningError too: a flip on a withdrawal (`carry_ik`) is one since `follow_path`.
         raise type(exc)(f"{where} ({part.name}) carried by {arm.name}: {exc}") from None
     assert path.joints is not None
     K = path.joints
@@ -144,8 +145,9 @@ def plan_move(
     [m]) from `q_start` [rad] (default: the IK solution nearest the robot's home at the
     part's start). cell_size [m]: as `Workcell.cell_size`. Raises CollisionError when the
     start or goal interferes (naming the obstacles or the robot's bodies), PlanningError
-    when no path is found, UnreachableError when the carrying robot cannot follow in one
-    configuration or the start or goal is out of its reach; each naming the part's field.
+    when no path is found (or, in joint space, the robot's withdrawal flips), UnreachableError
+    when the carrying robot cannot follow in one configuration or the start or goal is out of
+    its reach; each naming the part's field, except a pose planner's PlanningError.
     """
     report = report or (lambda f, m: None)
     part = cell.part(name)
