@@ -205,10 +205,11 @@ class BendingService(SectionService[BendingSpec]):
 
         The transfer is a jerk-limited (ruckig) joint trajectory; `frames` (>= 22) evenly
         timed frames are checked: the part with its OBB tree against the cell (leaf hits on
-        cylinders and meshes confirmed with python-fcl) and the robot's links and tool by the
-        conservative engine (`check_trajectory`: spheres + SDF at every frame, what it flags
-        confirmed with python-fcl, the motion between frames certified on the trajectory).
-        `progress(fraction, message)` reports the stages.
+        cylinders and meshes confirmed with python-fcl) and the robot's links and tool under
+        the project's collision policy (`check_trajectory` with `wb.collision_policy`; by
+        default spheres + SDF at every frame, what it flags confirmed with python-fcl, the
+        motion between frames certified on the trajectory). `progress(fraction, message)`
+        reports the stages.
         """
         report = progress or (lambda f, m: None)
         model, part, grasp = self.wb.robot, self.part, self.grasp

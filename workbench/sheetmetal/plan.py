@@ -1,8 +1,8 @@
 """A bending plan: die placements, the checked transfer, its first collision and its summary.
 
 SI units (m, rad, s). The part is checked by its OBB tree, the robot (links and tool, not
-the part it holds) by the conservative collision engine; `first_collision` picks the
-earliest failure of the two.
+the part it holds) under a collision policy (`workbench.collision.check_trajectory`);
+`first_collision` picks the earliest failure of the two.
 """
 
 from __future__ import annotations
@@ -115,11 +115,11 @@ class BendingPlan:
 
     Per transfer frame (F,): `times` [s], `joints` (F, dof) [rad], `T_world_grasp` (F, 4, 4)
     [m] of the gripped flange and `T_world_part` of the part. The part is checked by its OBB
-    tree (`part_report`); the robot (links and tool, not the part it holds) by the
-    conservative engine: `robot_colliding` is the exact verdict of each frame,
+    tree (`part_report`); the robot (links and tool, not the part it holds) under the
+    plan's collision policy: `robot_colliding` is the exact verdict of each frame,
     `robot_between` (F,) marks frames whose interval to the next collides (or could not be
     certified), and `robot_report` (an `EnginePathReport`) states the guarantee between
-    frames or the first failure.
+    frames (none in the exact mode) or the first failure.
     """
 
     placements: tuple[DiePlacement, ...]
