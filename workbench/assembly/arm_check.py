@@ -36,9 +36,10 @@ def check_arm(
     """Return `arm`'s check over its tasks among `tasks` at the plan's `times` (N,) [s] (None if none).
 
     policy: how to check (`workbench.collision.check_motion`). joints (N, dof) [rad]: the
-    plan's joints (default from the tasks' trajectories). The real timed motion is certified between samples (each task's trajectory from its `t0`,
-    at rest at home between tasks; |q''| bounded by the largest of the tasks' exact bounds:
-    each task starts and ends at rest, so the motion is C1). The report's indices are
+    plan's joints (default from the tasks' trajectories). Under a fast mode the real timed
+    motion is certified between samples (each task's trajectory from its `t0`, at rest at
+    home between tasks; |q''| bounded by the largest of the tasks' exact bounds: each task
+    starts and ends at rest, so the motion is C1); the exact mode checks the samples only. The report's indices are
     indices into `times`: `colliding_indices` the colliding samples, `between_indices`
     samples i whose interval to i+1 collides or could not be certified, `first_index`
     likewise.
