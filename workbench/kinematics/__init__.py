@@ -5,6 +5,7 @@ from __future__ import annotations
 from workbench.kinematics.configurations import labelled_solutions
 from workbench.kinematics.dh_robot import IK_TOL, DHRobot
 from workbench.kinematics.ik_report import branch_name
+from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.link_shapes import flange_mesh, link_meshes
 from workbench.kinematics.model import RobotModel
 from workbench.kinematics.path_ik import PathIK, follow_path
@@ -17,6 +18,7 @@ __all__ = [
     "MZ07_SEED_DH",
     "MZ07_SEED_TOOL",
     "DHRobot",
+    "JointConvention",
     "PathIK",
     "RobotModel",
     "Singularities",

@@ -20,6 +20,7 @@ from workbench.kinematics.dh_chain import (
     validate_dh,
 )
 from workbench.kinematics.ik_report import unreachable_reason
+from workbench.kinematics.joint_convention import JointConvention, model_convention
 from workbench.kinematics.joint_turns import all_turns, joint_turn, turns_scalar
 from workbench.kinematics.link_shapes import dh_link_meshes
 from workbench.kinematics.numeric_ik import numeric_ik
@@ -55,7 +56,8 @@ class DHRobot:
 
     dh: (n, 4) rows [theta_offset rad, d m, a m, alpha rad]; limits: (n, 2) [lower, upper] rad.
     max_velocity [rad/s], max_acceleration [rad/s^2], max_jerk [rad/s^3]: (n,) or scalars;
-    defaults: pi rad/s, velocity / 0.25 s, acceleration / 0.05 s.
+    defaults: pi rad/s, velocity / 0.25 s, acceleration / 0.05 s. Joint values and limits are
+    the model's; `convention` relates them to the controller's (identity unless given).
     Arms of the OPW family (offset shoulder, parallel shoulder-elbow axes, spherical wrist)
     get the analytic IK; others a numeric one (pinocchio CLIK from several seeds).
     """
@@ -69,6 +71,7 @@ class DHRobot:
         max_velocity: ArrayLike | None = None,
         max_acceleration: ArrayLike | None = None,
         max_jerk: ArrayLike | None = None,
+        convention: JointConvention | None = None,
     ) -> None:
         self.dh, self.limits = validate_dh(dh, limits)
         if not isinstance(name, str) or not name:
@@ -76,6 +79,7 @@ class DHRobot:
         self.name = name
         self.dof = int(self.dh.shape[0])
         n = self.dof
+        self.convention = model_convention(convention, n)
         self.max_velocity = _rate(
             max_velocity, np.full(n, presets.DEFAULT_MAX_VELOCITY), "max_velocity", "rad/s"
         )

@@ -7,6 +7,8 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.kinematics.joint_convention import JointConvention
+
 if TYPE_CHECKING:
     import pinocchio as pin
     import trimesh
@@ -22,6 +24,8 @@ class RobotModel(Protocol):
     transforms are (..., 4, 4) [m] from the robot base. `is_analytic` says whether
     `ik_batch` is available: analytic models (OPW arms) return every branch of every pose
     at once; numeric models raise InputError there and callers solve pose by pose with `ik`.
+    `convention` maps these values to the controller's (what the project file, the GUI and
+    the programs show): q_ctrl = convention.to_controller(q_model).
     """
 
     name: str
@@ -30,6 +34,7 @@ class RobotModel(Protocol):
     max_velocity: FloatArray  # (dof,) [rad/s]
     max_acceleration: FloatArray  # (dof,) [rad/s^2]
     max_jerk: FloatArray  # (dof,) [rad/s^3]
+    convention: JointConvention  # controller joint values against these (identity by default)
 
     @property
     def is_analytic(self) -> bool:

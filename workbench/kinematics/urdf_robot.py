@@ -12,6 +12,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.errors import InputError, MeshError, UnreachableError
 from workbench.kinematics import presets
 from workbench.kinematics.dh_chain import joint_array, transform_array
+from workbench.kinematics.joint_convention import JointConvention, model_convention
 from workbench.kinematics.numeric_ik import numeric_ik
 
 FloatArray = NDArray[np.float64]
@@ -23,7 +24,8 @@ class URDFRobot:
     Same interface as DHRobot where it makes sense: `dof`, `limits` (n, 2) [rad or m],
     `fk`, `link_transforms` (frame i = body moved by joint i, 0 = base), numeric `ik`,
     `jacobian`, `pinocchio_model`, and `link_meshes` from the URDF's collision (else visual)
-    geometry. FK loops over the batch in pinocchio (about 1 us per pose).
+    geometry. FK loops over the batch in pinocchio (about 1 us per pose). `convention`
+    relates the URDF's joint values to the controller's (identity unless given).
     """
 
     def __init__(
@@ -33,6 +35,7 @@ class URDFRobot:
         tip_frame: str,
         *,
         name: str = "robot",
+        convention: JointConvention | None = None,
     ) -> None:
         for j in model.joints[1:]:
             if j.nq != 1 or j.nv != 1:
@@ -64,6 +67,7 @@ class URDFRobot:
         self.max_velocity = np.where(vel > 0, vel, presets.DEFAULT_MAX_VELOCITY)
         self.max_acceleration = self.max_velocity / presets.ACCELERATION_TIME
         self.max_jerk = self.max_acceleration / presets.JERK_TIME
+        self.convention = model_convention(convention, self.dof)
 
     @classmethod
     def from_file(
