@@ -1,0 +1,310 @@
+"""The robot program model: what every workflow produces, every post writes and every reader returns.
+
+A `RobotProgram` is one robot's program as a controller runs it: named tools (TCP, mass,
+centre of gravity), named work objects (frames in the robot base), and a list of
+instructions: moves (joint, linear, circular) to targets, and actions (digital outputs, waits
+for inputs, waits, gripper open/close, comments, sync points with other robots).
+
+A `Target` holds the joints the planner chose (model convention, rad) and, for a Cartesian
+target, the TCP pose in its work object and the arm configuration of those joints; posts
+write controller joints (`RobotProgram.convention`), readers return them. A move carries its
+planned duration [s] so posts can write speed data that reproduce the planned times, and
+`check_program` refuses speeds, zones and accelerations outside the robot's limits, naming
+the move, before anything is written.
+
+SI inside: m, rad, s, kg. Posts convert to each controller's units.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import InputError
+from workbench.kinematics.arm_configuration import ArmConfiguration
+from workbench.kinematics.joint_convention import JointConvention
+
+FloatArray = NDArray[np.float64]
+
+MoveKind = Literal["joint", "linear", "circular"]
+
+
+@dataclass(frozen=True, eq=False)
+class ToolData:
+    """A tool: TCP pose in the flange frame (4, 4) [m], mass [kg] and centre of gravity (3,) [m]
+    in the flange frame (None where the project does not give them; RAPID needs both)."""
+
+    name: str
+    T_flange_tcp: FloatArray
+    mass: float | None = None
+    cog: FloatArray | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class WorkObject:
+    """A work object: a named frame (4, 4) [m] in the robot base frame."""
+
+    name: str
+    T_base_wobj: FloatArray
+
+
+@dataclass(frozen=True, eq=False)
+class Signal:
+    """A digital signal: its name (RAPID, URScript comments) and its number (KRL, FANUC, NACHI, UR)."""
+
+    name: str
+    number: int
+
+
+@dataclass(frozen=True, eq=False)
+class Target:
+    """A move's target: the planned joints `q` (dof,) [rad, model convention]; for a Cartesian
+    target also the TCP pose `T_wobj_tcp` (4, 4) [m] in the move's work object and the arm
+    `configuration` of `q` (None for joint targets)."""
+
+    name: str
+    q: FloatArray
+    T_wobj_tcp: FloatArray | None = None
+    configuration: ArmConfiguration | None = None
+
+    @property
+    def cartesian(self) -> bool:
+        """Return True for a Cartesian (pose) target, False for a joint target."""
+        return self.T_wobj_tcp is not None
+
+
+@dataclass(frozen=True, eq=False)
+class MoveInstr:
+    """A move: `kind` joint (PTP/MoveJ/MoveAbsJ), linear (LIN/MoveL) or circular (CIRC/MoveC,
+    through `via`) to `target` with `tool` and `wobj` (names in the program).
+
+    `speed`: a joint move's fraction (0, 1] of the joints' maximum speed; a linear or circular
+    move's TCP speed [m/s]. `zone`: blend radius [m], 0 = exact stop. `duration`: the planned
+    time [s] from the previous target to this one (0 where unknown).
+    """
+
+    kind: MoveKind
+    target: Target
+    speed: float
+    zone: float = 0.0
+    tool: str = "tool"
+    wobj: str = "base"
+    duration: float = 0.0
+    via: Target | None = None
+
+    @property
+    def name(self) -> str:
+        """Return the target's name."""
+        return self.target.name
+
+
+@dataclass(frozen=True, eq=False)
+class SetOutput:
+    """Set a digital output to `value`."""
+
+    signal: Signal
+    value: bool
+
+
+@dataclass(frozen=True, eq=False)
+class PulseOutput:
+    """Pulse a digital output high for `duration` [s]."""
+
+    signal: Signal
+    duration: float
+
+
+@dataclass(frozen=True, eq=False)
+class WaitInput:
+    """Wait until a digital input equals `value`; `timeout` [s] (None: wait forever)."""
+
+    signal: Signal
+    value: bool
+    timeout: float | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class WaitTime:
+    """Wait `seconds` [s]."""
+
+    seconds: float
+
+
+@dataclass(frozen=True, eq=False)
+class Gripper:
+    """Open or close the gripper: set `output` to `value`, then wait for `confirm` (if any,
+    with `timeout` [s]) and `settle` [s]. Posts write its `expand()`ed actions with a comment."""
+
+    close: bool
+    output: Signal
+    value: bool
+    confirm: Signal | None = None
+    timeout: float | None = None
+    settle: float = 0.0
+
+    def expand(self) -> tuple[Action, ...]:
+        """Return the low-level actions a controller runs for this gripper action."""
+        out: list[Action] = [SetOutput(self.output, self.value)]
+        if self.confirm is not None:
+            out.append(WaitInput(self.confirm, True, self.timeout))
+        if self.settle > 0.0:
+            out.append(WaitTime(self.settle))
+        return tuple(out)
+
+
+@dataclass(frozen=True, eq=False)
+class Comment:
+    """A comment line."""
+
+    text: str
+
+
+@dataclass(frozen=True, eq=False)
+class SyncPoint:
+    """Wait here until every robot in `robots` (program names) reaches the sync point `name`.
+
+    RAPID writes WaitSyncTask; languages without task sync use an I/O handshake: set `output`
+    high, wait for `input` high (the partner's output), then set `output` low.
+    """
+
+    name: str
+    robots: tuple[str, ...]
+    output: Signal | None = None
+    input: Signal | None = None
+
+
+Action = Union[SetOutput, PulseOutput, WaitInput, WaitTime, Gripper, Comment, SyncPoint]
+Instruction = Union[MoveInstr, Action]
+
+
+@dataclass(frozen=True)
+class MotionLimits:
+    """What a controller can be told to do: largest TCP speed [m/s] and blend radius [m]
+    (named settings of the robot; the posts refuse moves beyond them)."""
+
+    max_tcp_speed: float = 2.0
+    max_zone: float = 0.5
+
+
+@dataclass(frozen=True, eq=False)
+class RobotProgram:
+    """One robot's program (see the module docstring). `dof` joints; `convention` maps the
+    targets' model joints to the controller's; `robot` names the robot (a MultiMove task)."""
+
+    name: str
+    tools: tuple[ToolData, ...]
+    work_objects: tuple[WorkObject, ...]
+    instructions: tuple[Instruction, ...]
+    convention: JointConvention
+    dof: int = 6
+    robot: str = "robot"
+    limits: MotionLimits = field(default_factory=MotionLimits)
+
+    @property
+    def moves(self) -> tuple[MoveInstr, ...]:
+        """Return the moves, in order."""
+        return tuple(i for i in self.instructions if isinstance(i, MoveInstr))
+
+    def tool(self, name: str) -> ToolData:
+        """Return the tool called `name` (InputError when there is none)."""
+        for t in self.tools:
+            if t.name == name:
+                return t
+        raise InputError(f"program {self.name}: no tool {name!r}; tools: {[t.name for t in self.tools]}")
+
+    def work_object(self, name: str) -> WorkObject:
+        """Return the work object called `name` (InputError when there is none)."""
+        for w in self.work_objects:
+            if w.name == name:
+                return w
+        raise InputError(
+            f"program {self.name}: no work object {name!r};"
+            f" work objects: {[w.name for w in self.work_objects]}"
+        )
+
+    def controller_joints(self, q_model: FloatArray) -> FloatArray:
+        """Return joints (dof,) [rad] in the controller's convention."""
+        return np.asarray(self.convention.to_controller(q_model), float)
+
+    def actions(self) -> tuple[Action, ...]:
+        """Return the low-level actions in order (gripper actions expanded; comments left out):
+        what a reader of the written program returns."""
+        out: list[Action] = []
+        for ins in self.instructions:
+            if isinstance(ins, Gripper):
+                out.extend(ins.expand())
+            elif not isinstance(ins, (MoveInstr, Comment)):
+                out.append(ins)
+        return tuple(out)
+
+    @property
+    def cycle_time(self) -> float:
+        """Return the sum of the moves' planned durations and the waits [s]."""
+        t = sum(m.duration for m in self.moves)
+        for a in self.actions():
+            if isinstance(a, WaitTime):
+                t += a.seconds
+            elif isinstance(a, PulseOutput):
+                t += 0.0
+        return float(t)
+
+
+def move_label(program: RobotProgram, index: int, move: MoveInstr) -> str:
+    """Return how errors name a move: 'program main, move 3 (p_above)'."""
+    return f"program {program.name}, move {index}" + (f" ({move.name})" if move.name else "")
+
+
+def check_program(program: RobotProgram, *, needs_mass: bool = False) -> None:
+    """Refuse (InputError naming the move) what no controller should be told: a speed, zone
+    or duration that is not finite or outside `program.limits`, an unknown tool or work object,
+    joints of the wrong length, and (`needs_mass`, RAPID's tooldata) a tool without mass and
+    centre of gravity."""
+    lim = program.limits
+    if not program.moves:
+        raise InputError(f"program {program.name}: it has no moves; add at least one")
+    used_tools = set()
+    for k, mv in enumerate(program.moves):
+        where = move_label(program, k, mv)
+        used_tools.add(mv.tool)
+        program.tool(mv.tool)
+        program.work_object(mv.wobj)
+        for tgt in (mv.target, mv.via):
+            if tgt is None:
+                continue
+            q = np.asarray(tgt.q, float)
+            if q.shape != (program.dof,) or not np.all(np.isfinite(q)):
+                raise InputError(f"{where}: target {tgt.name!r} needs {program.dof} finite joints")
+            if tgt.T_wobj_tcp is not None and tgt.configuration is None:
+                raise InputError(f"{where}: Cartesian target {tgt.name!r} has no arm configuration")
+        if mv.kind == "circular" and (mv.via is None or not mv.via.cartesian or not mv.target.cartesian):
+            raise InputError(f"{where}: a circular move needs Cartesian via and end targets")
+        if mv.kind != "joint" and not mv.target.cartesian:
+            raise InputError(f"{where}: a {mv.kind} move needs a Cartesian target")
+        if not np.isfinite(mv.speed) or mv.speed <= 0:
+            raise InputError(f"{where}: speed {mv.speed!r} must be positive and finite")
+        if mv.kind == "joint" and mv.speed > 1.0 + 1e-12:
+            raise InputError(
+                f"{where}: joint speed {mv.speed * 100:g} % is over 100 % of the joints' maximum"
+            )
+        if mv.kind != "joint" and mv.speed > lim.max_tcp_speed:
+            raise InputError(
+                f"{where}: TCP speed {mv.speed * 1000:g} mm/s is over the robot's"
+                f" {lim.max_tcp_speed * 1000:g} mm/s; lower the move's speed"
+            )
+        if not np.isfinite(mv.zone) or not 0.0 <= mv.zone <= lim.max_zone:
+            raise InputError(
+                f"{where}: zone {mv.zone * 1000:g} mm must be within [0, {lim.max_zone * 1000:g}] mm"
+            )
+        if not np.isfinite(mv.duration) or mv.duration < 0.0:
+            raise InputError(f"{where}: planned duration {mv.duration!r} s must be >= 0")
+    if needs_mass:
+        for name in sorted(used_tools):
+            t = program.tool(name)
+            if t.mass is None or t.cog is None or not t.mass > 0:
+                raise InputError(
+                    f"tool {name!r}: RAPID's tooldata needs the tool's mass [kg] and centre of"
+                    " gravity [mm]; set tool.mass and tool.cog in the project"
+                )

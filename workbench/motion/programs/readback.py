@@ -1,0 +1,109 @@
+"""Read-back programs turned into joints: each target re-solved through its tool, work object and
+stored configuration, as the controller's own IK would, and the program model rebuilt from them."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import InputError
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.arm_configuration import arm_configuration, select_solution
+from workbench.kinematics.model import RobotModel
+from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
+from workbench.motion.programs.model import (
+    MotionLimits,
+    MoveInstr,
+    RobotProgram,
+    Target,
+    ToolData,
+    WorkObject,
+)
+
+FloatArray = NDArray[np.float64]
+
+
+def _find(items: tuple, name: str, what: str, line: int) -> object:
+    for it in items:
+        if it.name == name:
+            return it
+    raise InputError(
+        f"line {line}: the move uses {what} {name!r}, which the program does not declare;"
+        f" declared: {[i.name for i in items]}"
+    )
+
+
+def target_joints(
+    target: ReadTarget, tool: ToolData, wobj: WorkObject, model: RobotModel, *, where: str
+) -> FloatArray:
+    """Return the joints (dof,) [rad, model] a controller reaches for a read target.
+
+    Joint targets: the stated controller joints, converted. Cartesian targets: the IK solution
+    of T_base_flange = T_base_wobj @ T_wobj_tcp @ inv(T_flange_tcp) that the stored
+    configuration and turn ranges select (`select_solution`).
+    """
+    if target.joints is not None:
+        return np.asarray(model.convention.to_model(target.joints), float)
+    if target.T_wobj_tcp is None or target.configuration is None:
+        raise InputError(f"{where}: target {target.name!r} has neither joints nor a pose with its configuration")
+    T = wobj.T_base_wobj @ target.T_wobj_tcp @ invert_transform(tool.T_flange_tcp)
+    return select_solution(model, T, target.configuration, target.controller_ranges, where=where)
+
+
+def solve_moves(read: ReadProgram, model: RobotModel) -> list[FloatArray]:
+    """Return the controller's joints (dof,) [rad, model] at every move's target, in order."""
+    out = []
+    for mv in read.moves:
+        tool = _find(read.tools, mv.tool, "tool", mv.line)
+        wobj = _find(read.work_objects, mv.wobj, "work object", mv.line)
+        out.append(target_joints(mv.target, tool, wobj, model, where=f"line {mv.line} ({mv.name})"))  # type: ignore[arg-type]
+    return out
+
+
+def to_robot_program(
+    read: ReadProgram,
+    model: RobotModel,
+    *,
+    limits: MotionLimits | None = None,
+    robot: str = "robot",
+) -> RobotProgram:
+    """Return the `RobotProgram` of a read program: targets re-solved (`solve_moves`), joint
+    speeds as read (a move given only a time gets speed 1 and that duration), actions kept."""
+    joints = iter(solve_moves(read, model))
+    instructions = []
+    for ins in read.instructions:
+        if not isinstance(ins, ReadMove):
+            instructions.append(ins)
+            continue
+        q = next(joints)
+        tgt = ins.target
+        cfg = arm_configuration(model, q) if tgt.T_wobj_tcp is not None else None
+        via = None
+        if ins.via is not None:
+            tool = _find(read.tools, ins.tool, "tool", ins.line)
+            wobj = _find(read.work_objects, ins.wobj, "work object", ins.line)
+            qv = target_joints(ins.via, tool, wobj, model, where=f"line {ins.line} (via)")  # type: ignore[arg-type]
+            via = Target(ins.via.name, qv, ins.via.T_wobj_tcp, arm_configuration(model, qv))
+        speed = ins.speed if ins.speed is not None else 1.0
+        instructions.append(
+            MoveInstr(
+                ins.kind,
+                Target(tgt.name, q, tgt.T_wobj_tcp, cfg),
+                speed,
+                ins.zone,
+                ins.tool,
+                ins.wobj,
+                ins.duration or 0.0,
+                via,
+            )
+        )
+    return RobotProgram(
+        read.name,
+        read.tools,
+        read.work_objects,
+        tuple(instructions),
+        model.convention,
+        model.dof,
+        robot,
+        limits or MotionLimits(),
+    )
