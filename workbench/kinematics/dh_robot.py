@@ -107,12 +107,17 @@ class DHRobot:
 
     @classmethod
     def mz07(cls) -> DHRobot:
-        """Return the NACHI MZ07 of seed 003 (flange without tool; see presets.MZ07_SEED_TOOL)."""
+        """Return the NACHI MZ07 of seed 003 (flange without tool; see presets.MZ07_SEED_TOOL).
+
+        Its `convention` is NACHI's (presets.MZ07_CONVENTION): the upright posture is the
+        model's (0, 0, 0, 0, -90, 0) deg and the controller's (0, 90, 0, 0, 0, 0) deg.
+        """
         return cls(
             presets.MZ07_DH,
             presets.MZ07_LIMITS,
             name="NACHI MZ07",
             max_velocity=presets.MZ07_MAX_VELOCITY,
+            convention=presets.MZ07_CONVENTION,
         )
 
     @property

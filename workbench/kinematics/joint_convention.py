@@ -75,9 +75,7 @@ class JointConvention:
         except (TypeError, ValueError) as exc:
             raise InputError(f"{what}: expected numbers, got {q!r}") from exc
         if arr.ndim == 0 or arr.shape[-1] != self.dof:
-            raise InputError(
-                f"{what}: expected shape (..., {self.dof}) [rad], got {arr.shape}"
-            )
+            raise InputError(f"{what}: expected shape (..., {self.dof}) [rad], got {arr.shape}")
         return arr
 
     def to_controller(self, q_model: ArrayLike) -> FloatArray:

@@ -14,11 +14,37 @@ The last row reaches the tip of the authors' end effector. The robot flange is m
 theta 0, d -0.090 m, a 0, alpha 180 deg (flange z points out of the flange; wrist centre to
 flange ~90 mm), and the rest of the seed's 516.9 mm is the tool: ``MZ07_SEED_TOOL``.
 
-Joint limits and speeds are approximate values from the MZ07 datasheet as remembered, in
-the seed's joint convention; check them against the robot's manual before real use. J5 is
-±120 deg about the straight wrist; the seed's theta offset of 90 deg puts q5 = 0 at the
-flange-down pose and the straight wrist at q5 = -90 deg, so its range is [-210, 30] deg
-(q5 > 0 folds the flange back toward the forearm).
+The controller's joint convention (``MZ07_CONVENTION``). The NACHI controller (FD/CFD teach
+pendant) shows the upright posture -- upper arm vertical, forearm horizontal, wrist straight,
+flange facing forward -- as J = (0, 90, 0, 0, 0, 0) deg; J2 grows as the upper arm leans back,
+J3 as the forearm rises. The seed's model reaches that posture at q = (0, 0, 0, 0, -90, 0) deg,
+and its J5 and J6 axes point the other way than the controller's, so
+
+    q_ctrl = sign * q_model + offset,  sign = (+1, +1, +1, +1, -1, -1),
+    offset = (0, 90, 0, 0, -90, 0) deg.
+
+Source: the teach-pendant joint/flange pose pairs of a real MZ07F and the chain they were
+fitted with, published in gstorm-b/RobotKinematics,
+https://github.com/gstorm-b/RobotKinematics/blob/main/docs/preset_references/nachi-mz07f.md
+(six poses, reproduced by that chain to 0.07 mm / 0.013 deg; the MZ04D page of the same
+repository shows J(0, 90, 0, 0, 0, 0) as the reference posture of NACHI's manual).
+tests/kinematics/test_joint_convention.py maps those pendant values through the convention
+and checks this model's flange orientation and wrist centre against the pendant's poses.
+
+Joint limits, in the controller's convention (``MZ07_CONTROLLER_LIMITS_DEG``; the model's
+``MZ07_LIMITS`` are derived from them):
+
+- J1 +-170, J2 -45..+170, J4 +-190, J5 +-120, J6 +-360 deg: the limits of the same MZ07F
+  (nachi-mz07f.md above); J2 and J5 equal the earlier estimates (-135..+80 deg about the
+  vertical, +-120 deg about the straight wrist), J1, J4 and J6 the ROS description of an
+  MZ07 by Nishida-Lab,
+  https://github.com/Nishida-Lab/nachi_project/blob/master/nachi_description/robots/mz07/mz07.urdf.xacro
+- J3 -120..+160 deg: STILL AN ESTIMATE (the value remembered from the datasheet). The MZ07F
+  above shows -65..+190 deg and the Nishida-Lab files disagree with each other; check the
+  robot's manual before real use.
+
+Maximum joint speeds 450, 380, 520, 550, 550, 1000 deg/s: the Nishida-Lab description above
+(and its MoveIt joint_limits.yaml); not yet checked against NACHI's own datasheet.
 """
 
 from __future__ import annotations
@@ -26,6 +52,7 @@ from __future__ import annotations
 import numpy as np
 
 from workbench.geometry.transforms import make_transform
+from workbench.kinematics.joint_convention import JointConvention
 
 _DEG = np.pi / 180.0
 
@@ -63,20 +90,36 @@ The seed's own tip frame has z pointing back into the wrist (its last alpha is 0
 ``fk_seed(q) == fk(q) @ MZ07_SEED_TOOL @ Rx(pi)``.
 """
 
-MZ07_LIMITS_DEG = np.array(
+MZ07_CONVENTION_OFFSET_DEG = np.array([0.0, 90.0, 0.0, 0.0, -90.0, 0.0])
+MZ07_CONVENTION_SIGN = np.array([1.0, 1.0, 1.0, 1.0, -1.0, -1.0])
+MZ07_CONVENTION = JointConvention(
+    offset=MZ07_CONVENTION_OFFSET_DEG * _DEG, sign=MZ07_CONVENTION_SIGN
+)
+"""The NACHI controller's joint values against the seed model's (see the module docstring)."""
+
+MZ07_CONTROLLER_UPRIGHT_DEG = np.array([0.0, 90.0, 0.0, 0.0, 0.0, 0.0])
+"""The upright posture (upper arm vertical, forearm horizontal, wrist straight) on the pendant."""
+
+MZ07_CONTROLLER_LIMITS_DEG = np.array(
     [
         [-170.0, 170.0],
-        [-135.0, 80.0],
-        [-120.0, 160.0],
+        [-45.0, 170.0],
+        [-120.0, 160.0],  # estimate, see the module docstring
         [-190.0, 190.0],
-        [-210.0, 30.0],
+        [-120.0, 120.0],
         [-360.0, 360.0],
     ]
 )
+"""Joint limits [deg] as the controller shows them (the model's are `MZ07_LIMITS`)."""
+
+MZ07_LIMITS_DEG = JointConvention(
+    offset=MZ07_CONVENTION_OFFSET_DEG, sign=MZ07_CONVENTION_SIGN
+).limits_to_model(MZ07_CONTROLLER_LIMITS_DEG)  # the map is linear: mapped in whole degrees
 MZ07_LIMITS = MZ07_LIMITS_DEG * _DEG
+"""Joint limits [rad] in the seed model's convention: J2 -135..80, J5 -210..30 deg, ..."""
 
 MZ07_MAX_VELOCITY = np.array([450.0, 380.0, 520.0, 550.0, 550.0, 1000.0]) * _DEG
-"""Approximate joint speed limits [rad/s] (datasheet figures in deg/s, as remembered)."""
+"""Joint speed limits [rad/s] (450, 380, 520, 550, 550, 1000 deg/s; sources in the docstring)."""
 
 ACCELERATION_TIME = 0.25
 """Default time [s] to reach full speed: max_acceleration = max_velocity / 0.25 s."""
