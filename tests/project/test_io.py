@@ -68,8 +68,8 @@ def test_examples_round_trip(path: Path, tmp_path: Path) -> None:
         ),
         (
             {"cell": {"objects": [{"name": "a", "shape": "box", "size": [1, -2, 3]}]}},
-            "cell.objects[0]",
-            "positive",
+            "cell.objects[0].size[1]",
+            "-2 mm is out of range; allowed [0.1, 200000] mm",
         ),
         (
             {"robot": {"preset": "mz07", "base": {"rpy": ["x", 0, 0]}}},
@@ -82,7 +82,7 @@ def test_examples_round_trip(path: Path, tmp_path: Path) -> None:
         (
             {"robot": {"preset": "mz07", "max_velocity": [1, 2, 0, 1, 1, 1]}},
             "robot.max_velocity[2]",
-            "greater than 0",
+            "0 deg/s is out of range",
         ),
         ({"tool": {"tcp": {"xyz": [0, 0, 1e400]}}}, "tool.tcp.xyz[2]", "finite"),
         (

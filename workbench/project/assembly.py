@@ -16,11 +16,25 @@ import numpy as np
 from numpy.typing import NDArray
 from pydantic import Field, model_validator
 
-from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
+from workbench.project import bounds as B
+from workbench.project.common import (
+    Color,
+    Joints,
+    MeshScale,
+    Pose,
+    Seed,
+    Size3mm,
+    SizeMM,
+    StrictModel,
+)
 from workbench.project.units import MM, matrix_to_pose, pose_to_matrix
 
 if TYPE_CHECKING:
     from workbench.project.models import RobotSI, ToolSI
+
+
+PlannerMM = Annotated[float, B.span(B.PLANNER_CELL_MM, "mm")]
+Approach = Annotated[float, B.span(B.APPROACH_MM, "mm")]
 
 
 def _mm(v: float | None) -> float | None:
@@ -108,9 +122,9 @@ class AssemblyRobotSpec(StrictModel):
     name: str
     preset: Literal["mz07"] = "mz07"
     base: Pose = Field(default_factory=Pose)
-    joints: list[float] | None = None  # home configuration [deg]; default all zero
+    joints: Joints | None = None  # home configuration [deg]; default all zero
     tcp: Pose = Field(default_factory=lambda: Pose(xyz=[0.0, 0.0, 150.0]))  # flange -> TCP
-    tool_size: Vec3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
+    tool_size: Size3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
     color: Color = Field(default_factory=lambda: [200, 215, 235])
 
     def to_si(self) -> AssemblyRobotSI:
@@ -133,10 +147,10 @@ class AssemblyPartSpec(StrictModel):
     name: str
     shape: Literal["mesh", "box", "cylinder"] = "mesh"
     path: str | None = None  # mesh file relative to the project file (must be closed)
-    scale: Positive = 0.001  # mesh units -> m
-    size: Vec3mm | None = None  # box [mm]
-    radius: Positive | None = None  # cylinder [mm]
-    height: Positive | None = None  # cylinder [mm]
+    scale: MeshScale = 0.001  # mesh units -> m
+    size: Size3mm | None = None  # box [mm]
+    radius: SizeMM | None = None  # cylinder [mm]
+    height: SizeMM | None = None  # cylinder [mm]
     start: Pose = Field(default_factory=Pose)
     goal: Pose = Field(default_factory=Pose)
     grasp: Pose = Field(default_factory=lambda: Pose(rpy=[180.0, 0.0, 0.0]))
@@ -179,13 +193,14 @@ class AssemblyPlannerSpec(StrictModel):
     """The part path planner and its parameters."""
 
     name: Literal["ant", "rrt_connect", "joint_rrt_connect"] = "ant"
-    cell_size: Positive | None = None  # subdivision cell [mm]; default 1/20 of each part
-    step: Annotated[int, Field(ge=1)] = 20  # ant: segments along the dominant axis
-    dis: Positive | None = None  # ant: grid spacing on a cutting plane [mm]
-    seed: Annotated[int, Field(ge=0)] = 0  # rrt_connect, joint_rrt_connect: random seed
-    max_time: Positive = 10.0  # rrt_connect, joint_rrt_connect: time limit [s]
+    cell_size: PlannerMM | None = None  # subdivision cell [mm]; default 1/20 of each part
+    step: Annotated[int, B.span(B.PLANNER_STEPS)] = 20  # ant: segments along the dominant axis
+    dis: PlannerMM | None = None  # ant: grid spacing on a cutting plane [mm]
+    seed: Seed = 0  # rrt_connect, joint_rrt_connect: random seed
+    max_time: Annotated[float, B.span(B.PLANNER_TIME_S_OPEN, "s", lo_open=True)] = 10.0
+    # rrt_connect, joint_rrt_connect: time limit [s]
     # joint_rrt_connect: largest travel of a robot point between two checks [mm]; default cell_size
-    robot_resolution: Positive | None = None
+    robot_resolution: PlannerMM | None = None
 
     def to_si(self) -> AssemblyPlannerSI:
         """Return the planner's parameters in SI."""
@@ -204,8 +219,8 @@ class AssemblyTaskSpec(StrictModel):
     """One part move: pick (after an approach), carry and insert, release and retreat."""
 
     part: str
-    approach: Annotated[float, Field(ge=0)] = 50.0  # pre-grasp distance back along the TCP z [mm]
-    retreat: Annotated[float, Field(ge=0)] = 50.0  # after release, back along the TCP z [mm]
+    approach: Approach = 50.0  # pre-grasp distance back along the TCP z [mm]
+    retreat: Approach = 50.0  # after release, back along the TCP z [mm]
 
     def to_si(self) -> AssemblyTaskSI:
         """Return this part move with its distances in metres."""
@@ -215,11 +230,16 @@ class AssemblyTaskSpec(StrictModel):
 class AssemblySpec(StrictModel):
     """The `assembly` section (mm, deg)."""
 
-    robots: list[AssemblyRobotSpec] = Field(default_factory=list)
-    parts: list[AssemblyPartSpec] = Field(default_factory=list)
+    robots: Annotated[list[AssemblyRobotSpec], Field(max_length=B.MAX_ITEMS)] = Field(
+        default_factory=list
+    )
+    parts: Annotated[list[AssemblyPartSpec], Field(max_length=B.MAX_ITEMS)] = Field(
+        default_factory=list
+    )
     planner: AssemblyPlannerSpec = Field(default_factory=AssemblyPlannerSpec)
     sequence: list[AssemblyTaskSpec] | None = None  # default: every part, in the listed order
-    speed: Annotated[float, Field(gt=0, le=100)] = 50.0  # % of the robots' joint speed limits
+    speed: Annotated[float, B.span(B.SPEED_PERCENT_OPEN, "%", lo_open=True)] = 50.0
+    # % of the robots' joint speed limits
 
     @model_validator(mode="after")
     def _names(self) -> AssemblySpec:

@@ -22,7 +22,8 @@ from numpy.typing import NDArray
 from pydantic import AfterValidator, Field, ValidationError, model_validator
 
 from workbench.errors import ProjectError
-from workbench.project.common import Pose, Positive, StrictModel, Vec3mm
+from workbench.project import bounds as B
+from workbench.project.common import Angle, Coordinate, Pose, StrictModel, Vec3mm
 from workbench.project.units import DEG, MM
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.grasp import Grasp
@@ -32,7 +33,7 @@ from workbench.sheetmetal.transfer import Transfer
 
 
 def _polygon(v: list[list[float]]) -> list[list[float]]:
-    if len(v) < 3 or any(len(p) != 2 for p in v):
+    if len(v) < 3 or len(v) > B.MAX_ITEMS or any(len(p) != 2 for p in v):
         raise ValueError(
             f"expected at least 3 points [x, y] in mm (counter-clockwise), got {len(v)} point(s)"
         )
@@ -42,7 +43,7 @@ def _polygon(v: list[list[float]]) -> list[list[float]]:
 def _positive_mm(v: float) -> float:
     if not v > 0:
         raise ValueError(f"must be > 0 mm, got {v:g}")
-    return v
+    return B.span(B.THICKNESS_MM, "mm").check(v)
 
 
 def _included(v: float) -> float:
@@ -68,7 +69,7 @@ class FlangeSpec(StrictModel):
     """A planar flange: a counter-clockwise polygon [mm] in its own frame."""
 
     name: str
-    polygon: Annotated[list[list[float]], AfterValidator(_polygon)]
+    polygon: Annotated[list[list[Coordinate]], AfterValidator(_polygon)]
 
 
 class BendSpec(StrictModel):
@@ -76,11 +77,11 @@ class BendSpec(StrictModel):
 
     name: str
     parent: str
-    parent_edge: Annotated[int, Field(ge=0)]
+    parent_edge: Annotated[int, Field(ge=0, le=B.MAX_INDEX)]
     child: str
-    child_edge: Annotated[int, Field(ge=0)]
+    child_edge: Annotated[int, Field(ge=0, le=B.MAX_INDEX)]
     included_angle: Annotated[float, AfterValidator(_included)]  # deg, (0, 180); 180 = flat
-    inner_radius: Positive  # mm, >= 0.5 x thickness (Table 1)
+    inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")]  # >= 0.5 x thickness
     direction: Literal["up", "down"] = "up"
     k_factor: Annotated[float, Field(ge=0, le=1)] | None = None  # overrides Table 1
 
@@ -93,8 +94,8 @@ class PartSpec(StrictModel):
     note: str = ""
     thickness: Annotated[float, AfterValidator(_positive_mm)]  # mm
     k_factor: Annotated[float, Field(ge=0, le=1)] | None = None  # K for every bend
-    flanges: list[FlangeSpec]
-    bends: list[BendSpec] = Field(default_factory=list)
+    flanges: Annotated[list[FlangeSpec], Field(max_length=B.MAX_ITEMS)]
+    bends: Annotated[list[BendSpec], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
     sequence: Annotated[list[str], AfterValidator(_unique)] | None = None
 
     @model_validator(mode="after")
@@ -182,9 +183,9 @@ class GraspSpec(StrictModel):
     """Where the gripper holds the part: a flange and an offset in its plane [mm, deg]."""
 
     flange: str = "1"
-    offset: Annotated[list[float], Field(min_length=2, max_length=2)] | None = None
+    offset: Annotated[list[Coordinate], Field(min_length=2, max_length=2)] | None = None
     # [x, y] mm in the flange's polygon frame; None = the polygon's centroid
-    yaw: float = 0.0  # deg, gripper rotation about the flange normal
+    yaw: Angle = 0.0  # deg, gripper rotation about the flange normal
 
     def to_si(self) -> Grasp:
         """Return the grasp in SI: offset [m] (None: the centroid), yaw [rad]."""
@@ -203,7 +204,8 @@ class DieSpec(StrictModel):
     """The press brake's die: `pose` of its bend line (x along the line, z up, robot on -y)."""
 
     pose: Pose = Field(default_factory=Pose)
-    length: Positive = 1000.0  # mm: the longest bend line that fits
+    length: Annotated[float, B.span(B.DIE_LENGTH_MM, "mm")] = 1000.0
+    # mm: the longest bend line that fits
 
 
 class BendingSpec(StrictModel):
@@ -215,7 +217,8 @@ class BendingSpec(StrictModel):
     grasp: GraspSpec = Field(default_factory=GraspSpec)
     die: DieSpec = Field(default_factory=DieSpec)
     retract: Vec3mm = Field(default_factory=lambda: [0.0, -250.0, 60.0])  # in the die frame
-    transfer: list[Pose] = Field(default_factory=list)  # TCP via poses in the world
+    transfer: Annotated[list[Pose], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
+    # TCP via poses in the world
     pallet: Pose = Field(default_factory=Pose)  # where the part frame is put down (world)
     frames: Annotated[int, Field(ge=22, le=2000)] = 40  # transfer frames checked
 

@@ -8,6 +8,8 @@ import numpy as np
 from numpy.typing import NDArray
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field
 
+from workbench.project import bounds as B
+
 
 class StrictModel(BaseModel):
     """Base of every project model: unknown fields and non-finite numbers are errors."""
@@ -24,8 +26,16 @@ def _vector(n: int, what: str) -> AfterValidator:
     return AfterValidator(check)
 
 
-Vec3mm = Annotated[list[float], _vector(3, "[mm, mm, mm]")]
-Vec3deg = Annotated[list[float], _vector(3, "[roll, pitch, yaw] in degrees")]
+Coordinate = Annotated[float, B.symmetric(B.CELL_HALF_EXTENT_MM, "mm")]  # a position [mm]
+Angle = Annotated[float, B.symmetric(B.ANGLE_DEG, "deg")]  # an orientation angle [deg]
+JointAngle = Annotated[float, B.symmetric(B.JOINT_DEG, "deg")]  # a joint value or limit [deg]
+SizeMM = Annotated[float, B.span(B.SIZE_MM, "mm")]  # an edge length, radius or height [mm]
+MeshScale = Annotated[float, B.span(B.MESH_SCALE)]  # mesh units -> m
+Seed = Annotated[int, B.span((0, B.MAX_SEED))]  # a random seed
+Vec3mm = Annotated[list[Coordinate], _vector(3, "[mm, mm, mm]")]  # a position
+Size3mm = Annotated[list[SizeMM], _vector(3, "[mm, mm, mm] edge lengths")]  # a box
+Vec3deg = Annotated[list[Angle], _vector(3, "[roll, pitch, yaw] in degrees")]
+Joints = Annotated[list[JointAngle], Field(max_length=B.MAX_DOF)]  # per joint [deg]
 Positive = Annotated[float, Field(gt=0)]
 
 

@@ -13,6 +13,7 @@ from pydantic import ValidationError
 
 from workbench.atomic_file import atomic_write_text
 from workbench.errors import ProjectError, SchemaVersionError
+from workbench.project.bounds import JSON_MAX_DEPTH
 from workbench.project.models import SCHEMA_VERSION, Project
 
 # Migrations from version N to N + 1, applied in order on the parsed JSON.
@@ -53,7 +54,91 @@ def problems_from(error: ValidationError) -> list[tuple[str, str]]:
 
 
 def _reject_nonfinite(value: str) -> float:
-    raise ValueError(f"{value} is not allowed")
+    raise _NonFinite(f"{value} is not allowed; numbers must be finite")
+
+
+_DUPLICATES = object()  # the key under which a parsed object lists its repeated keys
+
+
+def _pairs(pairs: list[tuple[str, Any]]) -> dict[Any, Any]:
+    """Return the object of `pairs`, its repeated keys listed under `_DUPLICATES`."""
+    out: dict[Any, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            out.setdefault(_DUPLICATES, []).append(key)
+        out[key] = value
+    return out
+
+
+def _check_tree(data: object, source: str) -> None:
+    """Refuse repeated keys (naming the key's path) and nesting deeper than JSON_MAX_DEPTH."""
+    stack: list[tuple[object, str, int]] = [(data, "", 0)]
+    while stack:
+        node, path, depth = stack.pop()
+        if depth > JSON_MAX_DEPTH:
+            raise ProjectError(
+                f"{source}: {path or '(top level)'}: nested deeper than {JSON_MAX_DEPTH} levels"
+                " (workbench.project.bounds.JSON_MAX_DEPTH); a project is a few levels deep",
+                [(path or "(top level)", "nested too deeply")],
+            )
+        if isinstance(node, dict):
+            dup = node.pop(_DUPLICATES, None)
+            if dup is not None:
+                where = f"{path}.{dup[0]}" if path else str(dup[0])
+                raise ProjectError(
+                    f"{source}: {where}: the key {dup[0]!r} appears more than once in "
+                    f"{path or 'the top-level object'}; keep one (JSON readers differ on which wins)",
+                    [(where, "duplicate key")],
+                )
+            stack.extend(
+                (v, f"{path}.{k}" if path else str(k), depth + 1) for k, v in node.items()
+            )
+        elif isinstance(node, list):
+            stack.extend((v, f"{path}[{i}]", depth + 1) for i, v in enumerate(node))
+
+
+def parse_json(text: str | bytes, *, source: str = "project") -> Any:
+    """Return the parsed JSON of a project or part file; `ProjectError` naming what is wrong.
+
+    Refused: text that is not UTF-8 (a binary file), broken JSON (line and column), NaN and
+    Infinity, numbers too long to read, repeated keys in an object (the key's path) and
+    nesting deeper than `JSON_MAX_DEPTH`."""
+    if isinstance(text, bytes | bytearray):
+        if b"\x00" in text[:8192]:
+            raise ProjectError(
+                f"{source}: a binary file (it holds NUL bytes), not JSON text; give a project"
+                " JSON file", [("(file)", "binary file")]
+            )
+        try:
+            text = bytes(text).decode("utf-8-sig")
+        except UnicodeDecodeError as exc:
+            raise ProjectError(
+                f"{source}: not UTF-8 text (byte 0x{text[exc.start]:02x} at offset {exc.start});"
+                " is it a binary file? Give a project JSON file",
+                [("(file)", "not UTF-8 text")],
+            ) from None
+    try:
+        data = json.loads(text, parse_constant=_reject_nonfinite, object_pairs_hook=_pairs)
+    except json.JSONDecodeError as exc:
+        raise ProjectError(
+            f"{source}: not valid JSON at line {exc.lineno} column {exc.colno}: {exc.msg}",
+            [("(file)", exc.msg)],
+        ) from None
+    except _NonFinite as exc:  # NaN / Infinity literals
+        raise ProjectError(f"{source}: {exc}", [("(file)", str(exc))]) from None
+    except RecursionError:
+        raise ProjectError(
+            f"{source}: nested too deeply to read (more than {JSON_MAX_DEPTH} levels is refused)",
+            [("(file)", "nested too deeply")],
+        ) from None
+    except ValueError as exc:  # e.g. an integer with more digits than Python reads
+        raise ProjectError(f"{source}: cannot read a value: {exc}", [("(file)", str(exc))]) from None
+    _check_tree(data, source)
+    return data
+class _NonFinite(ValueError):
+    """A NaN or Infinity literal in the JSON text."""
+
+
 
 
 def _migrate(data: dict[str, Any]) -> dict[str, Any]:
@@ -103,20 +188,7 @@ def project_from_dict(data: object, *, source: str = "project") -> Project:
 
 def parse_project_json(text: str | bytes, *, source: str = "project") -> Project:
     """Return a validated `Project` from JSON text; broken JSON names the line and column."""
-    try:
-        data = json.loads(text, parse_constant=_reject_nonfinite)
-    except json.JSONDecodeError as exc:
-        raise ProjectError(
-            f"{source}: not valid JSON at line {exc.lineno} column {exc.colno}: {exc.msg}",
-            [("(file)", exc.msg)],
-        ) from None
-    except ValueError as exc:  # NaN / Infinity literals
-        raise ProjectError(
-            f"{source}: {exc}; numbers must be finite", [("(file)", str(exc))]
-        ) from None
-    except UnicodeDecodeError as exc:
-        raise ProjectError(f"{source}: not UTF-8 text ({exc})") from None
-    return project_from_dict(data, source=source)
+    return project_from_dict(parse_json(text, source=source), source=source)
 
 
 def load_project(path: str | os.PathLike[str]) -> Project:

@@ -16,11 +16,26 @@ from pydantic import Field, model_validator
 from workbench.project.assembly import AssemblySpec
 from workbench.project.bending import BendingSpec
 from workbench.project.collision import CollisionSpec
-from workbench.project.common import Color, Pose, Positive, StrictModel, Vec3mm
+from workbench.project import bounds as B
+from workbench.project.common import (
+    Angle,
+    Color,
+    Coordinate,
+    Joints,
+    JointAngle,
+    MeshScale,
+    Pose,
+    Size3mm,
+    SizeMM,
+    StrictModel,
+)
 from workbench.project.polishing import PolishingSpec
 from workbench.project.units import DEG, MM, pose_to_matrix
 
 FloatArray = NDArray[np.float64]
+JointSpeed = Annotated[float, B.span(B.JOINT_SPEED_DEG_S, "deg/s")]
+JointAccel = Annotated[float, B.span(B.JOINT_ACCEL_DEG_S2, "deg/s²")]
+JointJerk = Annotated[float, B.span(B.JOINT_JERK_DEG_S3, "deg/s³")]
 
 SCHEMA_VERSION = 1
 PRESETS = ("mz07",)
@@ -29,12 +44,12 @@ PRESETS = ("mz07",)
 class DHRow(StrictModel):
     """One standard DH row Rz(theta + offset) Tz(d) Tx(a) Rx(alpha) with its joint limits."""
 
-    theta_offset: float = 0.0  # deg
-    d: float  # mm
-    a: float  # mm
-    alpha: float  # deg
-    min: float  # deg
-    max: float  # deg
+    theta_offset: Angle = 0.0  # deg
+    d: Coordinate  # mm
+    a: Coordinate  # mm
+    alpha: Angle  # deg
+    min: JointAngle  # deg
+    max: JointAngle  # deg
 
     @model_validator(mode="after")
     def _limits_ordered(self) -> DHRow:
@@ -72,14 +87,15 @@ class Robot(StrictModel):
 
     name: str = "robot"
     preset: Literal["mz07"] | None = None
-    dh: list[DHRow] | None = None
+    dh: Annotated[list[DHRow], Field(max_length=B.MAX_DOF)] | None = None
     urdf: str | None = None  # path, relative to the project file
     base: Pose = Field(default_factory=Pose)
-    joints: list[float] | None = None  # deg (rad for none): the stored configuration
-    max_velocity: list[Positive] | None = None  # deg/s per joint
-    max_acceleration: list[Positive] | None = None  # deg/s^2 per joint
-    max_jerk: list[Positive] | None = None  # deg/s^3 per joint
-    link_meshes: list[str | None] | None = None  # optional mesh per link (base first)
+    joints: Joints | None = None  # deg (rad for none): the stored configuration
+    max_velocity: list[JointSpeed] | None = None  # deg/s per joint
+    max_acceleration: list[JointAccel] | None = None  # deg/s^2 per joint
+    max_jerk: list[JointJerk] | None = None  # deg/s^3 per joint
+    link_meshes: Annotated[list[str | None], Field(max_length=B.MAX_DOF + 1)] | None = None
+    # optional mesh per link (base first)
 
     @model_validator(mode="after")
     def _one_source(self) -> Robot:
@@ -139,8 +155,8 @@ class Tool(StrictModel):
     name: str = "tool"
     tcp: Pose = Field(default_factory=Pose)
     mesh: str | None = None  # path relative to the project file, in the flange frame
-    mesh_scale: Positive = 0.001  # mesh units -> m (files are usually in mm)
-    size: Vec3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
+    mesh_scale: MeshScale = 0.001  # mesh units -> m (files are usually in mm)
+    size: Size3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
     color: Color = Field(default_factory=lambda: [200, 200, 210])
 
     def to_si(self) -> ToolSI:
@@ -178,11 +194,11 @@ class CellObject(StrictModel):
     name: str
     shape: Literal["box", "cylinder", "mesh"]
     pose: Pose = Field(default_factory=Pose)
-    size: Vec3mm | None = None  # box edge lengths [mm]
-    radius: Positive | None = None  # cylinder [mm]
-    height: Positive | None = None  # cylinder, along its z [mm]
+    size: Size3mm | None = None  # box edge lengths [mm]
+    radius: SizeMM | None = None  # cylinder [mm]
+    height: SizeMM | None = None  # cylinder, along its z [mm]
     path: str | None = None  # mesh file, relative to the project file
-    scale: Positive = 0.001  # mesh units -> m
+    scale: MeshScale = 0.001  # mesh units -> m
     color: Color = Field(default_factory=lambda: [170, 170, 170])
     collide: bool = True
 
@@ -219,7 +235,7 @@ class CellObject(StrictModel):
 class Cell(StrictModel):
     """Everything around the robot."""
 
-    objects: list[CellObject] = Field(default_factory=list)
+    objects: Annotated[list[CellObject], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
 
     @model_validator(mode="after")
     def _unique_names(self) -> Cell:
@@ -262,10 +278,10 @@ class MoveSpec(StrictModel):
 
     name: str = ""
     type: Literal["joint", "linear"]
-    joints: list[float] | None = None  # deg, target of a joint move
+    joints: Joints | None = None  # deg, target of a joint move
     pose: Pose | None = None  # TCP target in the world (mm, deg); required for linear moves
     speed: Annotated[float, Field(gt=0)] = 100.0  # joint: % of max joint speed; linear: mm/s
-    zone: Annotated[float, Field(ge=0)] = 0.0  # blend radius [mm]; 0 = exact stop (fine)
+    zone: Annotated[float, B.span(B.ZONE_MM, "mm")] = 0.0  # blend radius [mm]; 0 = exact stop
 
     @model_validator(mode="after")
     def _target(self) -> MoveSpec:
@@ -273,8 +289,16 @@ class MoveSpec(StrictModel):
             raise ValueError("give exactly one target: 'joints' [deg] or 'pose' {xyz mm, rpy deg}")
         if self.type == "linear" and self.pose is None:
             raise ValueError("a linear move needs a 'pose' target")
-        if self.type == "joint" and self.speed > 100:
-            raise ValueError(f"a joint move's speed is a percentage (0, 100], got {self.speed}")
+        speed = (
+            B.span(B.JOINT_MOVE_PERCENT_OPEN, "%", lo_open=True)
+            if self.type == "joint"
+            else B.span(B.LINEAR_SPEED_MM_S, "mm/s")
+        )
+        try:
+            speed.check(self.speed)
+        except ValueError as exc:
+            unit = "% of the joint speed limits" if self.type == "joint" else "mm/s"
+            raise ValueError(f"speed: {exc} (a {self.type} move's speed is in {unit})") from None
         return self
 
     def to_si(self) -> MoveSI:
@@ -293,8 +317,8 @@ class ProgramSpec(StrictModel):
     """A robot program: start joints and moves; planned into a jerk-limited trajectory."""
 
     name: str = "main"
-    start: list[float] | None = None  # deg; default: the robot's stored joints
-    moves: list[MoveSpec] = Field(default_factory=list)
+    start: Joints | None = None  # deg; default: the robot's stored joints
+    moves: Annotated[list[MoveSpec], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
 
     @model_validator(mode="after")
     def _name(self) -> ProgramSpec:

@@ -19,10 +19,11 @@ from workbench.errors import InputError
 from workbench.polishing.choices import MeshUnits, Pattern
 from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.orientation import instability_message
-from workbench.project.common import Pose, Positive, StrictModel
+from workbench.project import bounds as B
+from workbench.project.common import Pose, Seed, StrictModel
 from workbench.project.units import MM, pose_to_matrix
 
-NonNegative = Annotated[float, Field(ge=0)]
+Gain = Annotated[float, B.span(B.GAIN)]  # >= 0, in the gain's own unit
 F64 = NDArray[np.float64]
 
 
@@ -35,10 +36,11 @@ class OrientationLoopSpec(StrictModel):
     the loop unstable at the controller's rate and latency are refused (`ForceControllerSpec`)."""
 
     enabled: bool = True  # off: the tool z is held along the planned normal
-    kp: NonNegative = 40.0  # [1/s]
-    kd: NonNegative = 0.05  # [-] on the error rate
-    ki: NonNegative = 0.0  # [1/s²]
-    max_speed: Positive = 90.0  # [deg/s] limit on the commanded angular velocity
+    kp: Gain = 40.0  # [1/s]
+    kd: Gain = 0.05  # [-] on the error rate
+    ki: Gain = 0.0  # [1/s²]
+    max_speed: Annotated[float, B.span(B.ANGULAR_SPEED_DEG_S, "deg/s")] = 90.0
+    # [deg/s] limit on the commanded angular velocity
 
     @model_validator(mode="after")
     def _some_gain(self) -> OrientationLoopSpec:
@@ -53,14 +55,17 @@ class OrientationLoopSpec(StrictModel):
 class ForceControllerSpec(StrictModel):
     """Gains of the force/position hybrid controller (seed 004, eqs. 5-7) and robot limits."""
 
-    control_rate: Positive = 250.0  # [Hz] controller and speedl command rate
-    latency: NonNegative = 8.0  # [ms] from command to motion
-    kpp: NonNegative = 8.0  # [1/s] position loop P gain
-    kpd: NonNegative = 0.05  # [-] position loop D gain (on the error rate)
-    kfp: NonNegative = 6.0  # [(mm/s)/N] force loop P gain
-    kfi: NonNegative = 50.0  # [(mm/s)/(N s)] force loop I gain
-    max_speed: Positive = 250.0  # [mm/s] speed limit of the commanded TCP velocity
-    max_accel: Positive = 4000.0  # [mm/s²] limit on the change of the command
+    control_rate: Annotated[float, B.span(B.CONTROL_RATE_HZ, "Hz")] = 250.0
+    # [Hz] controller and speedl command rate
+    latency: Annotated[float, B.span(B.LATENCY_MS, "ms")] = 8.0  # [ms] from command to motion
+    kpp: Gain = 8.0  # [1/s] position loop P gain
+    kpd: Gain = 0.05  # [-] position loop D gain (on the error rate)
+    kfp: Gain = 6.0  # [(mm/s)/N] force loop P gain
+    kfi: Gain = 50.0  # [(mm/s)/(N s)] force loop I gain
+    max_speed: Annotated[float, B.span(B.FEED_MM_S, "mm/s")] = 250.0
+    # [mm/s] speed limit of the commanded TCP velocity
+    max_accel: Annotated[float, B.span(B.TCP_ACCEL_MM_S2, "mm/s²")] = 4000.0
+    # [mm/s²] limit on the change of the command
     orientation: OrientationLoopSpec = Field(default_factory=OrientationLoopSpec)
 
     @field_validator("orientation")
@@ -71,6 +76,13 @@ class ForceControllerSpec(StrictModel):
         rate, latency = info.data.get("control_rate"), info.data.get("latency")
         if not v.enabled or rate is None or latency is None:
             return v  # off, or the rate or latency is already refused by its own field
+        cycles = rate * latency * 1e-3
+        if cycles > B.LATENCY_MAX_CYCLES:
+            raise ValueError(
+                f"latency {latency:g} ms at control_rate {rate:g} Hz is {cycles:.3g} control "
+                f"cycles, above the {B.LATENCY_MAX_CYCLES} the stability check handles "
+                "(workbench.project.bounds.LATENCY_MAX_CYCLES); lower the latency or the rate"
+            )
         msg = instability_message(v.kp, v.kd, v.ki, rate, latency * 1e-3, ("kp", "kd", "ki"))
         if msg is not None:
             raise ValueError(msg)
@@ -89,15 +101,21 @@ class ForceControllerSpec(StrictModel):
 class ContactSpec(StrictModel):
     """The compliant contact of the simulation: spring-damper, friction, form error, sensor."""
 
-    stiffness: Positive = 5000.0  # k [N/m]; the force offset is D = F/k
-    damping: NonNegative = 10.0  # c [N s/m]
-    friction: NonNegative = 0.3  # mu [-], Coulomb
-    lateral_stiffness: Positive = 2.0e5  # [N/m] tool tip compliance against friction
-    form_error: NonNegative = 0.3  # [mm] amplitude of the surface form error along the normal
-    form_wavelength: Positive = 60.0  # [mm] its wavelength along the path
-    noise_std: NonNegative = 0.5  # [N] force sensor noise, standard deviation
-    filter_cutoff: Positive = 40.0  # [Hz] first-order low-pass of the force sensor
-    seed: Annotated[int, Field(ge=0)] = 0  # noise generator seed
+    stiffness: Annotated[float, B.span(B.STIFFNESS_N_M, "N/m")] = 5000.0
+    # k [N/m]; the force offset is D = F/k
+    damping: Annotated[float, B.span(B.DAMPING_N_S_M, "N s/m")] = 10.0  # c [N s/m]
+    friction: Annotated[float, B.span(B.FRICTION)] = 0.3  # mu [-], Coulomb
+    lateral_stiffness: Annotated[float, B.span(B.STIFFNESS_N_M, "N/m")] = 2.0e5
+    # [N/m] tool tip compliance against friction
+    form_error: Annotated[float, B.span(B.FORM_ERROR_MM, "mm")] = 0.3
+    # [mm] amplitude of the surface form error along the normal
+    form_wavelength: Annotated[float, B.span(B.WAVELENGTH_MM, "mm")] = 60.0
+    # [mm] its wavelength along the path
+    noise_std: Annotated[float, B.span(B.NOISE_N, "N")] = 0.5
+    # [N] force sensor noise, standard deviation
+    filter_cutoff: Annotated[float, B.span(B.CUTOFF_HZ, "Hz")] = 40.0
+    # [Hz] first-order low-pass of the force sensor
+    seed: Seed = 0  # noise generator seed
 
 
 class PolishingSpec(StrictModel):
@@ -107,14 +125,19 @@ class PolishingSpec(StrictModel):
     units: MeshUnits = "mm"  # units of the mesh file
     pose: Pose = Field(default_factory=Pose)  # workpiece frame in the world
     pattern: Pattern = "spiral"
-    step: Positive = 2.0  # [mm] chord between consecutive path points
-    spacing: Positive = 10.0  # [mm] distance between neighbouring passes on the surface
-    tool_radius: Positive = 6.0  # [mm] radius of the polishing pad (coverage)
-    lead_height: Positive = 10.0  # [mm] height of the first lead-in / last lead-out point
+    step: Annotated[float, B.span(B.PATH_STEP_MM, "mm")] = 2.0
+    # [mm] chord between consecutive path points
+    spacing: Annotated[float, B.span(B.PASS_SPACING_MM, "mm")] = 10.0
+    # [mm] distance between neighbouring passes on the surface
+    tool_radius: Annotated[float, B.span(B.TOOL_RADIUS_MM, "mm")] = 6.0
+    # [mm] radius of the polishing pad (coverage)
+    lead_height: Annotated[float, B.span(B.LEAD_HEIGHT_MM, "mm")] = 10.0
+    # [mm] height of the first lead-in / last lead-out point
     n_lead: Annotated[int, Field(ge=1, le=50)] = 3  # lead-in and lead-out points each
-    feed: Positive = 10.0  # [mm/s] feed speed along the path
-    dwell: NonNegative = 0.5  # [s] at the first point before the feed starts (force build-up)
-    max_force: Positive = 100.0  # [N] the tool's force limit
+    feed: Annotated[float, B.span(B.FEED_MM_S, "mm/s")] = 10.0  # [mm/s] feed along the path
+    dwell: Annotated[float, B.span(B.DWELL_S, "s")] = 0.5
+    # [s] at the first point before the feed starts (force build-up)
+    max_force: Annotated[float, B.span(B.FORCE_N, "N")] = 100.0  # [N] the tool's force limit
     force: float = 20.0  # [N] target contact force, in (0, max_force]
     controller: ForceControllerSpec = Field(default_factory=ForceControllerSpec)
     contact: ContactSpec = Field(default_factory=ContactSpec)
@@ -123,8 +146,10 @@ class PolishingSpec(StrictModel):
     @classmethod
     def _force_in_range(cls, v: float, info: ValidationInfo) -> float:
         limit = info.data.get("max_force")
-        if not v > 0:
-            raise ValueError(f"must be > 0 N (the target contact force), got {v:g}")
+        if not v >= B.FORCE_N[0]:
+            raise ValueError(
+                f"must be >= {B.FORCE_N[0]:g} N (the target contact force), got {v:g}"
+            )
         if limit is not None and v > limit:
             raise ValueError(
                 f"{v:g} N is above the tool's limit max_force = {limit:g} N; give a force in "

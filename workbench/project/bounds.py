@@ -1,0 +1,190 @@
+"""The physical range of every number in a project file, and the work budgets of the plans.
+
+One module, so the ranges are named once and listed in docs/security.md ("Input bounds");
+`tests/test_bounds.py` checks that the docs name every constant here and that the example
+projects lie inside them. Units are the project file's (mm, deg, s, N, Hz) unless a name
+says otherwise. A range is ``(lo, hi)``, both ends allowed unless the name ends in ``_OPEN``
+(lower end excluded: the value must be > lo).
+
+`Range` is the pydantic annotation that checks one of them at load, so a value outside
+names its field path (``polishing.controller.latency: 1e+09 ms is out of range ...``) and
+the JSON schema publishes the range (``minimum``/``maximum``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler
+from pydantic.json_schema import JsonSchemaValue
+from pydantic_core import CoreSchema, core_schema
+
+# -- the cell -------------------------------------------------------------------------------------
+CELL_HALF_EXTENT_MM = 100_000.0
+"""Largest |x|, |y|, |z| of any position in the world or a local frame [mm] (a 200 m cube)."""
+SIZE_MM = (0.1, 200_000.0)
+"""Edge lengths, radii and heights of cell objects, tools and parts [mm]: > 0.1 mm, at most the cell."""
+ANGLE_DEG = 3600.0
+"""Largest |angle| of an orientation (rpy), a DH offset or twist, a grasp yaw [deg] (ten turns)."""
+JOINT_DEG = 720.0
+"""Largest |joint value| and |joint limit| [deg] (two turns each way: at most 5 turns per joint)."""
+MESH_SCALE = (1e-6, 10.0)
+"""Mesh file units to metres (0.001 for mm, 1 for m)."""
+MAX_DOF = 16
+"""Most joints (DH rows, per-joint lists) a robot may have."""
+MAX_ITEMS = 10_000
+"""Most entries of a list in a project (cell objects, moves, parts, polygon points, via poses)."""
+MAX_INDEX = 10_000
+"""Largest integer index (a bend's flange edge)."""
+MAX_SEED = 2**32 - 1
+"""Largest random seed."""
+JSON_MAX_DEPTH = 64
+"""Deepest nesting of objects and lists in a project or part file."""
+
+# -- robot rates (per joint) ------------------------------------------------------------------------
+JOINT_SPEED_DEG_S = (0.1, 100_000.0)
+"""A joint's speed limit [deg/s]."""
+JOINT_ACCEL_DEG_S2 = (1.0, 1e7)
+"""A joint's acceleration limit [deg/s²]."""
+JOINT_JERK_DEG_S3 = (10.0, 1e9)
+"""A joint's jerk limit [deg/s³]."""
+
+# -- program moves ----------------------------------------------------------------------------------
+JOINT_MOVE_PERCENT_OPEN = (0.0, 100.0)
+"""A joint move's speed [% of the joint speed limits]: > 0, at most 100."""
+LINEAR_SPEED_MM_S = (0.1, 10_000.0)
+"""A linear move's TCP speed [mm/s]."""
+ZONE_MM = (0.0, 1_000.0)
+"""A move's blend radius [mm] (0: exact stop)."""
+
+# -- bending ------------------------------------------------------------------------------------------
+THICKNESS_MM = (0.1, 100.0)
+"""Sheet thickness [mm]."""
+INNER_RADIUS_MM = (0.05, 10_000.0)
+"""A bend's inner radius [mm] (also at least 0.5 x thickness, Table 1)."""
+DIE_LENGTH_MM = (1.0, 200_000.0)
+"""The die's longest bend line [mm]."""
+
+# -- assembly -----------------------------------------------------------------------------------------
+PLANNER_CELL_MM = (0.1, 200_000.0)
+"""Assembly planner: the part subdivision cell, the ant's grid spacing `dis` and the
+carrying robot's resolution [mm] (see also ASSEMBLY_MAX_CELLS)."""
+PLANNER_STEPS = (1, 1_000)
+"""Assembly planner: the ant's segments along the dominant axis."""
+PLANNER_TIME_S_OPEN = (0.0, 3_600.0)
+"""Assembly planner: the RRT planners' time limit [s]."""
+APPROACH_MM = (0.0, 10_000.0)
+"""Assembly task: approach and retreat distances along the TCP z [mm]."""
+SPEED_PERCENT_OPEN = (0.0, 100.0)
+"""Assembly: the robots' speed [% of their joint limits]."""
+
+# -- polishing -----------------------------------------------------------------------------------------
+PATH_STEP_MM = (0.1, 1_000.0)
+"""Polishing: chord between consecutive path points [mm]."""
+PASS_SPACING_MM = (0.5, 10_000.0)
+"""Polishing: distance between neighbouring passes [mm] (see also POLISH_MAX_POINTS)."""
+TOOL_RADIUS_MM = (0.5, 1_000.0)
+"""Polishing: the pad's radius [mm]."""
+LEAD_HEIGHT_MM = (0.1, 1_000.0)
+"""Polishing: height of the first lead-in and last lead-out point [mm]."""
+FEED_MM_S = (0.1, 10_000.0)
+"""Polishing: feed, the controller's speed limit [mm/s]."""
+TCP_ACCEL_MM_S2 = (1.0, 1e7)
+"""Polishing: the controller's limit on the change of the command [mm/s²]."""
+DWELL_S = (0.0, 60.0)
+"""Polishing: dwell at the first point [s]."""
+FORCE_N = (0.001, 100_000.0)
+"""Polishing: target force and the tool's force limit [N] (force must be > 0.001 N)."""
+CONTROL_RATE_HZ = (1.0, 10_000.0)
+"""Polishing: the controller's rate [Hz]."""
+LATENCY_MS = (0.0, 1_000.0)
+"""Polishing: command-to-motion latency [ms] (see also LATENCY_MAX_CYCLES)."""
+GAIN = (0.0, 1e6)
+"""Polishing: every controller gain (position, force and orientation loops), in its own unit."""
+ANGULAR_SPEED_DEG_S = (0.1, 100_000.0)
+"""Polishing: the orientation loop's angular speed limit [deg/s]."""
+STIFFNESS_N_M = (1.0, 1e10)
+"""Polishing contact: normal and lateral stiffness [N/m]."""
+DAMPING_N_S_M = (0.0, 1e8)
+"""Polishing contact: damping [N s/m]."""
+FRICTION = (0.0, 10.0)
+"""Polishing contact: Coulomb friction coefficient [-]."""
+FORM_ERROR_MM = (0.0, 100.0)
+"""Polishing contact: amplitude of the surface form error [mm]."""
+WAVELENGTH_MM = (1.0, 200_000.0)
+"""Polishing contact: wavelength of the form error [mm]."""
+NOISE_N = (0.0, 10_000.0)
+"""Polishing contact: force sensor noise, standard deviation [N]."""
+CUTOFF_HZ = (0.1, 100_000.0)
+"""Polishing contact: the force sensor's low-pass cutoff [Hz]."""
+
+# -- work budgets (refused before the work starts, with the estimate) ---------------------------------
+LATENCY_MAX_CYCLES = 1_000
+"""Polishing: latency x control rate, in whole control cycles (the stability check's matrix
+grows with its square)."""
+POLISH_MAX_POINTS = 200_000
+"""Polishing: path points estimated from the workpiece's area, the spacing and the step."""
+SIMULATION_MAX_STEPS = 5_000_000
+"""Polishing: controller steps of a simulation (path time x control rate)."""
+ASSEMBLY_MAX_CELLS = 1_000_000
+"""Assembly: cubic cells a part is subdivided into (its bounding box / cell_size³)."""
+ASSEMBLY_MAX_GRID = 1_000_000
+"""Assembly (ant): candidate points, step x (the part's cross-section / dis²)."""
+TRAJECTORY_MAX_SAMPLES = 2_000_000
+"""Motion: samples of one trajectory (its duration / dt)."""
+PATH_MAX_POSES = 1_000_000
+"""Motion: interpolated poses of a program's linear moves (length / step)."""
+
+
+@dataclass(frozen=True)
+class Range:
+    """A pydantic annotation: the number lies in [lo, hi] (or (lo, hi] with `lo_open`).
+
+    The message names the value, the range and its unit; pydantic prefixes the field path."""
+
+    lo: float
+    hi: float
+    unit: str = ""
+    lo_open: bool = False
+
+    def check(self, v: Any) -> Any:
+        ok = (v > self.lo if self.lo_open else v >= self.lo) and v <= self.hi
+        if not ok:
+            u = f" {self.unit}" if self.unit else ""
+            left = "(" if self.lo_open else "["
+            raise ValueError(
+                f"{v:g}{u} is out of range; allowed {left}{self.lo:g}, {self.hi:g}]{u}"
+            )
+        return v
+
+    def __get_pydantic_core_schema__(
+        self, source: Any, handler: GetCoreSchemaHandler
+    ) -> CoreSchema:
+        return core_schema.no_info_after_validator_function(self.check, handler(source))
+
+    def __get_pydantic_json_schema__(
+        self, schema: CoreSchema, handler: GetJsonSchemaHandler
+    ) -> JsonSchemaValue:
+        out = handler(schema)
+        out["exclusiveMinimum" if self.lo_open else "minimum"] = self.lo
+        out["maximum"] = self.hi
+        return out
+
+
+def span(bounds: tuple[float, float], unit: str = "", *, lo_open: bool = False) -> Range:
+    """Return the `Range` of a ``(lo, hi)`` constant (lo excluded with `lo_open`)."""
+    return Range(bounds[0], bounds[1], unit, lo_open)
+
+
+def symmetric(limit: float, unit: str = "") -> Range:
+    """Return the `Range` [-limit, limit]."""
+    return Range(-limit, limit, unit)
+
+
+def budget_message(what: str, estimate: float, limit: float, name: str, fix: str) -> str:
+    """Return the message of work refused before it starts: the estimate, the budget, the fix."""
+    return (
+        f"{what}: about {estimate:.3g} would be needed, above the budget of {limit:.3g} "
+        f"(workbench.project.bounds.{name}); {fix}"
+    )
