@@ -84,7 +84,6 @@ from workbench.motion.programs.model import (
     ToolData,
     WaitInput,
     WaitTime,
-    WorkObject,
     check_program,
 )
 from workbench.motion.programs.names import NameTable
@@ -98,8 +97,8 @@ PREDEFINED_ZONES_MM = {f"z{z}": (0.3 if z == 0 else float(z)) for z in _ZONES}
 #: Predefined speeddata v_tcp [mm/s]; vmax is taken as 7000 mm/s.
 PREDEFINED_SPEEDS_MM_S = {
     f"v{v}": float(v)
-    for v in (5, 10, 20, 30, 40, 50, 60, 80, 100, 150, 200, 300, 400, 500, 600, 800, 1000,
-              1500, 2000, 2500, 3000, 4000, 5000, 6000, 7000)
+    for v in "5 10 20 30 40 50 60 80 100 150 200 300 400 500 600 800 1000 1500 2000 2500 3000"
+    " 4000 5000 6000 7000".split()
 } | {"vmax": 7000.0}
 
 #: RAPID's reserved words (Technical Reference Manual - RAPID kernel, "Reserved words") plus
@@ -114,7 +113,10 @@ RAPID_RESERVED = (
     " Stop Offs RelTool CRobT CJointT TPWrite"
     " robtarget jointtarget tooldata wobjdata loaddata speeddata zonedata confdata syncident"
     " tasks num dnum bool string pos orient pose signaldi signaldo"
-    " main tool0 wobj0 load0 fine " + " ".join(PREDEFINED_ZONES_MM) + " " + " ".join(PREDEFINED_SPEEDS_MM_S)
+    " main tool0 wobj0 load0 fine "
+    + " ".join(PREDEFINED_ZONES_MM)
+    + " "
+    + " ".join(PREDEFINED_SPEEDS_MM_S)
 ).split()
 MAX_NAME_LEN = 32
 
@@ -165,7 +167,9 @@ def configuration_of_cfx(cfx: int) -> ArmConfiguration:
     return ArmConfiguration(front, in_front_of_lower_arm, axis5_negative)
 
 
-def confdata(q_controller: np.ndarray, configuration: ArmConfiguration) -> tuple[int, int, int, int]:
+def confdata(
+    q_controller: np.ndarray, configuration: ArmConfiguration
+) -> tuple[int, int, int, int]:
     """Return [cf1, cf4, cf6, cfx] of controller joints (6,) [rad] and their arm configuration."""
     q = np.asarray(q_controller, float)
     return quadrant(q[0]), quadrant(q[3]), quadrant(q[5]), cfx_of(configuration)
@@ -251,7 +255,9 @@ class _Writer:
                 self.tools[name] = self._declare(
                     t.name,
                     "tool",
-                    lambda i: f"    {self.pers} tooldata {i}:=[TRUE,{_pose(t.T_flange_tcp)},{load}];",
+                    lambda i: (
+                        f"    {self.pers} tooldata {i}:=[TRUE,{_pose(t.T_flange_tcp)},{load}];"
+                    ),
                     "tool",
                 )
         return self.tools[name]
@@ -266,7 +272,9 @@ class _Writer:
                 self.wobjs[name] = self._declare(
                     w.name,
                     "wobj",
-                    lambda i: f'    {self.pers} wobjdata {i}:=[FALSE,TRUE,"",{frame},[[0,0,0],[1,0,0,0]]];',
+                    lambda i: (
+                        f'    {self.pers} wobjdata {i}:=[FALSE,TRUE,"",{frame},[[0,0,0],[1,0,0,0]]];'
+                    ),
                     "wobj",
                 )
         return self.wobjs[name]
@@ -282,7 +290,10 @@ class _Writer:
         conf = "[" + ",".join(str(c) for c in confdata(qc, tgt.configuration)) + "]"  # type: ignore[arg-type]
         pose = _pose(np.asarray(tgt.T_wobj_tcp, float))
         return self._declare(
-            tgt.name, "p", lambda i: f"    CONST robtarget {i}:=[{pose[1:-1]},{conf},{ext}];", "target"
+            tgt.name,
+            "p",
+            lambda i: f"    CONST robtarget {i}:=[{pose[1:-1]},{conf},{ext}];",
+            "target",
         )
 
     def signal(self, name: str) -> str:
@@ -337,7 +348,9 @@ class _Writer:
 
     def sync(self, s: SyncPoint) -> str:
         if s.name not in self.syncs:
-            self.syncs[s.name] = self._declare(s.name, "sync", lambda i: f"    VAR syncident {i};", "sync")
+            self.syncs[s.name] = self._declare(
+                s.name, "sync", lambda i: f"    VAR syncident {i};", "sync"
+            )
         return self.syncs[s.name]
 
     def task_list(self, robots: tuple[str, ...]) -> str:
@@ -376,7 +389,17 @@ class _Writer:
             notes += ("MultiMove: tooldata and wobjdata are TASK PERS (each task keeps its own)",)
             head.append(f"    ! note: {notes[-1]}")
         decl = [d for group in self.decl.values() for d in group]
-        lines = [*head, "", *decl, "", "    PROC main()", *self.body, "    ENDPROC", "ENDMODULE", ""]
+        lines = [
+            *head,
+            "",
+            *decl,
+            "",
+            "    PROC main()",
+            *self.body,
+            "    ENDPROC",
+            "ENDMODULE",
+            "",
+        ]
         return "\n".join(lines), notes
 
 
@@ -388,7 +411,8 @@ def write_rapid(program: RobotProgram) -> ExportedProgram:
     """
     # the flange (identity TCP, no load data) is tool0, which carries ABB's own load
     loaded = tuple(
-        replace(t, mass=_TOOL0_LOAD[0], cog=_TOOL0_LOAD[1]) if _is_flange(t) else t for t in program.tools
+        replace(t, mass=_TOOL0_LOAD[0], cog=_TOOL0_LOAD[1]) if _is_flange(t) else t
+        for t in program.tools
     )
     check_program(replace(program, tools=loaded), needs_mass=True)
     w = _Writer(program)
