@@ -53,9 +53,12 @@ wrist centre). Both flip at the same singularity, the stretched arm (ABB: axis 3
 Names (targets, tools, work objects, signals, the module) pass a `NameTable` of RAPID's
 reserved words (`RAPID_RESERVED`: the kernel's reserved words plus the instructions, data
 types and predefined data this post and its reader use), at most 32 characters; renames are
-in `ExportedProgram.notes` and as comments at the top of the module. Numbers: mm with 4
-decimals, degrees with 6, quaternions with 9 (RAPID's num is single precision on the
-controller; it keeps about 7 significant digits).
+in `ExportedProgram.notes` and as comments at the top of the module. Numbers: mm with 6
+decimals, degrees with 6, quaternions with 9, trailing zeros dropped: enough that re-solving
+a target gives the planned joints within 1e-6 rad even near the shoulder singularity (with 4
+decimals a target 0.2 m from axis 1 moved the joints by 1e-6 rad). The controller's num is
+single precision (about 7 significant digits, ~0.0001 mm at 1 m): it rounds further, so a
+controller's joints near a singularity can differ from the plan by more than the file's.
 
 `to_rapid(program: motion.program.Program)` is the previous post (kept until the export
 registry switches to `write_rapid`).
@@ -147,7 +150,7 @@ def _vec(xs, nd: int) -> str:  # noqa: ANN001
 
 def _pose(T: np.ndarray) -> str:
     """Return [[x,y,z] mm,[q1,q2,q3,q4]] of a (4, 4) transform [m]."""
-    return f"[{_vec(T[:3, 3] * 1000.0, 4)},{_vec(quaternion_wxyz(T[:3, :3]), 9)}]"
+    return f"[{_vec(T[:3, 3] * 1000.0, 6)},{_vec(quaternion_wxyz(T[:3, :3]), 9)}]"
 
 
 def quadrant(angle_rad: float) -> int:
