@@ -7,7 +7,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from workbench.errors import WorkbenchError
+from workbench.errors import ServerError, WorkbenchError
 
 DEFAULT_PROJECT = Path(__file__).resolve().parent.parent / "projects" / "mz07_cell.json"
 
@@ -22,6 +22,17 @@ def _parser() -> argparse.ArgumentParser:
         "--host", default="127.0.0.1", help="address to bind (default: loopback only)"
     )
     serve.add_argument("--port", type=int, default=8080, help="port (default: 8080)")
+    serve.add_argument("--token", help="the access token the URL carries (default: a random one)")
+    serve.add_argument(
+        "--no-token", action="store_true", help="no access token (only with a loopback --host)"
+    )
+    serve.add_argument(
+        "--allow-origin",
+        action="append",
+        default=[],
+        metavar="ORIGIN",
+        help="another origin whose pages may connect, e.g. https://cell-pc.example:8443 (repeat)",
+    )
 
     check = sub.add_parser("check", help="validate a project and report the collision status")
     check.add_argument("project", help="project JSON")
@@ -37,6 +48,14 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the program even if the plan collides or breaks a limit",
     )
+    for p in (serve, check, export):
+        p.add_argument(
+            "--allow-dir",
+            action="append",
+            default=[],
+            metavar="DIR",
+            help="a folder the project's files may lie in besides its own (repeat)",
+        )
     return parser
 
 
@@ -66,7 +85,7 @@ def _export(args: argparse.Namespace) -> int:
     from workbench.atomic_file import atomic_write_text
     from workbench.service import Workbench
 
-    wb = Workbench.open(args.project)
+    wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
     plan = wb.plan_motion(progress=_Progress())
     print(f"{args.project}: {plan.summary()}")
     if not plan.ok and not args.force:
@@ -87,7 +106,17 @@ def _serve(args: argparse.Namespace) -> int:
     project = args.project
     if project is None and DEFAULT_PROJECT.is_file():
         project = str(DEFAULT_PROJECT)
-    serve(project, host=args.host, port=args.port)
+    if args.no_token and args.token:
+        raise ServerError("--token and --no-token: give one of them")
+    serve(
+        project,
+        host=args.host,
+        port=args.port,
+        token=args.token,
+        no_token=args.no_token,
+        allowed_origins=args.allow_origin,
+        allowed_dirs=args.allow_dir,
+    )
     return 0
 
 
@@ -95,7 +124,7 @@ def _check(args: argparse.Namespace) -> int:
     from workbench.project.units import to_deg, to_mm
     from workbench.service import Workbench
 
-    wb = Workbench.open(args.project)
+    wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
     report = wb.collision_status()
     q = ", ".join(f"{v:.2f}" for v in to_deg(wb.joints))
     print(

@@ -16,6 +16,7 @@ import pytest
 from browser_helpers import PAGE_TIMEOUT_MS, wait_for
 
 from workbench.gui.app import WorkbenchApp, start_server
+from workbench.gui.server_guard import AccessPolicy, new_token
 from workbench.service import Workbench
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -72,7 +73,8 @@ def launch(browser: object, request: pytest.FixtureRequest) -> Iterator[object]:
 
     def _launch(project: Path) -> tuple[WorkbenchApp, object]:
         wb = Workbench.open(project)
-        server = start_server("127.0.0.1", free_port())
+        access = AccessPolicy(new_token())  # the page opens the URL `workbench serve` prints
+        server = start_server("127.0.0.1", free_port(), access=access)
         application = WorkbenchApp(server, wb)
         context = browser.new_context(viewport={"width": 1280, "height": 800})  # type: ignore[attr-defined]
         # Every action and wait of the page has this limit unless a test says otherwise.
@@ -83,6 +85,7 @@ def launch(browser: object, request: pytest.FixtureRequest) -> Iterator[object]:
         pg.goto(
             f"http://127.0.0.1:{server.get_port()}/?hideViserLogo"
             "&initialCameraPosition=1.9,-1.6,1.3&initialCameraLookAt=0.3,0,0.45"
+            f"&token={access.token}"
         )
         wait_for(lambda: len(server.get_clients()) > 0, what="the page to connect")
         pg.get_by_role("tab", name="Robot").wait_for()

@@ -40,8 +40,8 @@ def test_page_shows_robot_and_jog_moves_it(page, app: WorkbenchApp) -> None:  # 
 
 
 def test_collision_turns_links_red_and_reports(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
-    # J2 negative tips the arm forward into the table in front of the robot.
-    set_slider(page, "J2 [deg]", -60.0)
+    # J2 below 90 (the upright arm on the NACHI pendant) tips the arm forward into the table.
+    set_slider(page, "J2 [deg]", 30.0)
     wait_for(lambda: app.wb.collision_status().in_collision, what="a collision on the server")
     hit = app.wb.collision_status().colliding_bodies()
     free = [n for n in app.scene.links if n not in hit and n != "tool"]
@@ -110,13 +110,15 @@ def test_switching_ik_configuration_keeps_the_tcp(page, app: WorkbenchApp) -> No
     assert np.allclose(app.wb.tcp_pose(), T, atol=1e-9), (
         "the TCP moved when the configuration changed"
     )
-    # The sliders in the page show the new joints.
+    # The sliders in the page show the new joints, as the controller does (J2 = model + 90).
     j2 = page.get_by_role("slider").nth(1).get_attribute("aria-valuenow")
+    j2_ctrl = np.degrees(app.wb.robot.convention.to_controller(app.wb.joints)[1])
+    assert abs(j2_ctrl - (np.degrees(app.wb.joints[1]) + 90.0)) < 1e-9
     wait_for(
         lambda: (
             abs(
                 float(page.get_by_role("slider").nth(1).get_attribute("aria-valuenow") or "nan")
-                - np.degrees(app.wb.joints[1])
+                - np.degrees(app.wb.robot.convention.to_controller(app.wb.joints)[1])
             )
             < 0.1
         ),

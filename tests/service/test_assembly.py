@@ -28,6 +28,7 @@ from workbench.errors import (
     UnreachableError,
 )
 from workbench.geometry.transforms import xyz_rpy_to_transform
+from workbench.project.paths import ProjectFolders
 
 ROOT = Path(__file__).resolve().parents[2]
 PROJECT = ROOT / "projects" / "assembly_cell.json"
@@ -242,7 +243,7 @@ def test_a_part_mesh_that_is_not_closed_is_refused(tmp_path):
     open_box.export(tmp_path / "open.stl")
     data = _data()
     data["assembly"]["parts"][0]["path"] = str(tmp_path / "open.stl")
-    w2 = Workbench.from_dict(data, base_dir=PROJECT.parent)
+    w2 = Workbench.from_dict(data, base_dir=ProjectFolders(PROJECT.parent, [tmp_path]))
     with pytest.raises(MeshError, match=r"assembly.parts\[0\].path.*not closed"):
         _ = w2.assembly.parts
     obstacle = trimesh.creation.box(extents=[0.1, 0.1, 0.1])

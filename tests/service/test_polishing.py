@@ -11,6 +11,7 @@ import copy
 import json
 import re
 from pathlib import Path
+from tempfile import gettempdir
 
 import numpy as np
 import pytest
@@ -24,6 +25,7 @@ from workbench.polishing import (
     simulate_hybrid_force_control,
     spiral_toolpath,
 )
+from workbench.project.paths import ProjectFolders
 from workbench.project.units import pose_to_matrix
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -38,7 +40,8 @@ def _data() -> dict:
 def _wb(**polishing: object) -> Workbench:
     data = _data()
     data["polishing"].update(polishing)
-    return Workbench.from_dict(data, base_dir=EXAMPLE.parent)
+    # The tests' own files lie in the temporary folder: allowed beside the project's folder.
+    return Workbench.from_dict(data, base_dir=ProjectFolders(EXAMPLE.parent, [gettempdir()]))
 
 
 @pytest.fixture(scope="module")
@@ -107,7 +110,7 @@ def test_empty_and_non_mesh_files_are_refused(tmp_path: Path) -> None:
     # Through the project file: the same error when the section's file is loaded.
     with pytest.raises(MeshError, match=r"polishing\.workpiece.*is empty"):
         _wb(workpiece=str(empty)).polishing.plan_path()
-    with pytest.raises(MeshError, match=r"polishing\.workpiece.*does not exist"):
+    with pytest.raises(MeshError, match=r"polishing\.workpiece.*(does not exist|not found)"):
         _wb(workpiece="missing.stl").polishing.plan_path()
 
 

@@ -86,10 +86,11 @@ def test_collision_with_the_table_is_named() -> None:
 
 def test_save_writes_joints_in_degrees_atomically(tmp_path: Path) -> None:
     w = Workbench.open(EXAMPLE)
-    w.set_joints(np.radians([5, -10, 15, 20, 25, 30]))
+    w.set_joints(np.radians([5, -10, 15, 20, 25, 30]))  # the model's convention
     out = w.save(tmp_path / "saved.json")
     data = json.loads(out.read_text())
-    assert np.allclose(data["robot"]["joints"], [5, -10, 15, 20, 25, 30])
+    # the file holds the NACHI controller's values: J2 + 90, J5 -> -J5 - 90, J6 -> -J6
+    assert data["robot"]["joints"] == [5, 80, 15, 20, -115, -30]
     again = Workbench.open(out)
     assert np.allclose(again.joints, w.joints)
 
@@ -121,7 +122,7 @@ def test_replace_project_with_bad_one_keeps_the_old() -> None:
     data["cell"]["objects"].append({"name": "jig", "shape": "mesh", "path": "/nope.stl"})
     from workbench.project import project_from_dict
 
-    with pytest.raises(MeshError):
+    with pytest.raises(InputError, match="outside the project's folder"):
         w.replace_project(project_from_dict(data))
     assert w.project.name == name and len(w.cell) == 5
 

@@ -6,11 +6,13 @@ import logging
 import socket
 import threading
 import time
+from collections.abc import Sequence
 from pathlib import Path
 
 import viser
 
 from workbench.errors import ServerError
+from workbench.gui import uploads
 from workbench.gui.assembly_panel import AssemblyPanel
 from workbench.gui.bending_panel import BendingPanel
 from workbench.gui.collision_panel import CollisionPanel
@@ -19,6 +21,14 @@ from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.polishing_panel import PolishingPanel
 from workbench.gui.project_panel import ProjectPanel
 from workbench.gui.scene import RobotScene
+from workbench.gui.server_guard import (
+    PINNED_VISER,
+    AccessPolicy,
+    guard_gui_messages,
+    guarded_serve,
+    is_loopback,
+    new_token,
+)
 from workbench.gui.timeline import Timeline
 from workbench.service import Workbench
 
@@ -41,14 +51,39 @@ def ensure_port_free(host: str, port: int) -> None:
             ) from None
 
 
-def start_server(host: str = "127.0.0.1", port: int = 8080) -> viser.ViserServer:
-    """Return a running viser server bound exactly to `host:port`; raises ServerError otherwise."""
+def start_server(
+    host: str = "127.0.0.1", port: int = 8080, *, access: AccessPolicy | None = None
+) -> viser.ViserServer:
+    """Return a running viser server bound exactly to `host:port`; raises ServerError otherwise.
+
+    Only requests `access` allows reach it (default: a new random token; see server_guard.py):
+    `access.url(host, port)` is the page's address. GUI messages are guarded too.
+    """
+    access = access if access is not None else AccessPolicy(new_token())
+    if access.token is None and not is_loopback(host):
+        raise ServerError(
+            f"--no-token: refused with --host {host}; a server reachable from other machines"
+            " needs its token (drop --no-token, or bind to 127.0.0.1)"
+        )
     ensure_port_free(host, port)
-    server = viser.ViserServer(host=host, port=port, label="Robot workbench", verbose=False)
+    access.port = port
+    if viser.__version__ != PINNED_VISER:
+        log.warning(
+            "viser %s: the access checks were written for viser %s", viser.__version__, PINNED_VISER
+        )
+    with guarded_serve(host, access):
+        server = viser.ViserServer(host=host, port=port, label="Robot workbench", verbose=False)
+    if not access.installed:
+        server.stop()
+        raise ServerError(
+            f"viser {viser.__version__} no longer starts its server where workbench/gui/"
+            "server_guard.py checks the token and origin; refusing to serve without them"
+        )
     if server.get_port() != port:
         actual = server.get_port()
         server.stop()
         raise ServerError(f"port {port} was taken while starting (viser moved to {actual}); retry")
+    guard_gui_messages(server)
     return server
 
 
@@ -108,20 +143,45 @@ class WorkbenchApp:
             self._build_workflows()
 
 
-def serve(project: str | Path | None, *, host: str = "127.0.0.1", port: int = 8080) -> None:
-    """Serve the workbench on `host:port` until interrupted (Ctrl-C)."""
+def serve(
+    project: str | Path | None,
+    *,
+    host: str = "127.0.0.1",
+    port: int = 8080,
+    token: str | None = None,
+    no_token: bool = False,
+    allowed_origins: Sequence[str] = (),
+    allowed_dirs: Sequence[str | Path] = (),
+) -> None:
+    """Serve the workbench on `host:port` until interrupted (Ctrl-C).
+
+    The printed URL carries the access token (`token`, default a random one; `no_token` only
+    with a loopback host); `allowed_origins` are other origins whose pages may connect;
+    `allowed_dirs` are folders the project's files may lie in besides its own (docs/security.md).
+    """
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
-    wb = (
-        Workbench.open(project)
-        if project is not None
-        else Workbench.from_dict({"schema_version": 1})
+    access = AccessPolicy(
+        None if no_token else (token or new_token()),
+        frozenset(o.strip().lower().rstrip("/") for o in allowed_origins),
     )
-    server = start_server(host, port)
+    if project is not None:
+        wb = Workbench.open(project, allowed_dirs=list(allowed_dirs))
+    else:
+        wb = Workbench.from_dict({"schema_version": 1})
+        wb.folders = wb.folders.with_allowed(*allowed_dirs)
+    server = start_server(host, port, access=access)
     WorkbenchApp(server, wb)
-    shown = "localhost" if host in ("127.0.0.1", "0.0.0.0") else host
-    print(f"workbench: serving {wb.project.name!r} on http://{shown}:{port}", flush=True)
+    shown = "localhost" if host in ("127.0.0.1", "0.0.0.0", "::") else host
+    print(f"workbench: serving {wb.project.name!r} on {access.url(shown, port)}", flush=True)
+    if not is_loopback(host):
+        print(
+            f"workbench: WARNING: listening on {host}: anyone who has this URL can edit the"
+            " project and save it on this machine; share it only with people you trust",
+            flush=True,
+        )
     try:
         while True:
             time.sleep(3600)
     finally:
         server.stop()
+        uploads.remove_all()

@@ -1,4 +1,8 @@
-"""The "Robot" tab: joint sliders [deg], the TCP gizmo driving IK, the IK configurations, status."""
+"""The "Robot" tab: joint sliders [deg], the TCP gizmo driving IK, the IK configurations, status.
+
+The sliders show the robot controller's joint values (`RobotModel.convention`), the values the
+project file stores and the programs write; the workbench works in the model's.
+"""
 
 from __future__ import annotations
 
@@ -38,10 +42,11 @@ class JogPanel:
     def build(self) -> None:
         """Create the sliders, dropdown, gizmo and status for the current project."""
         s, wb = self.server, self.wb
-        q = wb.joints * DEG_PER_RAD
+        q = self._controller_deg()
+        limits = wb.robot.convention.limits_to_controller(wb.robot.limits) * DEG_PER_RAD
         self.sliders = []
         for j in range(wb.robot.dof):
-            lo, hi = wb.robot.limits[j] * DEG_PER_RAD
+            lo, hi = limits[j]
             slider = s.gui.add_slider(
                 f"J{j + 1} [deg]",
                 min=float(np.floor(lo * 10) / 10),
@@ -74,7 +79,8 @@ class JogPanel:
     def _on_slider(self, _event: object) -> None:
         if self._syncing:
             return
-        self.wb.set_joints(np.array([sl.value for sl in self.sliders]) / DEG_PER_RAD)
+        q_ctrl = np.array([sl.value for sl in self.sliders]) / DEG_PER_RAD
+        self.wb.set_joints(self.wb.robot.convention.to_model(q_ctrl))
         self.refresh()
 
     def _on_config(self, _event: object) -> None:
@@ -99,10 +105,14 @@ class JogPanel:
         self.refresh()
 
     # -- state -> widgets ---------------------------------------------------------------
+    def _controller_deg(self) -> np.ndarray:
+        """Return the current joints as the controller shows them [deg]."""
+        return self.wb.robot.convention.to_controller(self.wb.joints) * DEG_PER_RAD
+
     def refresh(self) -> None:
         """Put the sliders, gizmo, dropdown and status in line with the workbench's state."""
         wb = self.wb
-        q = wb.joints * DEG_PER_RAD
+        q = self._controller_deg()
         T = wb.tcp_pose()
         try:
             sols = wb.ik_solutions(T)

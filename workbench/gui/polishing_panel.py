@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import functools
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -17,6 +16,7 @@ from workbench.errors import InputError, WorkbenchError
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
+from workbench.gui.uploads import WORKPIECES, safe_name
 from workbench.service import EXPORT_FORMATS
 from workbench.service.polishing import PolishingPath, PolishingSimulation
 
@@ -218,13 +218,11 @@ class PolishingPanel:
     # -- callbacks -----------------------------------------------------------------------
     def _on_upload(self, event: viser.GuiEvent) -> None:
         up = self.upload.value
-        name = Path(up.name).name or "workpiece.stl"
+        name = safe_name(up.name, "workpiece.stl")
         if Path(name).suffix.lower() not in MESH_TYPES:
             raise InputError(f"workpiece {name!r}: give an STL, OBJ or PLY file")
-        folder = Path(tempfile.mkdtemp(prefix="workbench-workpiece-"))
-        path = folder / name
-        path.write_bytes(up.content)
-        self.svc.load_workpiece(path, units=str(self.units.value))
+        with WORKPIECES.new_file(self.app.wb, name, up.content) as path:
+            self.svc.load_workpiece(path, units=str(self.units.value))
         self._show_workpiece()
         self.path_info.content = ""
         self.sim_info.content = ""

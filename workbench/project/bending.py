@@ -24,6 +24,7 @@ from pydantic import AfterValidator, Field, ValidationError, model_validator
 from workbench.errors import ProjectError
 from workbench.project import bounds as B
 from workbench.project.common import Angle, Coordinate, Pose, StrictModel, Vec3mm
+from workbench.project.paths import ProjectFolders
 from workbench.project.units import DEG, MM
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.grasp import Grasp
@@ -238,24 +239,23 @@ class BendingSpec(StrictModel):
                 )
         return self
 
-    def read_part(self, base_dir: Path) -> PartSpec:
+    def read_part(self, base_dir: Path | ProjectFolders) -> PartSpec:
         """Return the part section: inline, or read from `part_file` (relative to `base_dir`).
 
-        ProjectError names `bending.part_file` when the file cannot be read or is invalid.
+        ProjectError names `bending.part_file` when the file cannot be read or is invalid;
+        InputError when it leaves the project's folders (`ProjectFolders.read`).
         """
         if self.part is not None:
             return self.part
         from workbench.project.io import problems_from  # io imports the models: not at the top
 
         assert self.part_file is not None
-        p = Path(self.part_file)
-        p = p if p.is_absolute() else base_dir / p
+        p = self.part_file
+        raw = ProjectFolders.of(base_dir).read(p, "bending.part_file", kind="part")[1]
         try:
-            data = json.loads(p.read_text())
-        except OSError:
-            raise ProjectError(
-                f"bending.part_file: cannot read {p}; fix the path (relative to the project file)"
-            ) from None
+            data = json.loads(raw)
+        except (UnicodeDecodeError, RecursionError):
+            raise ProjectError(f"bending.part_file: {p} is not UTF-8 JSON text") from None
         except json.JSONDecodeError as exc:
             raise ProjectError(f"bending.part_file: {p} is not valid JSON: {exc}") from None
         try:

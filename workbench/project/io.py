@@ -14,10 +14,13 @@ from pydantic import ValidationError
 from workbench.atomic_file import atomic_write_text
 from workbench.errors import ProjectError, SchemaVersionError
 from workbench.project.bounds import JSON_MAX_DEPTH
+from workbench.project.migrate import v1_to_v2
 from workbench.project.models import SCHEMA_VERSION, Project
 
 # Migrations from version N to N + 1, applied in order on the parsed JSON.
-MIGRATIONS: dict[int, Callable[[dict[str, Any]], dict[str, Any]]] = {}
+MIGRATIONS: dict[int, Callable[[dict[str, Any]], dict[str, Any]]] = {
+    1: v1_to_v2,  # joint values from the kinematic model's convention to the controller's
+}
 
 
 def field_path(loc: tuple[int | str, ...]) -> str:

@@ -1,4 +1,8 @@
-"""Pydantic models of the project file (schema version 1): millimetres and degrees.
+"""Pydantic models of the project file (schema version 2): millimetres and degrees.
+
+Joint values in the file (robot.joints, program.start, joint moves, assembly robots) are in
+the robot controller's convention (`Robot.convention`); `to_si()` returns the kinematic
+model's [rad].
 
 Every model forbids unknown fields and non-finite numbers, so a typo or a NaN in a
 project file is reported with its JSON path instead of being ignored.
@@ -30,6 +34,8 @@ from workbench.project.common import (
     StrictModel,
 )
 from workbench.project.polishing import PolishingSpec
+from workbench.kinematics.joint_convention import JointConvention
+from workbench.kinematics.presets import MZ07_CONVENTION
 from workbench.project.units import DEG, MM, pose_to_matrix
 
 FloatArray = NDArray[np.float64]
@@ -37,8 +43,10 @@ JointSpeed = Annotated[float, B.span(B.JOINT_SPEED_DEG_S, "deg/s")]
 JointAccel = Annotated[float, B.span(B.JOINT_ACCEL_DEG_S2, "deg/s²")]
 JointJerk = Annotated[float, B.span(B.JOINT_JERK_DEG_S3, "deg/s³")]
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 PRESETS = ("mz07",)
+PRESET_CONVENTIONS = {"mz07": MZ07_CONVENTION}
+"""Each preset's controller joint convention (robots given by DH rows or a URDF: identity)."""
 
 
 class DHRow(StrictModel):
@@ -62,6 +70,19 @@ def _per_joint(values: list[float] | None) -> FloatArray | None:
     return None if values is None else np.asarray(values, float) * DEG
 
 
+def joints_to_model(
+    values: list[float] | None, convention: JointConvention | None
+) -> FloatArray | None:
+    """Return controller joints [deg] as the model's [rad] (None convention: the same values).
+
+    A list of the wrong length is returned unconverted: the caller's length check names it.
+    """
+    q = _per_joint(values)
+    if q is None or convention is None or len(q) != convention.dof:
+        return q
+    return convention.to_model(q)
+
+
 @dataclass(frozen=True, eq=False)
 class RobotSI:
     """The robot section in SI: DH rows (n, 4) [rad, m, m, rad] and limits (n, 2) [rad] (or
@@ -83,7 +104,10 @@ class RobotSI:
 
 
 class Robot(StrictModel):
-    """The robot: exactly one of `preset`, `dh` or `urdf`, placed at `base` in the world."""
+    """The robot: exactly one of `preset`, `dh` or `urdf`, placed at `base` in the world.
+
+    `joints` and the DH rows' `min`/`max` are the controller's values (`convention()`).
+    """
 
     name: str = "robot"
     preset: Literal["mz07"] | None = None
@@ -109,8 +133,13 @@ class Robot(StrictModel):
             raise ValueError("'dh' needs at least one row")
         return self
 
+    def convention(self) -> JointConvention | None:
+        """Return the controller's joint convention of a preset (None: the model's own values)."""
+        return None if self.preset is None else PRESET_CONVENTIONS[self.preset]
+
     def to_si(self) -> RobotSI:
-        """Return the section in SI (lengths of per-joint lists are checked against the model)."""
+        """Return the section in SI, joints in the model's convention (lengths of per-joint
+        lists are checked against the model)."""
         dh = limits = None
         if self.dh is not None:
             dh = np.array(
@@ -124,7 +153,7 @@ class Robot(StrictModel):
             limits=limits,
             urdf=self.urdf,
             T_world_base=pose_to_matrix(self.base),
-            joints=_per_joint(self.joints),
+            joints=joints_to_model(self.joints, self.convention()),
             max_velocity=_per_joint(self.max_velocity),
             max_acceleration=_per_joint(self.max_acceleration),
             max_jerk=_per_joint(self.max_jerk),
@@ -132,8 +161,12 @@ class Robot(StrictModel):
         )
 
     def store_joints(self, q: ArrayLike) -> None:
-        """Store joints q (dof,) [rad] as the section's `joints` [deg]."""
-        self.joints = [float(v) for v in np.asarray(q, float) / DEG]
+        """Store model joints q (dof,) [rad] as the section's `joints` [deg, controller's]."""
+        q = np.asarray(q, float)
+        conv = self.convention()
+        if conv is not None and q.shape == (conv.dof,):
+            q = conv.to_controller(q)
+        self.joints = [round(float(v), 9) for v in q / DEG]  # 1e-9 deg: no 14.999999999999998
 
 
 @dataclass(frozen=True, eq=False)
@@ -301,12 +334,13 @@ class MoveSpec(StrictModel):
             raise ValueError(f"speed: {exc} (a {self.type} move's speed is in {unit})") from None
         return self
 
-    def to_si(self) -> MoveSI:
-        """Return the move in SI."""
+    def to_si(self, convention: JointConvention | None = None) -> MoveSI:
+        """Return the move in SI; joints [deg, controller's] become the model's [rad] by the
+        robot's `convention` (None: unchanged)."""
         return MoveSI(
             name=self.name,
             type=self.type,
-            joints=None if self.joints is None else np.asarray(self.joints, float) * DEG,
+            joints=joints_to_model(self.joints, convention),
             T_world_tcp=None if self.pose is None else pose_to_matrix(self.pose),
             speed=self.speed / 100.0 if self.type == "joint" else self.speed * MM,
             zone=self.zone * MM,
@@ -329,16 +363,17 @@ class ProgramSpec(StrictModel):
             )
         return self
 
-    def to_si(self) -> ProgramSI:
-        """Return the program in SI."""
-        start = None if self.start is None else np.asarray(self.start, float) * DEG
-        return ProgramSI(self.name, start, tuple(m.to_si() for m in self.moves))
+    def to_si(self, convention: JointConvention | None = None) -> ProgramSI:
+        """Return the program in SI; joints [deg, controller's] become the model's [rad] by the
+        robot's `convention` (`RobotModel.convention`; None: unchanged)."""
+        start = joints_to_model(self.start, convention)
+        return ProgramSI(self.name, start, tuple(m.to_si(convention) for m in self.moves))
 
 
 class Project(StrictModel):
     """A workbench project file."""
 
-    schema_version: Literal[1] = 1  # SCHEMA_VERSION
+    schema_version: Literal[2] = 2  # SCHEMA_VERSION
     name: str = "untitled"
     description: str = ""
     robot: Robot = Field(default_factory=lambda: Robot(preset="mz07"))

@@ -111,7 +111,7 @@ class AssemblyService(SectionService[AssemblySpec]):
         where = f"assembly.parts[{i}]"
         if p.shape == "mesh":
             assert p.path is not None
-            mesh = load_mesh_file(p.path, self.wb.base_dir, p.scale, f"{where}.path")
+            mesh = load_mesh_file(p.path, self.wb.folders, p.scale, f"{where}.path")
         else:
             mesh = primitive_mesh(p.shape, p.size, p.radius, p.height)
         part = AssemblyPart(p.name, mesh, p.start, p.goal, p.grasp, p.robot, p.color)
@@ -137,7 +137,7 @@ class AssemblyService(SectionService[AssemblySpec]):
                             f"{field}: {r.name!r} is already the project's robot; rename it",
                             [(field, "duplicate robot name")],
                         )
-                    setup = build_robot(r.robot, r.tool, wb.base_dir)
+                    setup = build_robot(r.robot, r.tool, wb.folders)
                     arms[r.name] = AssemblyArm.build(r.name, setup, setup.q0, cell, r.color)
                 self._arms = arms
             return self._arms

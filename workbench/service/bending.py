@@ -69,7 +69,7 @@ class BendingService(SectionService[BendingSpec]):
     def part_spec(self) -> PartSpec:
         """Return the part section (inline, or read from `part_file`, validated)."""
         if self._part_spec is None:
-            self._part_spec = self.spec.read_part(self.wb.base_dir)
+            self._part_spec = self.spec.read_part(self.wb.folders)
         return self._part_spec
 
     def si(self) -> BendingSI:

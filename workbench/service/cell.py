@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 
 from workbench.collision import Solid
 from workbench.project.models import CellObject, CellObjectSI
+from workbench.project.paths import ProjectFolders
 from workbench.service.mesh_files import load_mesh_file
 
 
@@ -30,7 +31,9 @@ class CellBody:
         return self.solid.to_trimesh()
 
 
-def build_cell(objects: Sequence[CellObject | CellObjectSI], base_dir: Path) -> list[CellBody]:
+def build_cell(
+    objects: Sequence[CellObject | CellObjectSI], base_dir: Path | ProjectFolders
+) -> list[CellBody]:
     """Return the cell bodies of the project's objects; meshes are loaded relative to `base_dir`."""
     bodies = []
     for i, spec in enumerate(objects):

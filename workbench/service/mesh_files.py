@@ -1,32 +1,46 @@
-"""Mesh files named by a project, loaded and scaled to metres."""
+"""Mesh files named by a project, loaded and scaled to metres (read through the path rule)."""
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
 
 import numpy as np
 import trimesh
 
 from workbench.errors import MeshError
+from workbench.project.paths import ProjectFolders, size_limit
+
+MESH_TYPES = ("stl", "obj", "ply", "off", "glb", "gltf")
 
 
-def load_mesh_file(path: str, base_dir: Path, scale: float, field: str) -> trimesh.Trimesh:
-    """Return the mesh at `path` (relative to `base_dir`) scaled to metres; `field` names it in errors."""
-    p = Path(path)
-    if not p.is_absolute():
-        p = base_dir / p
-    if not p.is_file():
+def mesh_size_limit() -> int:
+    """Return the largest mesh file read [bytes] (WORKBENCH_MAX_MESH_BYTES; docs/security.md)."""
+    return size_limit("mesh")
+
+
+def load_mesh_file(
+    path: str, folders: ProjectFolders | Path, scale: float, field: str
+) -> trimesh.Trimesh:
+    """Return the mesh at `path` (relative to the project's folder) scaled to metres.
+
+    The path must stay inside the project's folder or an allowed one and name a regular file
+    within the mesh size limit (`ProjectFolders.read`); `field` names it in errors.
+    """
+    real, data = ProjectFolders.of(folders).read(path, field, kind="mesh")
+    kind = real.suffix.lower().lstrip(".")
+    if kind not in MESH_TYPES:
         raise MeshError(
-            f"{field}: mesh file not found: {p}; fix the path (relative to the project file)"
+            f"{field}: {path!r} is not a mesh file ({', '.join(MESH_TYPES)}); export it as STL"
         )
     try:
-        mesh = trimesh.load(p, force="mesh")
+        mesh = trimesh.load(io.BytesIO(data), file_type=kind, force="mesh")
     except Exception as exc:  # trimesh raises many types for broken files
-        raise MeshError(f"{field}: cannot read mesh {p}: {exc}") from None
+        raise MeshError(f"{field}: cannot read mesh {path!r}: {type(exc).__name__}") from None
     if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
-        raise MeshError(f"{field}: {p} holds no triangles; export it as STL, OBJ or PLY")
+        raise MeshError(f"{field}: {path!r} holds no triangles; export it as STL, OBJ or PLY")
     if not np.all(np.isfinite(mesh.vertices)):
-        raise MeshError(f"{field}: {p} has NaN or infinite vertex coordinates")
+        raise MeshError(f"{field}: {path!r} has NaN or infinite vertex coordinates")
     mesh = mesh.copy()
     mesh.apply_scale(scale)
     return mesh

@@ -120,9 +120,11 @@ def build_program(spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float6
             bad = np.flatnonzero((q < lo) | (q > hi))
             if bad.size:
                 j = int(bad[0])
+                conv = model.convention  # the file's values are the controller's
+                qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
                 raise InputError(
-                    f"{where}.joints[{j}]: {to_deg(q[j]):g} deg is outside"
-                    f" [{to_deg(lo[j]):.1f}, {to_deg(hi[j]):.1f}] deg"
+                    f"{where}.joints[{j}]: {to_deg(qc[j]):g} deg is outside"
+                    f" [{to_deg(lim[j, 0]):.1f}, {to_deg(lim[j, 1]):.1f}] deg"
                 )
             moves.append(Move.joint(q, speed=mv.speed, zone=mv.zone, name=mv.name))
             q_prev = q

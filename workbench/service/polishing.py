@@ -76,8 +76,7 @@ class PolishingService(SectionService[PolishingSpec]):
         return self.si.T_world_workpiece
 
     def _resolve(self, path: str | Path) -> Path:
-        p = Path(path)
-        return p if p.is_absolute() else self.wb.base_dir / p
+        return self.wb.folders.check_file(path, "polishing.workpiece", kind="mesh")
 
     def load_workpiece(
         self, path: str | Path | None = None, *, units: str | None = None
@@ -93,8 +92,9 @@ class PolishingService(SectionService[PolishingSpec]):
         u = spec.units if units is None else units
         if u not in MESH_UNITS:
             raise InputError(f"polishing.units: must be 'auto', 'mm' or 'm', got {u!r}")
+        real = self._resolve(file)  # InputError naming polishing.workpiece if it leaves
         try:
-            fitted = fit_workpiece(self._resolve(file), u, self.T_world_workpiece)  # type: ignore[arg-type]
+            fitted = fit_workpiece(real, u, self.T_world_workpiece)  # type: ignore[arg-type]
         except WorkbenchError as exc:
             msg = str(exc)
             units_off = isinstance(exc, MeshError) and "units" in msg and "1000x" in msg

@@ -107,7 +107,9 @@ def build_robot(spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path) -> R
             given = {k: v for k, v in rates.items() if v is not None}
             if "max_velocity" not in given:
                 given["max_velocity"] = model.max_velocity
-            model = DHRobot(model.dh, model.limits, name=model.name, **given)
+            model = DHRobot(
+                model.dh, model.limits, name=model.name, convention=model.convention, **given
+            )
         else:
             for name, values in rates.items():
                 if values is not None:
@@ -125,16 +127,18 @@ def build_robot(spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path) -> R
                 meshes[i] = load_mesh_file(
                     path, base_dir, spec.link_mesh_scale, f"robot.link_meshes[{i}]"
                 )
-    q0 = _per_joint(spec.joints, dof, "robot.joints")
+    q0 = _per_joint(spec.joints, dof, "robot.joints")  # model convention (RobotSI)
     if q0 is None:
         q0 = np.clip(np.zeros(dof), model.limits[:, 0], model.limits[:, 1])
     lo, hi = model.limits[:, 0], model.limits[:, 1]
     bad = np.flatnonzero((q0 < lo - 1e-12) | (q0 > hi + 1e-12))
     if bad.size:
         j = int(bad[0])
+        conv = model.convention  # the message shows the values of the file: controller's
+        qc, lim = conv.to_controller(q0), conv.limits_to_controller(model.limits)
         msg = (
-            f"{to_deg(q0[j]):.3f} deg is outside the joint limits"
-            f" [{to_deg(lo[j]):.3f}, {to_deg(hi[j]):.3f}] deg; move it inside"
+            f"{to_deg(qc[j]):.3f} deg is outside the joint limits"
+            f" [{to_deg(lim[j, 0]):.3f}, {to_deg(lim[j, 1]):.3f}] deg; move it inside"
         )
         raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])
     return RobotSetup(

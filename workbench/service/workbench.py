@@ -267,7 +267,7 @@ class Workbench:
         section = self._project.program
         if section is None:
             raise InputError("program: the project has no program; add a 'program' with moves")
-        spec = section.to_si()
+        spec = section.to_si(self.robot.convention)  # the file's controller joints -> model's
         if not (np.isfinite(dt) and 0 < dt <= 0.1):
             raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
         q_start = (
