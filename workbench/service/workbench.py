@@ -26,6 +26,7 @@ from workbench.project import (
     project_to_json,
     save_project,
 )
+from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
@@ -50,31 +51,30 @@ class Workbench:
     Units are SI (m, rad). Every method raises a `WorkbenchError` subclass on bad input.
     """
 
-    def __init__(self, project: Project, *, base_dir: str | os.PathLike[str] | None = None) -> None:
+    def __init__(self, project: Project, *, base_dir: PathArg | None = None) -> None:
         self._lock = threading.RLock()
-        self.base_dir = Path(base_dir) if base_dir is not None else Path.cwd()
+        self.folders = ProjectFolders.of(base_dir)  # base_dir may be a ProjectFolders
+        self.base_dir = self.folders.base
         self.path: Path | None = None
         self._load(project)
 
     # -- construction -----------------------------------------------------------------
     @classmethod
-    def open(cls, path: str | os.PathLike[str]) -> Workbench:
-        """Return a workbench on the project file at `path` (validated; raises WorkbenchError)."""
+    def open(cls, path: PathArg, *, allowed_dirs: list[PathArg] | tuple[()] = ()) -> Workbench:
+        """Return a workbench on the project at `path`; the files it names stay in its folders."""
         project = load_project(path)
-        wb = cls(project, base_dir=Path(path).resolve().parent)
+        wb = cls(project, base_dir=ProjectFolders(Path(path).resolve().parent, allowed_dirs))
         wb.path = Path(path)
         return wb
 
     @classmethod
-    def from_dict(
-        cls, data: dict[str, Any], *, base_dir: str | os.PathLike[str] | None = None
-    ) -> Workbench:
+    def from_dict(cls, data: dict[str, Any], *, base_dir: PathArg | None = None) -> Workbench:
         """Return a workbench on a parsed project (the JSON as a dict)."""
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
-        setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.base_dir)
-        cell = build_cell(project.cell.to_si(), self.base_dir)
+        setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders)
+        cell = build_cell(project.cell.to_si(), self.folders)
         checker = RobotCollisionChecker(
             setup.model,
             setup.link_meshes,
