@@ -299,6 +299,11 @@ def write_nachi(
     distinct blend zones, and for a sync point without its handshake signals.
     """
     check_program(program)
+    if program.dof != 6:
+        raise InputError(
+            f"program {program.name}: the NACHI post writes 6-axis arms (M1J J1..J6); this robot"
+            f" has {program.dof} joints"
+        )
     if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_-]*", unit):
         raise InputError(
             f"NACHI unit {unit!r} must be letters, digits, '-' and '_' (e.g. {DEFAULT_UNIT})"
