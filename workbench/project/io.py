@@ -12,10 +12,11 @@ from typing import Any
 from pydantic import ValidationError
 
 from workbench.atomic_file import atomic_write_text
-from workbench.errors import ProjectError, SchemaVersionError
+from workbench.errors import InputError, ProjectError, SchemaVersionError
 from workbench.project.bounds import JSON_MAX_DEPTH
 from workbench.project.migrate import v1_to_v2
 from workbench.project.models import SCHEMA_VERSION, Project
+from workbench.project.paths import read_regular_file
 
 # Migrations from version N to N + 1, applied in order on the parsed JSON.
 MIGRATIONS: dict[int, Callable[[dict[str, Any]], dict[str, Any]]] = {
@@ -198,11 +199,9 @@ def load_project(path: str | os.PathLike[str]) -> Project:
     """Return the validated `Project` stored at `path`."""
     p = Path(path)
     try:
-        text = p.read_bytes()
-    except FileNotFoundError:
-        raise ProjectError(f"{p}: no such file") from None
-    except OSError as exc:
-        raise ProjectError(f"{p}: cannot read ({exc.strerror})") from None
+        text = read_regular_file(p, kind="project", field=str(p))
+    except InputError as exc:
+        raise ProjectError(str(exc)) from None
     return parse_project_json(text, source=str(p))
 
 

@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 from workbench.errors import ProjectError
 from workbench.kinematics.model import RobotModel
 from workbench.project.models import Robot, RobotSI, Tool, ToolSI
+from workbench.project.paths import ProjectFolders
 from workbench.project.units import to_deg
 from workbench.service.mesh_files import load_mesh_file
 
@@ -41,7 +42,7 @@ def _per_joint(
     return values
 
 
-def build_robot_model(spec: Robot | RobotSI, base_dir: Path) -> RobotModel:
+def build_robot_model(spec: Robot | RobotSI, base_dir: Path | ProjectFolders) -> RobotModel:
     """Return the kinematic model (DHRobot or URDFRobot) of the project's robot section."""
     from workbench.kinematics import DHRobot
 
@@ -54,18 +55,10 @@ def build_robot_model(spec: Robot | RobotSI, base_dir: Path) -> RobotModel:
     from workbench.kinematics import URDFRobot
 
     assert spec.urdf is not None
-    p = Path(spec.urdf)
-    if not p.is_absolute():
-        p = base_dir / p
-    if not p.is_file():
-        raise ProjectError(
-            f"robot.urdf: file not found: {p}; fix the path (relative to the project file)",
-            [("robot.urdf", "file not found")],
-        )
-    return URDFRobot.from_file(p)
+    return URDFRobot.from_file(ProjectFolders.of(base_dir).check_urdf(spec.urdf, "robot.urdf"))
 
 
-def build_tool_mesh(tool: ToolSI, base_dir: Path) -> trimesh.Trimesh | None:
+def build_tool_mesh(tool: ToolSI, base_dir: Path | ProjectFolders) -> trimesh.Trimesh | None:
     """Return the tool's mesh in the flange frame [m]: the file, a box, or a rod to the TCP."""
     if tool.mesh is not None:
         return load_mesh_file(tool.mesh, base_dir, tool.mesh_scale, "tool.mesh")
@@ -86,7 +79,9 @@ def build_tool_mesh(tool: ToolSI, base_dir: Path) -> trimesh.Trimesh | None:
     return rod
 
 
-def build_robot(spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path) -> RobotSetup:
+def build_robot(
+    spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path | ProjectFolders
+) -> RobotSetup:
     """Return the robot setup for the project's robot and tool sections (SI specs, or the
     sections themselves, converted here)."""
     if isinstance(spec, Robot):
