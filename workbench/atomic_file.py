@@ -1,12 +1,116 @@
-"""Atomic file writes: a crash mid-write never leaves a broken or empty file behind."""
+"""Atomic file writes: a crash mid-write never leaves a broken or empty file behind.
+
+A save keeps the file as it was: its mode and owner are carried over, a symlink stays a
+symlink (the write goes to the file it points to), and only a regular file is ever replaced
+(a folder, device node or pipe at the path is refused). Temporary files left by an interrupted
+save (kill -9, power loss) are removed by the next save of the same file.
+"""
 
 from __future__ import annotations
 
 import os
+import re
+import stat
 import tempfile
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import IO, Any
+
+from workbench.errors import InputError
+
+STALE_TEMP_SECONDS = 600.0  # a temporary file of a live process older than this is stale
+_NAME_IN_TEMP = 100  # characters of the file name kept in its temporary file's name
+
+
+def _temp_prefix(name: str) -> str:
+    return f".{name[:_NAME_IN_TEMP]}."
+
+
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def remove_stale_temporaries(target: Path) -> list[Path]:
+    """Remove the temporary files an interrupted save of `target` left in its folder; return them.
+
+    A temporary file is stale when the process that wrote it is gone, or when it is older than
+    `STALE_TEMP_SECONDS` (a concurrent save of a live process is left alone).
+    """
+    prefix = _temp_prefix(target.name)
+    pattern = re.compile(re.escape(prefix) + r"(?:(\d+)\.)?[A-Za-z0-9_]+\.tmp")
+    removed = []
+    try:
+        entries = list(os.scandir(target.parent))
+    except OSError:
+        return []
+    now = time.time()
+    for entry in entries:
+        m = pattern.fullmatch(entry.name)
+        if m is None:
+            continue
+        try:
+            st = entry.stat(follow_symlinks=False)
+        except OSError:
+            continue
+        if not stat.S_ISREG(st.st_mode):
+            continue
+        pid = int(m.group(1)) if m.group(1) else None
+        old = now - st.st_mtime > STALE_TEMP_SECONDS
+        if old or (pid is not None and pid != os.getpid() and not _pid_alive(pid)):
+            try:
+                os.unlink(entry.path)
+                removed.append(Path(entry.path))
+            except OSError:
+                pass
+    return removed
+
+
+def _target(path: Path) -> tuple[Path, os.stat_result | None]:
+    """Return the file a write of `path` replaces (through symlinks) and its stat, if it exists."""
+    real = Path(os.path.realpath(path)) if path.is_symlink() else path
+    try:
+        st = os.stat(real)
+    except FileNotFoundError:
+        return real, None
+    if not stat.S_ISREG(st.st_mode):
+        kind = "a folder" if stat.S_ISDIR(st.st_mode) else "not a regular file (a device or pipe)"
+        raise InputError(f"{path}: is {kind}; refusing to replace it, give the path of a file")
+    return real, st
+
+
+def _umask_mode() -> int:
+    """Return the mode `open` gives a new file under the process's umask (read without setting it)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("Umask:"):
+                    return 0o666 & ~int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    mask = os.umask(0o022)  # no /proc: the classic dance (briefly process-wide)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+def _carry_over(fd: int, st: os.stat_result | None) -> None:
+    """Give the temporary file `fd` the mode and owner of the file it replaces."""
+    os.fchmod(fd, stat.S_IMODE(st.st_mode) if st is not None else _umask_mode())
+    if st is None:
+        return
+    try:
+        os.fchown(fd, st.st_uid, st.st_gid)
+    except PermissionError:  # not ours to give away: keep at least the group if we may
+        try:
+            os.fchown(fd, -1, st.st_gid)
+        except PermissionError:
+            pass
 
 
 def atomic_write(
@@ -15,19 +119,26 @@ def atomic_write(
     """Write `path` atomically with write(file): temporary file in the same folder, fsync, rename.
 
     The temporary file has a unique name, so two writers of the same path never mix their
-    bytes; the last rename wins and the folder is synced after it.
+    bytes; the last rename wins and the folder is synced after it. The file keeps its mode and
+    owner (a new one gets the umask's mode, as `open` would give it); a symlink is followed and
+    kept; anything but a regular file at the path raises InputError.
     """
     p = Path(path)
-    folder = p.parent if str(p.parent) else Path(".")
+    real, st = _target(p)
+    folder = real.parent if str(real.parent) else Path(".")
     folder.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".tmp", dir=folder)
+    remove_stale_temporaries(real)
+    fd, tmp = tempfile.mkstemp(
+        prefix=f"{_temp_prefix(real.name)}{os.getpid()}.", suffix=".tmp", dir=folder
+    )
     try:
         fh: IO[Any] = os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", encoding="utf-8")
         with fh:
+            _carry_over(fh.fileno(), st)
             write(fh)
             fh.flush()
             os.fsync(fh.fileno())
-        os.replace(tmp, p)
+        os.replace(tmp, real)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
