@@ -186,8 +186,8 @@ def zonedata(zone_m: float) -> str:
     for name, r in PREDEFINED_ZONES_MM.items():
         if name != "z0" and abs(mm - r) < 1e-6:
             return name
-    r = [mm, 1.5 * mm, 1.5 * mm, 0.15 * mm, 1.5 * mm, 0.15 * mm]
-    return "[FALSE," + ",".join(_num(x, 4) for x in r) + "]"
+    parts = [mm, 1.5 * mm, 1.5 * mm, 0.15 * mm, 1.5 * mm, 0.15 * mm]
+    return "[FALSE," + ",".join(_num(x, 4) for x in parts) + "]"
 
 
 def speeddata(v_m_s: float) -> str:

@@ -231,8 +231,8 @@ def _tokens(text: str, where: str) -> list[tuple[str, str]]:
         m = _TOKEN.match(text, pos)
         if m is None or m.end() == pos:
             raise _Unsupported(f"{where}: unexpected {text[pos:].strip()[:20]!r}")
-        kind = m.lastgroup
-        out.append((kind, m.group(kind)))  # type: ignore[arg-type]
+        kind = str(m.lastgroup)
+        out.append((kind, m.group(kind)))
         pos = m.end()
     depth = 0
     for kind, tok in out:
@@ -649,7 +649,7 @@ class _Reader:
 
     def number(self, node, what: str) -> float:  # noqa: ANN001
         v = None if node is None else self.eval(node)
-        if not _is_num(v) or not math.isfinite(v):
+        if not isinstance(v, float | int) or isinstance(v, bool) or not math.isfinite(v):
             raise InputError(f"{self.where}: {what} needs a number")
         return float(v)
 
@@ -716,8 +716,8 @@ class _Reader:
             t = self.number(a.switches["plength"], "\\PLength [s]") if "plength" in sw else 0.2
             return PulseOutput(self.signal(pos[0]), t)
         if n == "waitdi" and len(pos) == 2 and sw <= {"maxtime", "timeflag"}:
-            t = self.number(a.switches["maxtime"], "\\MaxTime [s]") if "maxtime" in sw else None
-            return WaitInput(self.signal(pos[0]), self.bit(pos[1]), t)
+            tmax = self.number(a.switches["maxtime"], "\\MaxTime [s]") if "maxtime" in sw else None
+            return WaitInput(self.signal(pos[0]), self.bit(pos[1]), tmax)
         if n == "waittime" and len(pos) == 1 and sw <= {"inpos"}:
             return WaitTime(self.number(pos[0], "WaitTime [s]"))
         if n == "waitsynctask" and len(pos) == 2 and sw <= {"inpos"}:
