@@ -48,7 +48,8 @@ From `ArmConfiguration`: "wrist centre in front of axis 1" is `front`; "axis 5 n
 when it lies on the forward side of that link's line in the arm plane, i.e. the forearm is
 bent forward/down from the stretched arm: the usual pose (lower arm up, forearm reaching
 forward) is cfx 0 and `elbow_up` (u x w . y_arm > 0 with u = axis 2 -> 3, w = axis 3 ->
-wrist centre). Both flip at the same singularity, the stretched arm (on ABB arms near axis 3 = -90 deg).
+wrist centre). Both flip at the same singularity, the stretched arm (on ABB's arms near
+axis 3 = -90 deg).
 
 Names (targets, tools, work objects, signals, the module) pass a `NameTable` of RAPID's
 reserved words (`RAPID_RESERVED`: the kernel's reserved words plus the instructions, data
