@@ -19,9 +19,9 @@ DEG = np.pi / 180.0
 QUARTER = np.pi / 2
 
 
-def _quadrant_ranges(q: np.ndarray) -> np.ndarray:
-    """ABB-style ranges: joints 1, 4, 6 in their quadrant, the others free."""
-    lo = np.floor(q / QUARTER) * QUARTER
+def _quadrant_ranges(robot: DHRobot, q: np.ndarray) -> np.ndarray:
+    """ABB-style ranges [rad, controller]: joints 1, 4, 6 in their quadrant, the others free."""
+    lo = np.floor(robot.convention.to_controller(q) / QUARTER) * QUARTER
     rng = np.stack([lo, lo + QUARTER], axis=1)
     rng[[1, 2, 4]] = [-np.inf, np.inf]
     return rng
@@ -39,7 +39,7 @@ def test_branch_and_quadrants_select_the_planned_joints_among_every_solution() -
         # brute force: the planned joints are among the solutions, and exactly the ones that
         # share its branch and quadrants
         assert np.min(np.max(np.abs(sols - q), axis=1)) < 1e-8
-        got = select_solution(robot, T, c, _quadrant_ranges(q))
+        got = select_solution(robot, T, c, _quadrant_ranges(robot, q))
         assert np.max(np.abs(got - q)) < 1e-8
         seen.add(c.label())
     assert len(seen) == 8  # every branch occurs in the sample
