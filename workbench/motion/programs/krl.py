@@ -235,7 +235,9 @@ class _Writer:
             {f"{name}.src": src, f"{name}.dat": "\n".join(dat)}, tuple(self.notes)
         )
 
-    def _frames(self, tools: list[ToolData], bases: list[WorkObject], tool_no, base_no) -> list[str]:  # noqa: ANN001
+    def _frames(
+        self, tools: list[ToolData], bases: list[WorkObject], tool_no, base_no
+    ) -> list[str]:  # noqa: ANN001
         out = [
             "  ;FOLD tool, load and base data (delete where the cell's TOOL_DATA/BASE_DATA are measured)"
         ]
@@ -255,7 +257,9 @@ class _Writer:
                     " set tool.mass and tool.cog for the load data"
                 )
         for w in bases:
-            out.append(f"  BASE_DATA[{base_no[w.name]}] = {{{frame_text(w.T_base_wobj)}}} ; base {w.name}")
+            out.append(
+                f"  BASE_DATA[{base_no[w.name]}] = {{{frame_text(w.T_base_wobj)}}} ; base {w.name}"
+            )
         out.append("  ;ENDFOLD")
         return out
 

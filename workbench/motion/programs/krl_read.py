@@ -105,7 +105,9 @@ def _split_comment(line: str) -> tuple[str, str]:
 
 
 def _split_top(text: str) -> list[str]:
-    parts, depth, cur = [], 0, []
+    parts: list[str] = []
+    cur: list[str] = []
+    depth = 0
     for ch in text:
         if ch == "{":
             depth += 1
@@ -150,7 +152,9 @@ def _aggregate(text: str, where: str) -> tuple[str | None, dict[str, object]]:
     for part in _split_top(inner):
         m = re.match(rf"^({_NAME})\s+(.+)$", part, re.S)
         if not m:
-            raise InputError(f"{where}: cannot read the aggregate component {part!r}; write it as NAME value")
+            raise InputError(
+                f"{where}: cannot read the aggregate component {part!r}; write it as NAME value"
+            )
         out[m.group(1).upper()] = _value(m.group(2), where)
     return kind, out
 
@@ -249,9 +253,13 @@ class _Reader:
                 continue
             self.unknown.append((n, f"{fname}: {raw.strip()}"))
         if not started:
-            raise InputError(f"{fname}: no DEFDAT line; a KRL data list starts with DEFDAT {self.stem}")
+            raise InputError(
+                f"{fname}: no DEFDAT line; a KRL data list starts with DEFDAT {self.stem}"
+            )
 
-    def _declare(self, name: str, kind: str | None, agg_text: str | None, line: int, where: str) -> None:
+    def _declare(
+        self, name: str, kind: str | None, agg_text: str | None, line: int, where: str
+    ) -> None:
         value = None
         if agg_text is not None:
             typ, value = _aggregate(agg_text, where)
@@ -337,11 +345,15 @@ class _Reader:
             return self._move(m.group(1).upper(), m.group(2), n, where, st)
         m = _OUT.match(code)
         if m:
-            self.instructions.append(SetOutput(self._signal("out", m.group(1), comment), m.group(2).upper() == "TRUE"))
+            self.instructions.append(
+                SetOutput(self._signal("out", m.group(1), comment), m.group(2).upper() == "TRUE")
+            )
             return True
         m = _PULSE.match(code)
         if m:
-            self.instructions.append(PulseOutput(self._signal("out", m.group(1), comment), float(m.group(2))))
+            self.instructions.append(
+                PulseOutput(self._signal("out", m.group(1), comment), float(m.group(2)))
+            )
             return True
         m = _WAIT_SEC.match(code)
         if m:
@@ -412,14 +424,20 @@ class _Reader:
             if m and m.group(1).upper() == "LOAD_DATA":
                 load = self.data.get(("LOAD_DATA", int(m.group(2))))
                 if load is None:
-                    self.notes.append(f"{where}: LOAD_DATA[{m.group(2)}] is not set in these files; the tool's mass is unknown")
+                    self.notes.append(
+                        f"{where}: LOAD_DATA[{m.group(2)}] is not set in these files; the tool's mass is unknown"
+                    )
                 elif st.tool is not None:
                     self.tool_loads[st.tool] = load[0]  # type: ignore[assignment]
                 return True
             if rhs.startswith("{"):
                 _, agg = _aggregate(rhs, where)
                 cm = agg.get("CM", {})
-                cog = np.array([float(cm.get(c, 0.0)) for c in "XYZ"]) / 1000.0 if isinstance(cm, dict) else np.zeros(3)  # type: ignore[arg-type]
+                cog = (
+                    np.array([float(cm.get(c, 0.0)) for c in "XYZ"]) / 1000.0
+                    if isinstance(cm, dict)
+                    else np.zeros(3)
+                )  # type: ignore[arg-type]
                 if st.tool is not None:
                     self.tool_loads[st.tool] = (_float(agg, "M", where), cog)
                 return True
@@ -445,7 +463,11 @@ class _Reader:
         elif rhs.startswith("{"):
             _, agg = _aggregate(rhs, where)
             name, T = f"{what.lower()}_line{n}", _frame(agg, where)
-        elif re.fullmatch(_NAME, rhs) and rhs.lower() in self.vars and self.vars[rhs.lower()].value is not None:
+        elif (
+            re.fullmatch(_NAME, rhs)
+            and rhs.lower() in self.vars
+            and self.vars[rhs.lower()].value is not None
+        ):
             var = self.vars[rhs.lower()]
             name, T = var.name, _frame(var.value, var.where)  # type: ignore[arg-type]
         else:
@@ -487,7 +509,9 @@ class _Reader:
         is_axis = kind in _AXIS_TYPES or (kind is None and any(a in agg for a in _AXES))
         if is_axis:
             if not joint_ok:
-                raise InputError(f"{where}: a LIN/CIRC target must be a pose (X, Y, Z, A, B, C), not axes")
+                raise InputError(
+                    f"{where}: a LIN/CIRC target must be a pose (X, Y, Z, A, B, C), not axes"
+                )
             vals = []
             for k, a in enumerate(_AXES):
                 if a in agg:
@@ -495,7 +519,9 @@ class _Reader:
                 elif st.last_joints is not None:
                     vals.append(float(st.last_joints[k]))
                 else:
-                    raise InputError(f"{where}: the joint target lacks {a} and no earlier joint target gives it")
+                    raise InputError(
+                        f"{where}: the joint target lacks {a} and no earlier joint target gives it"
+                    )
             q = np.array(vals)
             st.last_joints = q
             return ReadTarget(name, joints=q)
@@ -515,7 +541,9 @@ class _Reader:
                 [[-np.inf, 0.0] if t & (1 << i) else [0.0, np.inf] for i in range(6)], float
             )
             if cfg is not None and bool(t & 16) != cfg.wrist_flip:
-                self.notes.append(f"{where}: target {name!r}: Status bit 2 and Turn bit 4 (A5 < 0) disagree")
+                self.notes.append(
+                    f"{where}: target {name!r}: Status bit 2 and Turn bit 4 (A5 < 0) disagree"
+                )
         return ReadTarget(name, T_wobj_tcp=T, configuration=cfg, controller_ranges=ranges)
 
     def _move(self, kind: str, rest: str, n: int, where: str, st: _State) -> bool:
@@ -529,7 +557,9 @@ class _Reader:
         if kind == "CIRC":
             parts = _split_top(rest)
             if len(parts) != 2:
-                raise InputError(f"{where}: CIRC needs an auxiliary point and an end point: CIRC aux, end")
+                raise InputError(
+                    f"{where}: CIRC needs an auxiliary point and an end point: CIRC aux, end"
+                )
             via = self._target(parts[0], n, where, st, joint_ok=False)
             target = self._target(parts[1], n, where, st, joint_ok=False)
         else:
@@ -539,12 +569,16 @@ class _Reader:
         zone = 0.0
         if approx is not None:
             if approx in ("C_VEL", "C_ORI"):
-                self.notes.append(f"{where}: {approx} approximation read with $APO.CDIS as the zone")
+                self.notes.append(
+                    f"{where}: {approx} approximation read with $APO.CDIS as the zone"
+                )
             if st.cdis is not None:
                 zone = st.cdis / 1000.0
             elif approx == "C_PTP" and st.cptp is not None:
                 zone = st.cptp / 1000.0
-                self.notes.append(f"{where}: PTP zone given only as $APO.CPTP {st.cptp:g} %; read as {st.cptp:g} mm")
+                self.notes.append(
+                    f"{where}: PTP zone given only as $APO.CPTP {st.cptp:g} %; read as {st.cptp:g} mm"
+                )
             else:
                 self.notes.append(f"{where}: {approx} without $APO.CDIS; read as an exact stop")
         if kind == "PTP":
@@ -553,7 +587,9 @@ class _Reader:
                 vals = sorted(set(st.vel_axis.values()))
                 speed = max(vals) / 100.0
                 if len(vals) > 1 or len(st.vel_axis) < 6:
-                    self.notes.append(f"{where}: $VEL_AXIS differs between axes; read as {max(vals):g} %")
+                    self.notes.append(
+                        f"{where}: $VEL_AXIS differs between axes; read as {max(vals):g} %"
+                    )
             else:
                 self.notes.append(f"{where}: no $VEL_AXIS before this PTP; its speed is unknown")
         else:
@@ -561,10 +597,15 @@ class _Reader:
             if speed is None:
                 self.notes.append(f"{where}: no $VEL.CP before this {kind}; its speed is unknown")
         if st.tool is None or st.base is None:
-            for what, cur, frames in (("TOOL", st.tool, self.tool_frames), ("BASE", st.base, self.base_frames)):
+            for what, cur, frames in (
+                ("TOOL", st.tool, self.tool_frames),
+                ("BASE", st.base, self.base_frames),
+            ):
                 if cur is None:
                     frames.setdefault(f"${what}", np.eye(4))
-                    self.notes.append(f"{where}: no ${what} set before the first move; read as the null frame")
+                    self.notes.append(
+                        f"{where}: no ${what} set before the first move; read as the null frame"
+                    )
             st.tool = st.tool or "$TOOL"
             st.base = st.base or "$BASE"
         mk = {"PTP": "joint", "LIN": "linear", "CIRC": "circular"}[kind]
