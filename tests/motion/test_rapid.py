@@ -331,7 +331,7 @@ def test_malformed_input_names_the_line():
     bad_shape = _module(
         "", "  CONST robtarget p1:=[[500,100],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];"
     )
-    with pytest.raises(InputError, match=r"line 2: .*position \[x,y,z\] needs 3 numbers"):
+    with pytest.raises(InputError, match=r"line 2: .*position \[x,y,z\] needs 3 finite numbers"):
         read_rapid(bad_shape)
     with pytest.raises(InputError, match=r"line 4: .*has no ';'"):
         read_rapid({"a.mod": "MODULE a\n  PROC main()\n    WaitTime 1;\n    WaitTime 2\n"})

@@ -374,8 +374,12 @@ def _quat_matrix(q, where: str) -> np.ndarray:  # noqa: ANN001
 
 
 def _numbers(v, n: int, what: str, where: str) -> list[float]:  # noqa: ANN001
-    if not isinstance(v, list) or len(v) != n or not all(_is_num(x) for x in v):
-        raise InputError(f"{where}: {what} needs {n} numbers, got {_show(v)}")
+    if (
+        not isinstance(v, list)
+        or len(v) != n
+        or not all(_is_num(x) and math.isfinite(x) for x in v)
+    ):
+        raise InputError(f"{where}: {what} needs {n} finite numbers, got {_show(v)}")
     return [float(x) for x in v]
 
 
