@@ -1,4 +1,4 @@
-"""Plan and export: the MZ07 cell's program as a checked trajectory and six robot programs.
+"""Plan and export: the MZ07 cell's program as a checked trajectory, five robot programs and its samples.
 
 Plans the project's program (IK through its moves, a jerk-limited ruckig trajectory,
 joint-limit and collision checks), prints the summary, and writes the program in every
@@ -16,15 +16,8 @@ from pathlib import Path
 from workbench import Workbench
 
 PROJECT = Path(__file__).resolve().parents[1] / "projects" / "mz07_cell.json"
-# Export format -> file extension (ABB RAPID, KUKA KRL, FANUC LS, URScript, samples).
-FORMATS = {
-    "rapid": ".mod",
-    "krl": ".src",
-    "ls": ".ls",
-    "urscript": ".script",
-    "csv": ".csv",
-    "json": ".json",
-}
+# Export formats: ABB RAPID, KUKA KRL (.src + .dat), FANUC LS, URScript, NACHI FD, joint samples.
+FORMATS = ("rapid", "krl", "ls", "urscript", "nachi", "csv", "json")
 
 
 class _Progress:
@@ -51,11 +44,14 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
     print(f"cycle time {plan.cycle_time:.3f} s; {'ready to run' if plan.ok else 'NOT ready'}")
 
     written: list[Path] = []
-    for fmt, ext in FORMATS.items():
-        path = out / f"{name}{ext}"
-        path.write_text(wb.export_program(fmt))
-        written.append(path)
-        print(f"wrote {fmt:8s} {path} ({len(path.read_text().splitlines())} lines)")
+    for fmt in FORMATS:
+        exported = wb.export_program(fmt)  # files (name -> text) and the post's notes
+        for path in exported.write_to(out):
+            written.append(path)
+            print(f"wrote {fmt:8s} {path} ({len(path.read_text().splitlines())} lines)")
+        for note in exported.notes:
+            print(f"  note: {note}")
+    print(f"program {name}: {len(written)} files")
     return written
 
 

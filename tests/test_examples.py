@@ -69,7 +69,9 @@ def check_02_plan_and_export(capsys: pytest.CaptureFixture[str], tmp_path: Path)
     assert "ready to run" in out
     names = sorted(p.name for p in tmp_path.iterdir())
     assert names == sorted(p.name for p in written)  # type: ignore[attr-defined]
-    assert names == [f"pick_place{e}" for e in (".csv", ".json", ".ls", ".mod", ".script", ".src")]
+    lower = {n.lower() for n in names}  # FANUC program names are upper case
+    for ext in (".csv", ".json", ".ls", ".mod", ".script", ".src"):
+        assert f"pick_place{ext}" in lower, names
     assert (tmp_path / "pick_place.mod").read_text().startswith("MODULE pick_place")
     assert "MoveL" in (tmp_path / "pick_place.mod").read_text()
     assert (tmp_path / "pick_place.src").read_text().startswith("DEF pick_place")

@@ -37,12 +37,24 @@ def _parser() -> argparse.ArgumentParser:
     check = sub.add_parser("check", help="validate a project and report the collision status")
     check.add_argument("project", help="project JSON")
 
-    export = sub.add_parser("export", help="plan the project's program and export it")
+    export = sub.add_parser("export", help="plan a workflow of the project and export its programs")
     export.add_argument("project", help="project JSON")
     export.add_argument(
-        "--format", required=True, choices=["rapid", "krl", "ls", "urscript", "csv", "json"]
+        "--workflow",
+        default="motion",
+        choices=["motion", "bending", "assembly", "polishing"],
+        help="the workflow whose plan is exported (default: motion, the project's program)",
     )
-    export.add_argument("--out", required=True, help="output file (written atomically)")
+    export.add_argument(
+        "--format",
+        required=True,
+        choices=["rapid", "krl", "ls", "urscript", "nachi", "csv", "json"],
+    )
+    export.add_argument(
+        "--out",
+        help="output file (one-file exports), folder, or .zip (several files: KRL .src + .dat,"
+        " one program per robot); default: the export's file names in the current folder",
+    )
     export.add_argument(
         "--force",
         action="store_true",
@@ -82,21 +94,34 @@ class _Progress:
 
 
 def _export(args: argparse.Namespace) -> int:
-    from workbench.atomic_file import atomic_write_text
+    from workbench.atomic_file import atomic_write, atomic_write_text
     from workbench.service import Workbench
+    from workbench.service.programs import plan_workflow
 
     wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
-    plan = wb.plan_motion(progress=_Progress())
+    plan = plan_workflow(wb, args.workflow, progress=_Progress())
     print(f"{args.project}: {plan.summary()}")
     if not plan.ok and not args.force:
         print(
-            "workbench export: error: the plan has problems (above); fix the program, or pass"
+            "workbench export: error: the plan has problems (above); fix the project, or pass"
             " --force to write it anyway",
             file=sys.stderr,
         )
         return 1
-    atomic_write_text(args.out, wb.export_program(args.format))
-    print(f"wrote {args.out} ({args.format})")
+    exported = wb.export_program(args.format, args.workflow, force=True)
+    out = Path(args.out) if args.out else Path.cwd()
+    if out.suffix.lower() == ".zip":
+        data = exported.zip_bytes()
+        atomic_write(out, lambda fh: fh.write(data), binary=True)
+        written = [f"{out} ({', '.join(exported.files)})"]
+    elif len(exported.files) == 1 and args.out and not out.is_dir():
+        atomic_write_text(out, exported.text)
+        written = [str(out)]
+    else:
+        written = [str(p) for p in exported.write_to(out)]
+    for note in exported.notes:
+        print(f"note: {note}")
+    print(f"wrote {', '.join(written)} ({args.workflow}, {args.format})")
     return 0 if plan.ok else 1
 
 

@@ -32,6 +32,10 @@ def test_plan_play_scrub_and_export(page, app: WorkbenchApp) -> None:  # type: i
     wait_for_timeline(app, plots_before, what="the plan on the timeline")
     assert app.timeline.motion is not None
     assert app.timeline.motion.duration == pytest.approx(plan.cycle_time, abs=1e-9)
+    # The joint plot shows the controller's values (as the sliders and the programs do).
+    shown = np.array(app.timeline.plots[0].data[1:], float).T  # (N, dof) [deg]
+    ctrl = np.degrees(app.wb.robot.convention.to_controller(plan.positions))
+    assert np.allclose(shown, ctrl, atol=1e-9)
 
     # Scrub: typing a time poses the robot at the plan's joints for that time.
     before = steady_picture(lambda: canvas_png(page))
@@ -63,5 +67,5 @@ def test_plan_play_scrub_and_export(page, app: WorkbenchApp) -> None:  # type: i
     with page.expect_download() as dl:
         page.get_by_role("button", name="Download program").click()
     text = Path(dl.value.path()).read_text()
-    assert text == app.wb.export_program("rapid")
+    assert text == app.wb.export_program("rapid").text
     assert text.startswith("MODULE ") and "MoveL" in text

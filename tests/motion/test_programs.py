@@ -160,6 +160,6 @@ def test_export_dispatches_every_format_and_names_a_bad_one(tmp_path):
     np.testing.assert_array_equal(qj, q)
     np.testing.assert_allclose(t, times, atol=1e-9)
     np.testing.assert_allclose(q, joints, atol=1e-6)
-    assert set(EXPORT_FORMATS) == {"rapid", "krl", "ls", "urscript", "csv", "json"}
+    assert set(EXPORT_FORMATS) == {"rapid", "krl", "ls", "urscript", "nachi", "csv", "json"}
     with pytest.raises(InputError, match=r"format: 'gcode' is not one of rapid, krl"):
         export("gcode", program, times, joints)

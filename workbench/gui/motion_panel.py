@@ -8,7 +8,7 @@ from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
 from workbench.gui.timeline import Timeline
-from workbench.service import EXPORT_FORMATS, Workbench
+from workbench.service import EXPORT_FORMATS, ExportedProgram, Workbench
 
 
 class MotionPanel:
@@ -54,6 +54,8 @@ class MotionPanel:
         rows = "\n".join(
             f"| {i + 1} | {m.name or '-'} | {m.type} | {m.speed:g} {'%' if m.type == 'joint' else 'mm/s'}"
             f" | {'fine' if m.zone == 0 else f'{m.zone:g} mm'} |"
+            if m.type in ("joint", "linear")
+            else f"| {i + 1} | - | {m.type} | {_action_text(m)} | |"
             for i, m in enumerate(spec.moves)
         )
         self.program.content = (
@@ -69,15 +71,26 @@ class MotionPanel:
         self.download.disabled = False
         self.timeline.load(
             plan.samples,
-            velocity_limits=self.wb.robot.max_velocity,
-            acceleration_limits=self.wb.robot.max_acceleration,
+            robot=self.wb.robot,
         )
 
     def _on_download(self, event: viser.GuiEvent) -> None:
         fmt = str(self.format.value)
-        text = self.wb.export_program(fmt)
+        exported = self.wb.export_program(fmt)  # refused (a notification) if the plan has problems
         if event.client is not None:
-            name = (
-                self.wb.last_plan.program.name if self.wb.last_plan else "program"
-            ) + EXPORT_FORMATS[fmt]
-            event.client.send_file_download(name, text.encode(), save_immediately=True)
+            name, data = download_of(exported, f"{self.wb.project.program.name}_{fmt}")  # type: ignore[union-attr]
+            event.client.send_file_download(name, data, save_immediately=True)
+
+
+def _action_text(item: object) -> str:
+    """Return a program action's fields as short text ("action close", "signal grip = True")."""
+    fields = {k: v for k, v in vars(item).items() if k != "type"}
+    return ", ".join(f"{k} {v}" for k, v in fields.items())
+
+
+def download_of(exported: ExportedProgram, stem: str) -> tuple[str, bytes]:
+    """Return (file name, bytes) to download: the one file, or a zip `stem`.zip of several."""
+    if len(exported.files) == 1:
+        name, text = next(iter(exported.files.items()))
+        return name, text.encode()
+    return f"{stem}.zip", exported.zip_bytes()

@@ -34,6 +34,7 @@ from workbench.project.common import (
     StrictModel,
 )
 from workbench.project.polishing import PolishingSpec
+from workbench.project import program_io as io_
 from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.presets import MZ07_CONVENTION
 from workbench.project.units import DEG, MM, pose_to_matrix
@@ -120,6 +121,8 @@ class Robot(StrictModel):
     max_jerk: list[JointJerk] | None = None  # deg/s^3 per joint
     link_meshes: Annotated[list[str | None], Field(max_length=B.MAX_DOF + 1)] | None = None
     # optional mesh per link (base first)
+    max_tcp_speed: io_.TcpSpeed | None = None  # mm/s, what programs may ask (default 2000)
+    max_zone: io_.ZoneLimit | None = None  # mm, largest blend radius (default 500)
 
     @model_validator(mode="after")
     def _one_source(self) -> Robot:
@@ -191,6 +194,8 @@ class Tool(StrictModel):
     mesh_scale: MeshScale = 0.001  # mesh units -> m (files are usually in mm)
     size: Size3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
     color: Color = Field(default_factory=lambda: [200, 200, 210])
+    mass: io_.Mass | None = None  # kg (RAPID's tooldata needs it)
+    cog: io_.Cog | None = None  # mm, centre of gravity in the flange frame
 
     def to_si(self) -> ToolSI:
         """Return the tool in SI."""
@@ -295,6 +300,7 @@ class MoveSI:
     T_world_tcp: FloatArray | None
     speed: float
     zone: float
+    wobj: str = "base"
 
 
 @dataclass(frozen=True, eq=False)
@@ -315,6 +321,7 @@ class MoveSpec(StrictModel):
     pose: Pose | None = None  # TCP target in the world (mm, deg); required for linear moves
     speed: Annotated[float, Field(gt=0)] = 100.0  # joint: % of max joint speed; linear: mm/s
     zone: Annotated[float, B.span(B.ZONE_MM, "mm")] = 0.0  # blend radius [mm]; 0 = exact stop
+    wobj: io_.Name | None = None  # the work object the program states the target in (default base)
 
     @model_validator(mode="after")
     def _target(self) -> MoveSpec:
@@ -344,7 +351,11 @@ class MoveSpec(StrictModel):
             T_world_tcp=None if self.pose is None else pose_to_matrix(self.pose),
             speed=self.speed / 100.0 if self.type == "joint" else self.speed * MM,
             zone=self.zone * MM,
+            wobj=self.wobj or io_.BASE_WOBJ,
         )
+
+
+ProgramItem = io_.program_item(MoveSpec)
 
 
 class ProgramSpec(StrictModel):
@@ -352,7 +363,8 @@ class ProgramSpec(StrictModel):
 
     name: str = "main"
     start: Joints | None = None  # deg; default: the robot's stored joints
-    moves: Annotated[list[MoveSpec], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
+    moves: Annotated[list[ProgramItem], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
+    # moves and actions (program_io: gripper, set_output, pulse_output, wait_input, wait, comment)
 
     @model_validator(mode="after")
     def _name(self) -> ProgramSpec:
@@ -367,7 +379,8 @@ class ProgramSpec(StrictModel):
         """Return the program in SI; joints [deg, controller's] become the model's [rad] by the
         robot's `convention` (`RobotModel.convention`; None: unchanged)."""
         start = joints_to_model(self.start, convention)
-        return ProgramSI(self.name, start, tuple(m.to_si(convention) for m in self.moves))
+        moves = tuple(m.to_si(convention) for m in self.moves if isinstance(m, MoveSpec))
+        return ProgramSI(self.name, start, moves)
 
 
 class Project(StrictModel):
@@ -384,3 +397,10 @@ class Project(StrictModel):
     assembly: AssemblySpec | None = None
     polishing: PolishingSpec | None = None
     collision: CollisionSpec | None = None  # plan collision policy; absent: spheres + SDF
+    work_objects: Annotated[list[io_.WorkObjectSpec], Field(max_length=B.MAX_ITEMS)] | None = None
+    io: io_.IOSpec | None = None  # digital I/O, gripper, sync signals
+
+    @model_validator(mode="after")
+    def _references(self) -> Project:
+        io_.check_references(self)
+        return self

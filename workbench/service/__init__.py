@@ -3,26 +3,30 @@
 from __future__ import annotations
 
 from workbench.motion import SampledMotion
-from workbench.motion.programs import EXPORT_FORMATS
+from workbench.motion.programs import EXPORT_FORMATS, ExportedProgram, RobotProgram
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan
 from workbench.service.polishing import PolishingService
+from workbench.service.programs import WORKFLOWS
 from workbench.service.robot_setup import RobotSetup
 from workbench.service.section import SectionService
 from workbench.service.workbench import IKSolution, Workbench
 
 __all__ = [
     "EXPORT_FORMATS",
+    "WORKFLOWS",
     "AssemblyService",
     "BendingService",
     "CellBody",
     "CollisionService",
+    "ExportedProgram",
     "IKSolution",
     "MotionPlan",
     "PolishingService",
+    "RobotProgram",
     "RobotSetup",
     "SampledMotion",
     "SectionService",

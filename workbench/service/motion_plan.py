@@ -3,17 +3,17 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.collision import CollisionPolicy, RobotCollisionChecker, plan_check
 from workbench.collision.engine import EnginePathReport
-from workbench.errors import InputError, UnreachableError
-from workbench.geometry.transforms import invert_transform
+from workbench.errors import InputError
+from workbench.kinematics.dh_chain import joint_vector
 from workbench.motion import (
-    Move,
+    JointPath,
     Program,
     SampledMotion,
     Trajectory,
@@ -23,8 +23,11 @@ from workbench.motion import (
     validate_trajectory,
 )
 from workbench.motion.programs import export
-from workbench.project.models import ProgramSI
-from workbench.project.units import to_deg
+from workbench.motion.programs.from_plan import motion_program
+from workbench.motion.programs.from_plan import robot_program as _robot_program
+from workbench.motion.programs.model import MotionLimits, RobotProgram, ToolData, WorkObject
+from workbench.project.models import ProgramSI, Project
+from workbench.project.program_io import program_items
 from workbench.service.robot_setup import RobotSetup
 
 Progress = Callable[[float, str], None]
@@ -40,7 +43,9 @@ class MotionPlan:
     next one collides or could not be certified free (treated as colliding: the plan
     promises nothing it has not proven). `collision_report` is an `EnginePathReport` (its
     `message` states the guarantee between samples or the first failure); its
-    `colliding_indices` are exactly the samples the dense exact check flags.
+    `colliding_indices` are exactly the samples the dense exact check flags. `path` (the
+    joint waypoints) and `items` (the program's moves and actions) are what `robot_program`
+    needs; plans of other workflows leave them empty.
     """
 
     program: Program
@@ -48,6 +53,8 @@ class MotionPlan:
     samples: SampledMotion = field(repr=False)
     limits_report: ValidationReport
     collision_report: EnginePathReport
+    path: JointPath | None = field(default=None, repr=False)
+    items: tuple = field(default=(), repr=False)
 
     @property
     def times(self) -> NDArray[np.float64]:
@@ -101,48 +108,44 @@ class MotionPlan:
         return "; ".join(lines)
 
 
-def build_program(spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float64]) -> Program:
-    """Return the motion `Program` of a project program (poses in the robot base frame, SI)."""
-    if not spec.moves:
-        raise InputError("program.moves: the program has no moves; add at least one")
-    model = setup.model
-    T_base_world = invert_transform(setup.T_world_base)
-    T_tcp_flange = invert_transform(setup.T_flange_tcp)
-    moves = []
-    q_prev = q_start
-    for i, mv in enumerate(spec.moves):
-        where = f"program.moves[{i}]" + (f" ({mv.name})" if mv.name else "")
-        if mv.joints is not None:
-            q = mv.joints
-            if q.shape != (model.dof,):
-                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
-            lo, hi = model.limits[:, 0], model.limits[:, 1]
-            bad = np.flatnonzero((q < lo) | (q > hi))
-            if bad.size:
-                j = int(bad[0])
-                conv = model.convention  # the file's values are the controller's
-                qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
-                raise InputError(
-                    f"{where}.joints[{j}]: {to_deg(qc[j]):g} deg is outside"
-                    f" [{to_deg(lim[j, 0]):.1f}, {to_deg(lim[j, 1]):.1f}] deg"
-                )
-            moves.append(Move.joint(q, speed=mv.speed, zone=mv.zone, name=mv.name))
-            q_prev = q
-            continue
-        assert mv.T_world_tcp is not None
-        T_base_tcp = T_base_world @ mv.T_world_tcp
-        if mv.type == "linear":
-            moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=mv.zone, name=mv.name))
-            continue
-        try:
-            sols = np.asarray(model.ik(T_base_tcp @ T_tcp_flange, q_near=q_prev), float)
-        except UnreachableError as exc:
-            raise UnreachableError(f"{where}.pose: {exc}") from None
-        if len(sols) == 0:
-            raise UnreachableError(f"{where}.pose: no IK solution within the joint limits")
-        q_prev = sols[0]
-        moves.append(Move.joint(q_prev, speed=mv.speed, zone=mv.zone, name=mv.name))
-    return Program(spec.name, tuple(moves))
+def build_program(
+    spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float64], items: tuple = ()
+) -> Program:
+    """Return the motion `Program` of a project program (`from_plan.motion_program`): `items`
+    are its moves and actions (default: the moves of `spec`)."""
+    return motion_program(
+        spec.name, items or spec.moves, setup.model, setup.T_world_base, setup.T_flange_tcp, q_start
+    )
+
+
+def plan_project(
+    project: Project,
+    setup: RobotSetup,
+    checker: RobotCollisionChecker,
+    q_current: NDArray[np.float64],
+    *,
+    policy: CollisionPolicy,
+    dt: float = 0.01,
+    progress: Progress | None = None,
+) -> MotionPlan:
+    """Return the `MotionPlan` of the project's program (its moves and actions) from its start
+    joints (default `q_current` [rad]); InputError when there is no program or `dt` [s] is bad."""
+    section = project.program
+    if section is None:
+        raise InputError("program: the project has no program; add a 'program' with moves")
+    convention = setup.model.convention  # the file's controller joints -> the model's
+    spec = section.to_si(convention)
+    if not (np.isfinite(dt) and 0 < dt <= 0.1):
+        raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
+    q_start = (
+        q_current
+        if spec.start is None
+        else joint_vector(spec.start, setup.model.dof, "program.start")
+    )
+    items = program_items(project, convention)
+    return plan_motion(
+        spec, setup, checker, q_start, policy=policy, dt=dt, progress=progress, items=items
+    )
 
 
 def plan_motion(
@@ -154,13 +157,15 @@ def plan_motion(
     policy: CollisionPolicy,
     dt: float = 0.01,
     progress: Progress | None = None,
+    items: tuple = (),
 ) -> MotionPlan:
     """Return the `MotionPlan` of `spec`: IK through the moves, ruckig timing, then the checks
-    (collisions under `policy`)."""
+    (collisions under `policy`). `items`: the program's moves and actions (default: its moves)."""
     report = progress or (lambda f, msg: None)
     model = setup.model
     report(0.0, "moves through IK")
-    program = build_program(spec, setup, q_start)
+    items = items or spec.moves
+    program = build_program(spec, setup, q_start, items)
     path = plan_program(
         model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp
     )
@@ -176,7 +181,7 @@ def plan_motion(
         progress=lambda f, m: report(0.3 + 0.7 * f, m),
     )
     report(1.0, "done")
-    return plan
+    return replace(plan, path=path, items=tuple(items))
 
 
 def plan_from_trajectory(
@@ -223,3 +228,31 @@ def plan_from_trajectory(
 def export_text(plan: MotionPlan, fmt: str) -> str:
     """Return the plan exported as `fmt` (rapid, krl, ls, urscript, csv or json)."""
     return export(fmt, plan.program, plan.times, plan.positions)
+
+
+def robot_program(
+    plan: MotionPlan,
+    setup: RobotSetup,
+    *,
+    tool: ToolData,
+    work_objects: tuple[WorkObject, ...],
+    limits: MotionLimits,
+    robot: str,
+) -> RobotProgram:
+    """Return the `RobotProgram` of a Motion plan (`from_plan.robot_program`)."""
+    if plan.path is None:
+        raise InputError(
+            "this plan has no program moves to write (it was not planned from a program)"
+        )
+    return _robot_program(
+        plan.items,
+        plan.program,
+        plan.path,
+        plan.trajectory,
+        setup.model,
+        tool=tool,
+        work_objects=work_objects,
+        T_world_base=setup.T_world_base,
+        limits=limits,
+        robot=robot,
+    )

@@ -18,6 +18,7 @@ from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import DHRobot, RobotModel, Singularities
 from workbench.kinematics.configurations import labelled_solutions, pick_solution
 from workbench.kinematics.dh_chain import joint_vector
+from workbench.motion.programs import ExportedProgram, RobotProgram
 from workbench.project import (
     Project,
     load_project,
@@ -28,11 +29,12 @@ from workbench.project import (
 )
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
+from workbench.service import programs
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell
 from workbench.service.collision_engine import CollisionService
-from workbench.service.motion_plan import MotionPlan, Progress, export_text, plan_motion
+from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.robot_setup import RobotSetup, build_robot
 
@@ -264,26 +266,10 @@ class Workbench:
         `progress(fraction, message)` is called as the work advances. The plan is kept as
         `last_plan` for playback and export.
         """
-        section = self._project.program
-        if section is None:
-            raise InputError("program: the project has no program; add a 'program' with moves")
-        spec = section.to_si(self.robot.convention)  # the file's controller joints -> model's
-        if not (np.isfinite(dt) and 0 < dt <= 0.1):
-            raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
-        q_start = (
-            self._q
-            if spec.start is None
-            else joint_vector(spec.start, self.robot.dof, "program.start")
-        )
-        plan = plan_motion(
-            spec,
-            self._setup,
-            self._checker,
-            q_start,
-            policy=self.collision_policy,
-            dt=dt,
-            progress=progress,
-        )
+        plan = plan_project(
+            self._project, self._setup, self._checker, self._q,
+            policy=self.collision_policy, dt=dt, progress=progress,
+        )  # fmt: skip
         with self._lock:
             self._plan = plan
         return plan
@@ -293,7 +279,14 @@ class Workbench:
         """Return the most recent motion plan, or None before the first `plan_motion`."""
         return self._plan
 
-    def export_program(self, fmt: str) -> str:
-        """Return the last plan as a robot program or samples: rapid, krl, ls, urscript, csv, json."""
-        plan = self._plan or self.plan_motion()
-        return export_text(plan, fmt)
+    def robot_programs(self, workflow: str = "motion", plan: Any = None) -> list[RobotProgram]:
+        """Return a workflow's robot programs (one per robot) of `plan` (default: the latest)."""
+        return programs.robot_programs(self, workflow, plan)
+
+    def export_program(
+        self, fmt: str, workflow: str = "motion", *, force: bool = False
+    ) -> ExportedProgram:
+        """Return a workflow's latest plan (planned now if none) as robot programs (rapid, krl,
+        ls, urscript, nachi) or joint samples (csv, json); a plan that collides or breaks a
+        limit is refused (PlanningError) unless `force`."""
+        return programs.export(self, fmt, workflow, force=force)

@@ -1,0 +1,268 @@
+"""The robot program of a planned motion: a program's items (moves and actions) turned into the
+motion `Program` the planner runs, and the planned trajectory turned into a `RobotProgram`.
+
+A program is a list of items, each a move (`ProgramMove`: a joint move to joints or to a TCP
+pose, or a linear move to a pose, with its work object) or an action of the program model
+(`SetOutput`, `Gripper`, `WaitTime`, ...). Two rules tie the plan and the written program:
+
+- A move followed by an action (other than a comment) ends in an exact stop: the action
+  happens at the target, as a controller runs it (a robot in a blend has not arrived).
+- Each move's planned duration is the time between the trajectory's arrivals at the previous
+  and at this move's target (for a blended linear move, at the end of its blend), so the
+  durations add up to the trajectory's duration.
+
+Targets carry the planned joints: a joint move's own joints, or the IK solution of the pose
+nearest the joints the planner arrived with (the same solution for a pose joint move, the
+one nearest the previous target); Cartesian targets (linear moves and pose joint moves) also
+carry the TCP in the move's work object and the arm configuration of those joints.
+
+SI: m, rad, s.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import InputError, UnreachableError
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.arm_configuration import arm_configuration
+from workbench.kinematics.model import RobotModel
+from workbench.motion.moves import JointPath
+from workbench.motion.program import JOINT, Move, Program
+from workbench.motion.programs.model import (
+    Action,
+    Comment,
+    Instruction,
+    MotionLimits,
+    MoveInstr,
+    RobotProgram,
+    Target,
+    ToolData,
+    WorkObject,
+)
+from workbench.motion.trajectory import Trajectory
+
+FloatArray = NDArray[np.float64]
+
+
+class ProgramMove(Protocol):
+    """A move of a program (the project's `MoveSI` is one): `type` "joint" or "linear"; target
+    `joints` (dof,) [rad, model] or `T_world_tcp` (4, 4) [m]; `speed` a fraction (joint) or
+    [m/s] (linear); `zone` [m]; `wobj` the work object's name."""
+
+    name: str
+    type: str
+    joints: FloatArray | None
+    T_world_tcp: FloatArray | None
+    speed: float
+    zone: float
+    wobj: str
+
+
+Item = ProgramMove | Action
+
+
+def _is_action(item: object) -> bool:
+    return not hasattr(item, "T_world_tcp")
+
+
+def _moves(items: Sequence[Item]) -> list[tuple[int, ProgramMove]]:
+    return [(i, it) for i, it in enumerate(items) if not _is_action(it)]  # type: ignore[misc]
+
+
+def stop_zones(items: Sequence[Item]) -> list[float]:
+    """Return each move's zone [m]: its own, or 0 where an action other than a comment follows
+    it before the next move."""
+    zones = []
+    for i, mv in _moves(items):
+        stop = False
+        for nxt in items[i + 1 :]:
+            if not _is_action(nxt):
+                break
+            stop = stop or not isinstance(nxt, Comment)
+        zones.append(0.0 if stop else float(mv.zone))
+    return zones
+
+
+def nearest_ik(
+    model: RobotModel, T_base_flange: FloatArray, q_near: FloatArray, where: str
+) -> FloatArray:
+    """Return the IK solution (dof,) [rad] of a flange pose nearest `q_near` (the planner's one
+    rule for a pose's joints); UnreachableError names `where`."""
+    try:
+        sols = np.asarray(model.ik(T_base_flange, q_near=q_near), float)
+    except UnreachableError as exc:
+        raise UnreachableError(f"{where}: {exc}") from None
+    if len(sols) == 0:
+        raise UnreachableError(f"{where}: no IK solution within the joint limits")
+    return np.asarray(sols[0], float)
+
+
+def _where(index: int, mv: ProgramMove, prefix: str) -> str:
+    return f"{prefix}[{index}]" + (f" ({mv.name})" if mv.name else "")
+
+
+def motion_program(
+    name: str,
+    items: Sequence[Item],
+    model: RobotModel,
+    T_world_base: FloatArray,
+    T_flange_tcp: FloatArray,
+    q_start: FloatArray,
+    *,
+    field: str = "program.moves",
+) -> Program:
+    """Return the motion `Program` the planner runs for `items`: linear moves to the pose in the
+    base frame, joint moves to their joints or to the pose's IK solution nearest the previous
+    joint target (`nearest_ik`), zones from `stop_zones`.
+
+    InputError names the item (`field`[i]) whose joints are of the wrong length or outside the
+    limits [deg]; UnreachableError the pose without an IK solution.
+    """
+    moves_in = _moves(items)
+    if not moves_in:
+        raise InputError(f"{field}: the program has no moves; add at least one")
+    T_base_world = invert_transform(np.asarray(T_world_base, float))
+    T_tcp_flange = invert_transform(np.asarray(T_flange_tcp, float))
+    lo, hi = model.limits[:, 0], model.limits[:, 1]
+    moves, q_prev = [], np.asarray(q_start, float)
+    for (i, mv), zone in zip(moves_in, stop_zones(items), strict=True):
+        where = _where(i, mv, field)
+        if mv.joints is not None:
+            q = np.asarray(mv.joints, float)
+            if q.shape != (model.dof,):
+                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
+            bad = np.flatnonzero((q < lo) | (q > hi))
+            if bad.size:
+                j = int(bad[0])
+                raise InputError(
+                    f"{where}.joints[{j}]: {np.degrees(q[j]):g} deg is outside"
+                    f" [{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg (model convention)"
+                )
+            moves.append(Move.joint(q, speed=mv.speed, zone=zone, name=mv.name))
+            q_prev = q
+            continue
+        assert mv.T_world_tcp is not None
+        T_base_tcp = T_base_world @ mv.T_world_tcp
+        if mv.type == "linear":
+            moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=zone, name=mv.name))
+            continue
+        q_prev = nearest_ik(model, T_base_tcp @ T_tcp_flange, q_prev, f"{where}.pose")
+        moves.append(Move.joint(q_prev, speed=mv.speed, zone=zone, name=mv.name))
+    return Program(name, tuple(moves))
+
+
+def arrival_indices(path: JointPath, n_moves: int) -> NDArray[np.int64]:
+    """Return, per move, the index of its last waypoint in `path` (where it arrives)."""
+    out = np.empty(n_moves, np.int64)
+    for m in range(n_moves):
+        own = np.flatnonzero(path.move_index == m)
+        if own.size == 0:
+            raise InputError(f"move {m} has no waypoint in the planned path")
+        out[m] = own[-1]
+    return out
+
+
+def move_durations(path: JointPath, trajectory: Trajectory, n_moves: int) -> FloatArray:
+    """Return each move's planned duration (n_moves,) [s]: the time between the arrivals at the
+    previous target (the start for the first) and at its own; they add up to the duration."""
+    arrive = np.asarray(trajectory.waypoint_times, float)[arrival_indices(path, n_moves)]
+    arrive[-1] = trajectory.duration
+    return np.diff(np.concatenate([[0.0], arrive]))
+
+
+def _unique_names(names: list[str]) -> list[str]:
+    seen: dict[str, int] = {}
+    out = []
+    for k, n in enumerate(names):
+        base = n or f"p{k + 1}"
+        seen[base] = seen.get(base, 0) + 1
+        out.append(base if seen[base] == 1 else f"{base}_{seen[base]}")
+    return out
+
+
+def robot_program(
+    items: Sequence[Item],
+    program: Program,
+    path: JointPath,
+    trajectory: Trajectory,
+    model: RobotModel,
+    *,
+    tool: ToolData,
+    work_objects: Sequence[WorkObject],
+    T_world_base: FloatArray | None = None,
+    limits: MotionLimits | None = None,
+    robot: str = "robot",
+) -> RobotProgram:
+    """Return the `RobotProgram` of a planned motion.
+
+    `items` are the program's items (as given to `motion_program`), `program` the motion
+    program planned into `path` and `trajectory`. Every move gets its planned joints, its
+    duration (`move_durations`), its speed and zone as planned, `tool` and its work object;
+    pose targets also their TCP pose in that work object and arm configuration. The work
+    objects (in the robot base frame) the moves use are kept, in the given order.
+    """
+    moves_in = _moves(items)
+    if len(moves_in) != len(program.moves):
+        raise InputError(f"{len(moves_in)} program moves but {len(program.moves)} planned moves")
+    n = len(program.moves)
+    T_base_world = invert_transform(
+        np.eye(4) if T_world_base is None else np.asarray(T_world_base, float)
+    )
+    wobjs = {w.name: w for w in work_objects}
+    idx = arrival_indices(path, n)
+    durations = move_durations(path, trajectory, n)
+    names = _unique_names([mv.name for _, mv in moves_in])
+    T_tcp_flange = invert_transform(tool.T_flange_tcp)
+    planned = iter(range(n))
+    instructions: list[Instruction] = []
+    for item in items:
+        if _is_action(item):
+            instructions.append(item)  # type: ignore[arg-type]
+            continue
+        k = next(planned)
+        src, mv = moves_in[k][1], program.moves[k]
+        if src.wobj not in wobjs:
+            raise InputError(
+                f"move {k} ({src.name}): no work object {src.wobj!r}; have {list(wobjs)}"
+            )
+        wobj = wobjs[src.wobj]
+        q_arrive = path.positions[idx[k]]
+        if mv.kind == JOINT:
+            q = mv.q
+        else:
+            q = q_arrive
+            T_flange = T_base_world @ np.asarray(src.T_world_tcp, float) @ T_tcp_flange
+            if not np.allclose(model.fk(q), T_flange, atol=1e-9):  # blended: the target itself
+                q = nearest_ik(model, T_flange, q_arrive, f"move {k} ({src.name})")
+        if src.T_world_tcp is None:
+            target = Target(names[k], np.asarray(q, float))
+        else:
+            T_wobj_tcp = invert_transform(wobj.T_base_wobj) @ model.fk(q) @ tool.T_flange_tcp
+            target = Target(names[k], np.asarray(q, float), T_wobj_tcp, arm_configuration(model, q))
+        instructions.append(
+            MoveInstr(
+                mv.kind,  # type: ignore[arg-type]
+                target,
+                float(mv.speed),
+                float(mv.zone),
+                tool.name,
+                wobj.name,
+                float(durations[k]),
+            )
+        )
+    used = {src.wobj for _, src in moves_in}
+    return RobotProgram(
+        program.name,
+        (tool,),
+        tuple(w for w in work_objects if w.name in used),
+        tuple(instructions),
+        model.convention,
+        model.dof,
+        robot,
+        limits or MotionLimits(),
+    )
