@@ -30,7 +30,7 @@ def field_path(loc: tuple[int | str, ...]) -> str:
     for part in loc:
         if isinstance(part, int):
             out += f"[{part}]"
-        elif str(part).startswith("function-after") or str(part).startswith("function-before"):
+        elif str(part).startswith(("function-after", "function-before", "item:")):
             continue
         else:
             out += ("." if out else "") + str(part)
