@@ -53,11 +53,11 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
     lines = [ln.strip() for ln in src.splitlines()]
     assert lines[0] == "DEF demo()" and lines[-1] == "END"
     assert (
-        "TOOL_DATA[1] = {X 40.000000, Y 0.000000, Z 150.000000, A 10.00000000, B 0.00000000, C 30.00000000} ; tool gripper"
+        "TOOL_DATA[1] = {X 40.000000, Y 0.000000, Z 150.000000, A 10.000000, B 0.000000, C 30.000000} ; tool gripper"
         in lines
     )
     assert (
-        "BASE_DATA[1] = {X 600.000000, Y -100.000000, Z 200.000000, A 25.00000000, B 0.00000000, C 0.00000000} ; base fixture"
+        "BASE_DATA[1] = {X 600.000000, Y -100.000000, Z 200.000000, A 25.000000, B 0.000000, C 0.000000} ; base fixture"
         in lines
     )
     assert (
@@ -103,8 +103,8 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
     assert d[0] == "DEFDAT demo" and d[-1] == "ENDDAT"
     # the upright posture in NACHI's convention: controller A2 = 90 deg
     assert (
-        "DECL E6AXIS Xhome_1={A1 0.00000000, A2 90.00000000, A3 0.00000000, A4 0.00000000,"
-        " A5 0.00000000, A6 0.00000000, E1 0.0, E2 0.0, E3 0.0, E4 0.0, E5 0.0, E6 0.0}"
+        "DECL E6AXIS Xhome_1={A1 0.000000, A2 90.000000, A3 0.000000, A4 0.000000,"
+        " A5 0.000000, A6 0.000000, E1 0.0, E2 0.0, E3 0.0, E4 0.0, E5 0.0, E6 0.0}"
     ) in d
     pick = next(x for x in d if x.startswith("DECL E6POS Xp_pick="))
     assert ", S 6, T 48, E1 0.0," in pick  # front, elbow up, A5 < 0; A5 and A6 negative

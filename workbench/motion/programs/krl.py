@@ -47,17 +47,21 @@ isg-stuttgart.de/fileadmin/kernel/kernel-html/en-GB/814171275.html):
   stretched arm (0 deg for robots whose axes 3 and 4 intersect, shifted by the A3-A4 offset
   otherwise). The stretched arm is also `ArmConfiguration.elbow_up`'s boundary (the sign of
   u x w about the arm plane's normal), so bit 1 = `configuration.elbow_up`, computed from the
-  geometry and not from a controller's A3 zero, which differs between vendors.
+  geometry and not from a controller's A3 zero, which differs between vendors. One
+  difference: `elbow_up` (a sign of u x w) also changes where the forearm folds back across
+  the upper arm's line, KUKA's A3 rule does not; on the MZ07 that is controller J3 below
+  -97 deg (its estimated limit is -120 deg). There bit 1 is the opposite of KUKA's, which the
+  reader undoes consistently, but a KUKA controller would take the other elbow.
 - S bit 2 = 1: A5 < 0 (wrist flipped); 0: A5 >= 0. This is `configuration.wrist_flip`, the
   sign of the controller's J5 (A5 within +-180 deg).
 - T bit i (i = 0..5) = 1 when the controller's axis i+1 is < 0 deg, 0 when >= 0.
 
-Numbers: poses in mm with 6 decimals and angles in deg with 8, as KUKA's own .dat files carry
-9 significant digits: re-solving a target gives the planned joints within 1e-6 rad even near
-a singularity (the sample's p_back lies 0.5 deg from the stretched elbow, where 0.0001 mm of
-rounding moves A3 by 0.002 deg). The controller holds REAL as 32-bit floats (about 7
-significant digits, 0.0001 mm at 1 m), so on the robot such a target moves by that much;
-elsewhere by less than 1e-6 rad.
+Numbers: mm and deg with 6 decimals (KUKA's own .dat files carry about 9 significant
+digits): re-solving a target gives the planned joints within 1e-6 rad even near a singularity
+(the sample's p_back lies 0.5 deg from the stretched elbow, where 4 decimals in mm moved A3 by
+0.002 deg). The controller holds REAL as 32-bit floats (about 7 significant digits, 0.0001 mm
+at 1 m), so on the robot such a target moves by about that much; elsewhere by less than the
+file's rounding.
 """
 
 from __future__ import annotations
@@ -143,7 +147,7 @@ def frame_text(T: np.ndarray) -> str:
     )
 
 
-_MM, _DEG = 6, 8  # decimals of mm and deg in poses (see the module docstring)
+_MM, _DEG = 6, 6  # decimals of mm and deg in poses (see the module docstring)
 _EXTERNAL = ", ".join(f"E{k} 0.0" for k in range(1, 7))
 
 
