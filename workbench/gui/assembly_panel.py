@@ -316,8 +316,7 @@ class AssemblyPanel:
         main = next(arm for arm in self.wb.assembly.arms.values() if arm.main)
         self.app.timeline.load(
             replace(plan.motions[main.name], name="Assembly" if not one else f"Assembly: {name}"),
-            velocity_limits=main.setup.model.max_velocity,
-            acceleration_limits=main.setup.model.max_acceleration,
+            robot=main.setup.model,
             follow=self._follow,
         )
 

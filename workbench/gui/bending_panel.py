@@ -331,8 +331,7 @@ class BendingPanel:
 
         self.app.timeline.load(
             svc.playback(plan),
-            velocity_limits=robot.max_velocity,
-            acceleration_limits=robot.max_acceleration,
+            robot=robot,
             follow=follow,
         )
         first = plan.first_collision

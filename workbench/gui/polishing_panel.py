@@ -264,8 +264,7 @@ class PolishingPanel:
         robot = self.app.wb.robot
         self.app.timeline.load(
             motion.samples,
-            velocity_limits=robot.max_velocity,
-            acceleration_limits=robot.max_acceleration,
+            robot=robot,
         )
 
     def _show_plots(self, sim: PolishingSimulation) -> None:

@@ -6,11 +6,12 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 import viser
 import viser.uplot as uplot
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from workbench.service import SampledMotion
 
@@ -32,6 +33,7 @@ class Timeline:
         self.show = show
         self.motion: SampledMotion | None = None
         self._limits = (np.ones(0), np.ones(0))
+        self._convention: Any = None
         self._follow: Callable[[float], None] | None = None
         self._plot_folder: viser.GuiFolderHandle | None = None
         self._playing = threading.Event()
@@ -55,20 +57,24 @@ class Timeline:
         self,
         motion: SampledMotion,
         *,
-        velocity_limits: ArrayLike,
-        acceleration_limits: ArrayLike,
+        robot: Any,
         follow: Callable[[float], None] | None = None,
     ) -> None:
         """Show `motion` on the timeline and its plots, at t = 0, paused.
 
-        velocity_limits, acceleration_limits (dof,) [rad/s, rad/s^2] scale the plots to
-        percent of the limit. `follow(t)` is called whenever the
+        `robot` (the moving robot's model) gives the joint convention the plots show (the
+        controller's, as the jog sliders and the programs do) and the velocity and
+        acceleration limits that scale the plots to percent. `follow(t)` is called whenever the
         robot is posed at time `t` [s], for what moves with it (a carried part, a tool path
         marker); a later `load` replaces it.
         """
         self.pause()
         self.motion = motion
-        self._limits = (np.asarray(velocity_limits, float), np.asarray(acceleration_limits, float))
+        self._limits = (
+            np.asarray(robot.max_velocity, float),
+            np.asarray(robot.max_acceleration, float),
+        )
+        self._convention = robot.convention
         self._follow = follow
         self.time.max = max(motion.duration, 0.01)
         self.time.value = 0.0  # type: ignore[misc]
@@ -95,6 +101,9 @@ class Timeline:
         t = m.times
         dof = m.dof
         vel_lim, acc_lim = self._limits
+        # display in the controller's convention: q_ctrl = sign * q + offset, rates times sign
+        joints = self._convention.to_controller(m.joints)
+        sign = np.asarray(self._convention.sign, float)
         joint_series = [
             uplot.Series(label=f"J{j + 1}", stroke=JOINT_COLORS[j % 6], width=1.5)
             for j in range(dof)
@@ -107,9 +116,9 @@ class Timeline:
         with self._plot_folder:
             plots.append(
                 self.server.gui.add_uplot(
-                    data=(t, *(m.joints[:, j] * DEG_PER_RAD for j in range(dof))),
+                    data=(t, *(joints[:, j] * DEG_PER_RAD for j in range(dof))),
                     series=(x, *joint_series),
-                    title="Joint positions [deg]",
+                    title="Joint positions [deg, controller]",
                     aspect=1.6,
                     scales=SECONDS,
                 )
@@ -118,7 +127,7 @@ class Timeline:
                 ("Joint velocities [% of limit]", m.velocity, vel_lim),
                 ("Joint accelerations [% of limit]", m.acceleration, acc_lim),
             ):
-                pct = values / lim * 100.0
+                pct = values * sign / lim * 100.0
                 ones = np.full_like(t, 100.0)
                 plots.append(
                     self.server.gui.add_uplot(
