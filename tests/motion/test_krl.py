@@ -336,3 +336,14 @@ def test_read_program_replans_from_the_read_joints(sample, written) -> None:  # 
     pick = next(k for k, m in enumerate(prog.moves) if m.name == "p_pick")
     assert np.degrees(joints[pick])[5] == pytest.approx(200.0, abs=1e-6)
     assert not any(isinstance(a, SetOutput) and a.signal.number == 7 for a in read.actions())
+
+
+def test_two_targets_of_one_name_get_distinct_declarations(sample) -> None:  # noqa: ANN001
+    prog, model = sample
+    mv = prog.instructions[2]  # the PTP to p_pick, renamed like the LIN's p_place
+    bad = _with(prog, 2, target=dataclasses.replace(mv.target, name="p_place"))
+    out = write_krl(bad)
+    decls = [x.split("=")[0].strip() for x in out.files["demo.dat"].splitlines() if "DECL" in x]
+    assert "DECL E6POS Xp_place" in decls and "DECL E6POS Xp_place_2" in decls
+    assert any("two targets are named 'p_place'" in n for n in out.notes)
+    check_read_back(bad, read_krl(out.files), model, signals_by="number")

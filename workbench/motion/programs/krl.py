@@ -134,7 +134,9 @@ def _num(x: float, nd: int) -> str:
 def _compact(x: float, nd: int = 6) -> str:
     s = f"{x:.{nd}f}".rstrip("0")
     s = s + "0" if s.endswith(".") else s
-    return "0.0" if float(s) == 0.0 else s
+    if float(s) == 0.0:
+        return "0.0" if x == 0.0 else f"{x:.6E}"
+    return s
 
 
 def frame_text(T: np.ndarray) -> str:
@@ -180,6 +182,11 @@ class _Writer:
                 break
             k += 1
             src = f"{tgt.name or fallback}_{k}"
+        if k > 1:
+            self.notes.append(
+                f"two targets are named {tgt.name or fallback!r} with different values;"
+                f" the later one is declared as X{ident}"
+            )
         self.decls[ident] = body
         self.by_target[key] = "X" + ident
         return "X" + ident
@@ -329,12 +336,12 @@ class _Writer:
             if not np.isfinite(a.duration) or a.duration <= 0:
                 raise InputError(f"pulse of {a.signal.name}: duration {a.duration!r} s must be > 0")
             return [
-                f"  PULSE($OUT[{_number(a.signal)}], TRUE, {_compact(a.duration, 3)}) ; {a.signal.name}"
+                f"  PULSE($OUT[{_number(a.signal)}], TRUE, {_compact(a.duration)}) ; {a.signal.name}"
             ]
         if isinstance(a, WaitTime):
             if not np.isfinite(a.seconds) or a.seconds < 0:
                 raise InputError(f"wait time {a.seconds!r} s must be >= 0")
-            return [f"  WAIT SEC {_compact(a.seconds, 3)}"]
+            return [f"  WAIT SEC {_compact(a.seconds)}"]
         if isinstance(a, WaitInput):
             return self._wait(a)
         if isinstance(a, SyncPoint):
