@@ -34,7 +34,9 @@ from workbench.polishing import (
 )
 from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.process_path import check_path_lengths, point_labels
+from workbench.polishing.program import RobotProgram, polishing_program
 from workbench.project.polishing import PolishingSI, PolishingSpec
+from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, export_text, plan_from_trajectory
 from workbench.service.section import SectionService
 
@@ -268,6 +270,14 @@ class PolishingService(SectionService[PolishingSpec]):
     def export_program(self, fmt: str) -> str:
         """Return the polishing motion as a robot program or samples (rapid, krl, ls, urscript, csv, json)."""
         return export_text(self.last_motion or self.plan_motion(), fmt)
+
+    def robot_programs(self, plan: MotionPlan | None = None) -> list[RobotProgram]:
+        """Return the motion (default: the last) as a robot program (`polishing.program`)."""
+        plan, wb = plan or self.last_motion or self.plan_motion(), self.wb
+        robot = wb.project.robot
+        where = (wb.setup.T_world_base, self.T_world_workpiece, self._path().path.is_process)
+        args = (plan.trajectory, wb.robot, tool_data(wb.project.tool), *where, self.si, wb.joints)
+        return [polishing_program(*args, robot=robot.name, limits=motion_limits(robot))]
 
     # -- force control ---------------------------------------------------------------------
     def simulate(self, *, progress: Progress | None = None) -> PolishingSimulation:

@@ -1,0 +1,236 @@
+"""The robot program of a polishing motion: the planned path as the fewest linear moves that keep
+it within a chordal tolerance, with the planned joints and times, the force offset in the targets
+and the force in comments (SI: m, rad, s, N).
+
+The plan (`process_motion`) times one joint waypoint per path point (a spiral of 1,221 points on
+the example panel). A controller needs far fewer moves: `thin_path` keeps the fewest points such
+that every planned TCP point between two kept ones lies within `CHORD_TOLERANCE` of the straight
+line the controller moves on, and the tool axis within `ANGLE_TOLERANCE` of the interpolated one;
+the exact stops of the plan (first point, first process point, last point) are always kept.
+Each kept target carries the planned joints there (never re-solved), its TCP pose in the
+workpiece's work object and its arm configuration; each move its planned duration (the time
+between the trajectory's waypoints), so the moves add up to the plan's cycle time.
+
+Force: the plan's targets are the commanded points, moved D = F/k into the surface along the tool
+axis (`toolpath.force_offset`, seed 004: F = 20 N, k = 5000 N/m, D = 4 mm), so a controller
+without force control presses with F through the contact stiffness k; comments at the top and at
+the first process point state F, k and D. ABB's Integrated Force Control (FCPress1LStart /
+FCPressL / FCPressEnd) would take the surface points and F instead of the offset: not written by
+this build (see docs/programs.md).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import InputError
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.arm_configuration import arm_configuration
+from workbench.kinematics.model import RobotModel
+from workbench.motion.programs.model import (
+    Comment,
+    Instruction,
+    MotionLimits,
+    MoveInstr,
+    RobotProgram,
+    Target,
+    ToolData,
+    WorkObject,
+)
+from workbench.motion.trajectory import Trajectory, smooth_joint_path
+from workbench.polishing.process_motion import APPROACH_SPEED, ZONE
+from workbench.polishing.toolpath import force_offset
+
+F64 = NDArray[np.float64]
+
+#: Largest distance [m] of a planned TCP point from the linear move that replaces it (0.05 mm).
+CHORD_TOLERANCE = 0.05e-3
+#: Largest angle [rad] between a planned tool axis and the one the linear move interpolates (0.5 deg).
+ANGLE_TOLERANCE = np.radians(0.5)
+#: The work object of the program: the workpiece frame.
+WOBJ = "workpiece"
+
+
+class _Contact(Protocol):
+    @property
+    def stiffness(self) -> float: ...
+
+
+class ProcessSettings(Protocol):
+    """What the program needs of the process (the project's `PolishingSI` is one): `force` [N],
+    `feed` [m/s], `control.stiffness` [N/m]."""
+
+    @property
+    def force(self) -> float: ...
+    @property
+    def feed(self) -> float: ...
+    @property
+    def control(self) -> _Contact: ...
+
+
+def _segment_ok(P: F64, Z: F64, i: int, j: int, tol: float, angle_tol: float) -> bool:
+    """Return True when points i+1..j-1 lie within `tol` of segment P[i]P[j] and their axes within
+    `angle_tol` of the axis interpolated by arc position."""
+    if j - i < 2:
+        return True
+    a, b, p = P[i], P[j], P[i + 1 : j]
+    d = b - a
+    L2 = float(d @ d)
+    s = np.clip(((p - a) @ d) / L2, 0.0, 1.0) if L2 > 0 else np.zeros(len(p))
+    if np.any(np.linalg.norm(p - (a + s[:, None] * d), axis=1) > tol):
+        return False
+    z = (1.0 - s)[:, None] * Z[i] + s[:, None] * Z[j]
+    z /= np.maximum(np.linalg.norm(z, axis=1), 1e-12)[:, None]
+    cos = np.clip(np.sum(z * Z[i + 1 : j], axis=1), -1.0, 1.0)
+    return bool(np.all(np.arccos(cos) <= angle_tol))
+
+
+def thin_path(
+    points: F64,
+    axes: F64,
+    keep: list[int] | tuple[int, ...] = (),
+    *,
+    tol: float = CHORD_TOLERANCE,
+    angle_tol: float = ANGLE_TOLERANCE,
+) -> NDArray[np.int64]:
+    """Return the indices (K,) of the points (N, 3) [m] kept as linear-move targets: greedily the
+    farthest next point whose chord keeps every point between within `tol` [m] and its tool axis
+    (`axes` (N, 3), unit) within `angle_tol` [rad]; the first, last and `keep` indices always."""
+    P, Z = np.asarray(points, float), np.asarray(axes, float)
+    n = len(P)
+    if n == 0:
+        raise InputError("the polishing path has no points")
+    if not (np.isfinite(tol) and tol > 0 and np.isfinite(angle_tol) and angle_tol > 0):
+        raise InputError(
+            f"chordal tolerance {tol!r} m and angle tolerance {angle_tol!r} rad must be > 0"
+        )
+    forced = sorted({0, n - 1, *(int(k) for k in keep if 0 <= k < n)})
+    out = [0]
+    for lo, hi in zip(forced[:-1], forced[1:], strict=True):
+        i = lo
+        while i < hi:
+            j = i + 1
+            while j < hi and _segment_ok(P, Z, i, j + 1, tol, angle_tol):
+                j += 1
+            out.append(j)
+            i = j
+    return np.array(out, np.int64)
+
+
+def approach_time(model: RobotModel, q_start: F64 | None, q_end: F64) -> float:
+    """Return the time [s] of the jerk-limited joint move from `q_start` to `q_end` at
+    `APPROACH_SPEED` of the joint limits (the time of a stop-to-stop move, ruckig); a move of
+    less than 1e-9 rad takes a nominal 0.1 s (a controller still runs the instruction)."""
+    if q_start is None or np.max(np.abs(np.asarray(q_start, float) - q_end)) < 1e-9:
+        return 0.1
+    f = APPROACH_SPEED
+    traj = smooth_joint_path(
+        np.array([q_start, q_end], float),
+        np.asarray(model.max_velocity) * f,
+        np.asarray(model.max_acceleration) * f,
+        np.asarray(model.max_jerk) * f,
+        position_limits=model.limits,
+    )
+    return float(traj.duration)
+
+
+def polishing_program(
+    trajectory: Trajectory,
+    model: RobotModel,
+    tool: ToolData,
+    T_world_base: F64,
+    T_world_workpiece: F64,
+    process: NDArray[np.bool_],
+    settings: ProcessSettings,
+    q_start: F64 | None = None,
+    *,
+    name: str = "polish",
+    robot: str = "robot",
+    limits: MotionLimits | None = None,
+    tol: float = CHORD_TOLERANCE,
+    angle_tol: float = ANGLE_TOLERANCE,
+) -> RobotProgram:
+    """Return the polishing `RobotProgram` of the planned `trajectory` (one waypoint per path point).
+
+    `process` (N,) marks the process points (the rest: lead-in and lead-out); `settings` give
+    the force [N], the contact stiffness [N/m] (comments: the offset D = F/k is already in the
+    planned targets) and the feed [m/s] (comment); the work object is the workpiece frame
+    `T_world_workpiece` (4, 4) [m], the robot stands at `T_world_base`. The joint move to the
+    first point starts at `q_start` (dof,) [rad] (default: there already); the plan does not
+    time it, so it is timed here (`approach_time`) and is the one move beyond the plan's cycle time. A joint move to the first point (not timed by the plan: duration 0, speed
+    `APPROACH_SPEED`), then linear moves to the points `thin_path` keeps, each with the planned
+    joints, its duration from the trajectory and the TCP speed that covers the planned arc in
+    that time; exact stops at the first process point and at the last point, `ZONE` elsewhere.
+    """
+    q = np.asarray(trajectory.waypoints, float)
+    wt = np.asarray(trajectory.waypoint_times, float)
+    process = np.asarray(process, bool)
+    if process.shape != (len(q),):
+        raise InputError(f"process: {process.shape} flags for {len(q)} planned points")
+    force, stiffness, feed = settings.force, settings.control.stiffness, settings.feed
+    D = force_offset(force, stiffness)
+    T_base_wobj = invert_transform(np.asarray(T_world_base, float)) @ np.asarray(
+        T_world_workpiece, float
+    )
+    wobj = WorkObject(WOBJ, T_base_wobj)
+    T_base_tcp = model.fk(q) @ tool.T_flange_tcp
+    P, Z = T_base_tcp[:, :3, 3], T_base_tcp[:, :3, 2]
+    first = int(np.argmax(process)) if process.any() else 0
+    last_in = int(np.flatnonzero(process)[-1]) if process.any() else len(q) - 1
+    kept = thin_path(P, Z, (first, last_in), tol=tol, angle_tol=angle_tol)
+    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(P, axis=0), axis=1))])
+    T_wobj_base = invert_transform(T_base_wobj)
+
+    def target(i: int, label: str) -> Target:
+        return Target(label, q[i], T_wobj_base @ T_base_tcp[i], arm_configuration(model, q[i]))
+
+    ins: list[Instruction] = [
+        Comment(
+            f"polishing: contact force F = {force:g} N through the contact stiffness k = {stiffness:g} N/m:"
+            f" process targets offset D = F/k = {D * 1e3:.3f} mm into the surface along the tool axis"
+        ),
+        Comment(
+            f"path: {len(q)} planned points as {len(kept) - 1} linear moves within"
+            f" {tol * 1e3:g} mm (chord) and {np.degrees(angle_tol):g} deg (tool axis); feed {feed * 1e3:g} mm/s"
+        ),
+        MoveInstr(
+            "joint",
+            target(0, "approach"),
+            APPROACH_SPEED,
+            0.0,
+            tool.name,
+            WOBJ,
+            approach_time(model, q_start, q[0]),
+        ),
+    ]
+    for a, b in zip(kept[:-1], kept[1:], strict=True):
+        dt = float(wt[b] - wt[a])
+        if dt <= 0:
+            raise InputError(
+                f"point {b}: the planned trajectory reaches it in {dt!r} s; replan the motion"
+            )
+        if b == first:
+            ins.append(
+                Comment(f"process: press with F = {force:g} N (offset D = {D * 1e3:.3f} mm)")
+            )
+        kind = "lead_in" if b < first else ("lead_out" if b > last_in else "p")
+        zone = 0.0 if b in (first, last_in, len(q) - 1) else min(ZONE, tol)
+        speed = max(float((arc[b] - arc[a]) / dt), 1e-4)  # a move on the spot: any speed
+        ins.append(
+            MoveInstr("linear", target(int(b), f"{kind}{b}"), speed, zone, tool.name, WOBJ, dt)
+        )
+        if b == last_in and b != len(q) - 1:
+            ins.append(Comment("lead-out: off the surface, no contact force"))
+    return RobotProgram(
+        name,
+        (tool,),
+        (wobj,),
+        tuple(ins),
+        model.convention,
+        model.dof,
+        robot,
+        limits or MotionLimits(),
+    )
