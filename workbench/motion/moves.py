@@ -24,6 +24,11 @@ from workbench.kinematics.path_ik import follow_path
 from workbench.motion.program import JOINT, LINEAR, Program
 from workbench.motion.trajectory import Trajectory, smooth_joint_path
 
+# A line of a whole number of steps (85 mm at 5 mm) gets that many samples even when its
+# length carries rounding noise (a target read back from a program): the count, and so the
+# planned time, does not jump with the 1e-9 of a re-read pose.
+_COUNT_SLACK = 1e-6
+
 
 @dataclass(frozen=True, eq=False)
 class JointPath:
@@ -44,7 +49,7 @@ def line_poses(T_a: NDArray, T_b: NDArray, step: float, angle_step: float) -> ND
     dist = float(np.linalg.norm(T_b[:3, 3] - T_a[:3, 3]))
     rots = Rotation.from_matrix(np.stack([T_a[:3, :3], T_b[:3, :3]]))
     angle = float((rots[0].inv() * rots[1]).magnitude())
-    n = max(1, int(np.ceil(max(dist / step, angle / angle_step))))
+    n = max(1, int(np.ceil(max(dist / step, angle / angle_step) - _COUNT_SLACK)))
     s = np.arange(1, n + 1) / n
     R = Slerp([0.0, 1.0], rots)(s).as_matrix()
     return make_transform(R, T_a[:3, 3] + s[:, None] * (T_b[:3, 3] - T_a[:3, 3]))
@@ -58,7 +63,7 @@ def corner_poses(
     length = float(np.linalg.norm(p1 - p0) + np.linalg.norm(p2 - p1))
     rots = Rotation.from_matrix(np.stack([T_in[:3, :3], T_out[:3, :3]]))
     angle = float((rots[0].inv() * rots[1]).magnitude())
-    n = max(2, int(np.ceil(max(length / step, angle / angle_step))))
+    n = max(2, int(np.ceil(max(length / step, angle / angle_step) - _COUNT_SLACK)))
     s = np.arange(1, n + 1) / n
     pos = ((1 - s) ** 2)[:, None] * p0 + (2 * s * (1 - s))[:, None] * p1 + (s**2)[:, None] * p2
     return make_transform(Slerp([0.0, 1.0], rots)(s).as_matrix(), pos)
