@@ -39,7 +39,10 @@ def test_sample_program_reads_back() -> None:
     assert read.name == "DEMO"
     check_read_back(prog, read, model, signals_by="number")
     # the signal names travel in the I/O comments too
-    assert [a.signal.name for a in read.actions() if hasattr(a, "signal")][:2] == ["do_grip", "di_closed"]
+    assert [a.signal.name for a in read.actions() if hasattr(a, "signal")][:2] == [
+        "do_grip",
+        "di_closed",
+    ]
     assert read.tools[1].mass == pytest.approx(2.5) and read.tools[1].cog[2] == pytest.approx(0.08)
 
 
@@ -55,7 +58,11 @@ def test_written_program_reads_as_a_fanuc_programmer_expects() -> None:
         "  PR[90,6]=10.000000 ;", "  UTOOL[1]=PR[90] ;",
     ]  # fmt: skip
     first_move = next(i for i, ln in enumerate(body) if ln.startswith("J "))
-    assert body[first_move - 2 : first_move + 1] == ["  UTOOL_NUM=1 ;", "  UFRAME_NUM=1 ;", "J P[1] 60% FINE ;"]
+    assert body[first_move - 2 : first_move + 1] == [
+        "  UTOOL_NUM=1 ;",
+        "  UFRAME_NUM=1 ;",
+        "J P[1] 60% FINE ;",
+    ]
     assert "J P[2] 50% CNT20 ;" in body and "L P[3] 250mm/sec FINE ;" in body
     # circular: via on the numbered line, end on FANUC's continuation line
     k = body.index("C P[4]")
@@ -64,10 +71,19 @@ def test_written_program_reads_as_a_fanuc_programmer_expects() -> None:
     k = body.index("  $WAITTMOUT=200 ;")
     assert body[k + 1] == "  WAIT DI[4:di_closed]=ON TIMEOUT,LBL[1] ;"
     end = body.index("  END ;")
-    assert body[end + 1 : end + 5] == ["  LBL[1] ;", "  !timeout DI[4] 2 s ;", "  MESSAGE[TIMEOUT DI[4]] ;", "  ABORT ;"]
+    assert body[end + 1 : end + 5] == [
+        "  LBL[1] ;",
+        "  !timeout DI[4] 2 s ;",
+        "  MESSAGE[TIMEOUT DI 4] ;",
+        "  ABORT ;",
+    ]
     assert "  DO[5:do_blow]=PULSE,0.3sec ;" in body and "  WAIT 0.50(sec) ;" in body
     k = body.index("  !SYNC sync_1: demo,other ;")
-    assert body[k + 1 : k + 4] == ["  DO[7:do_sync]=ON ;", "  WAIT DI[8:di_sync]=ON ;", "  DO[7:do_sync]=OFF ;"]
+    assert body[k + 1 : k + 4] == [
+        "  DO[7:do_sync]=ON ;",
+        "  WAIT DI[8:di_sync]=ON ;",
+        "  DO[7:do_sync]=OFF ;",
+    ]
     assert all(len(ln.strip()[1:-2]) <= 32 for ln in body if ln.strip().startswith("!"))
     numbered = [ln for ln in mn if re.match(r"^\s*\d+:", ln)]
     assert f"LINE_COUNT\t= {len(numbered)};" in text
@@ -104,7 +120,11 @@ def test_configuration_letters_hand_checked() -> None:
     q = np.radians([29, 136, 83, 185, 12, 95])
     assert config_text(ArmConfiguration(False, False, False), q) == "N D B, 0, 1, 0"
     cfg, turns = parse_config("N D B, 0, 1, 0", "test")
-    assert cfg == ArmConfiguration(front=False, elbow_up=False, wrist_flip=False) and turns == (0, 1, 0)
+    assert cfg == ArmConfiguration(front=False, elbow_up=False, wrist_flip=False) and turns == (
+        0,
+        1,
+        0,
+    )
     rng = np.degrees(controller_ranges(turns))
     assert rng[3] == pytest.approx([180, 540], abs=1e-3) and np.isinf(rng[1]).all()
     with pytest.raises(InputError, match="CONFIG"):
@@ -125,7 +145,11 @@ def test_cnt_maps_a_radius_in_mm_and_back() -> None:
 
 def test_rounded_zone_and_speed_are_noted() -> None:
     prog, _ = sample_program()
-    k = next(i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == "linear")
+    k = next(
+        i
+        for i, x in enumerate(prog.instructions)
+        if isinstance(x, MoveInstr) and x.kind == "linear"
+    )
     out = write_ls(_with(prog, k, zone=0.0125, speed=0.2504))
     assert any("zone 12.5 mm written as 13 mm" in n for n in out.notes)
     assert any("TCP speed 250.4 mm/sec written as 250 mm/sec" in n for n in out.notes)
@@ -159,21 +183,32 @@ P[1:"HOME"]{
     assert np.degrees(mv.target.joints) == pytest.approx([0, -30, 0, 0, -60, 0])
     assert (mv.tool, mv.wobj) == ("UTOOL0", "UFRAME0")
     waits = [a for a in read.actions() if isinstance(a, WaitInput)]
-    assert [(w.signal.number, w.value, w.timeout) for w in waits] == [(12, False, 1.5), (13, True, 1.5)]
+    assert [(w.signal.number, w.value, w.timeout) for w in waits] == [
+        (12, False, 1.5),
+        (13, True, 1.5),
+    ]
     # an unknown instruction, and a label outside a handler, are listed by file line
     assert read.unknown == ((9, "CALL GRIP_OPEN"), (10, "LBL[7]"))
 
 
 def test_speed_of_1e9_mm_per_s_is_refused_naming_the_move() -> None:
     prog, _ = sample_program()
-    k = next(i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == "linear")
+    k = next(
+        i
+        for i, x in enumerate(prog.instructions)
+        if isinstance(x, MoveInstr) and x.kind == "linear"
+    )
     with pytest.raises(InputError, match=r"move 2 \(p_place\).*1e\+12 mm/s"):
         write_ls(_with(prog, k, speed=1e9))
 
 
 def test_reserved_names_are_renamed_with_a_note() -> None:
     prog, _ = sample_program()
-    k = next(i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == "linear")
+    k = next(
+        i
+        for i, x in enumerate(prog.instructions)
+        if isinstance(x, MoveInstr) and x.kind == "linear"
+    )
     mv = prog.instructions[k]
     prog = _with(prog, k, target=dataclasses.replace(mv.target, name="WAIT"))  # type: ignore[union-attr]
     out = write_ls(dataclasses.replace(prog, name="end"))
@@ -208,7 +243,11 @@ def test_malformed_files_name_the_line() -> None:
 def test_frames_the_program_does_not_set_read_as_identity_with_a_note() -> None:
     prog, _ = sample_program()
     text = write_ls(prog).text
-    cut = re.sub(r"\n\s*\d+:  (PR\[90[^\n]*|UTOOL\[\d\]=PR\[90\]|UFRAME\[\d\]=PR\[90\]) ;", "", text)
+    cut = re.sub(
+        r"\n\s*\d+:  (PR\[90[^\n]*|UTOOL\[\d\]=PR\[90\]|UFRAME\[\d\]=PR\[90\]) ;", "", text
+    )
     read = read_ls({"DEMO.ls": cut})
     assert any("UFRAME[1] is used but not set" in n for n in read.notes)
-    assert np.allclose(next(w for w in read.work_objects if w.name == "fixture").T_base_wobj, np.eye(4))
+    assert np.allclose(
+        next(w for w in read.work_objects if w.name == "fixture").T_base_wobj, np.eye(4)
+    )

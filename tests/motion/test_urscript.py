@@ -23,7 +23,9 @@ def _with(prog: RobotProgram, k: int, **changes: object) -> RobotProgram:
 
 
 def _first(prog: RobotProgram, kind: str) -> int:
-    return next(i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == kind)
+    return next(
+        i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == kind
+    )
 
 
 def test_sample_program_reads_back() -> None:
@@ -55,11 +57,19 @@ def test_written_program_reads_as_a_ur_programmer_expects() -> None:
     assert pick.startswith("movej(get_inverse_kin(pose_trans(fixture, p[")
     movel = next(ln for ln in lines if ln.startswith("movel("))
     assert movel.endswith("a=1.2, v=0.25, r=0.0)")
-    assert next(ln for ln in lines if ln.startswith("movec(")).endswith("a=1.2, v=0.1, r=0.0, mode=0)")
+    assert next(ln for ln in lines if ln.startswith("movec(")).endswith(
+        "a=1.2, v=0.1, r=0.0, mode=0)"
+    )
     # the timed wait, the plain wait of the sync handshake, the pulse
     k = lines.index("while not get_standard_digital_in(4):")
     assert lines[k - 1] == "wait_t = 0" and lines[k + 1] == "if wait_t >= 2.0:"
-    assert lines[k + 3 : k + 8] == ["halt", "end", "sync()", "wait_t = wait_t + get_steptime()", "end"]
+    assert lines[k + 3 : k + 8] == [
+        "halt",
+        "end",
+        "sync()",
+        "wait_t = wait_t + get_steptime()",
+        "end",
+    ]
     k = lines.index("# sync sync_1: demo, other")
     assert lines[k + 1 : k + 6] == [
         "set_standard_digital_out(7, True)",
@@ -69,7 +79,11 @@ def test_written_program_reads_as_a_ur_programmer_expects() -> None:
         "set_standard_digital_out(7, False)",
     ]
     k = lines.index("# pulse DO 5 for 0.3 s")
-    assert lines[k + 1 : k + 4] == ["set_standard_digital_out(5, True)", "sleep(0.3)", "set_standard_digital_out(5, False)"]
+    assert lines[k + 1 : k + 4] == [
+        "set_standard_digital_out(5, True)",
+        "sleep(0.3)",
+        "set_standard_digital_out(5, False)",
+    ]
 
 
 def test_pose_rotation_vector_against_scipy() -> None:
@@ -138,7 +152,12 @@ def test_reserved_names_are_renamed_with_a_note() -> None:
     mv = prog.instructions[k]
     prog = _with(prog, k, target=dataclasses.replace(mv.target, name="movej"))  # type: ignore[union-attr]
     tools = (dataclasses.replace(prog.tools[0], name="end"), prog.tools[1])
-    ins = tuple(dataclasses.replace(i, tool="end") if isinstance(i, MoveInstr) and i.tool == "gripper" else i for i in prog.instructions)
+    ins = tuple(
+        dataclasses.replace(i, tool="end")
+        if isinstance(i, MoveInstr) and i.tool == "gripper"
+        else i
+        for i in prog.instructions
+    )
     out = write_urscript(dataclasses.replace(prog, name="def", tools=tools, instructions=ins))
     assert "renamed 'def' to 'def_1': a reserved word in URScript" in out.notes
     assert "renamed 'end' to 'end_1': a reserved word in URScript" in out.notes
@@ -164,9 +183,17 @@ def test_malformed_files_name_the_line() -> None:
     prog, _ = sample_program()
     text = write_urscript(prog).text
     with pytest.raises(InputError, match=r"line \d+: expected 6 numbers"):
-        read_urscript({"demo.script": text.replace("fixture = p[0.6, -0.1, 0.2,", "fixture = p[0.6, -0.1,")})
+        read_urscript(
+            {"demo.script": text.replace("fixture = p[0.6, -0.1, 0.2,", "fixture = p[0.6, -0.1,")}
+        )
     with pytest.raises(InputError, match=r"line \d+: pose_trans of 'table'"):
-        read_urscript({"demo.script": text.replace("pose_trans(fixture, p[0.195", "pose_trans(table, p[0.195")})
+        read_urscript(
+            {
+                "demo.script": text.replace(
+                    "pose_trans(fixture, p[0.195", "pose_trans(table, p[0.195"
+                )
+            }
+        )
     with pytest.raises(InputError, match="no 'def"):
         read_urscript({"x.script": "movej([0,0,0,0,0,0])\n"})
     with pytest.raises(InputError, match="exactly one .script"):

@@ -331,7 +331,7 @@ class _Writer:
             self.handlers += [
                 f"LBL[{lbl}]",
                 f"!timeout DI[{a.signal.number}] {ticks / 100:g} s",
-                f"MESSAGE[TIMEOUT DI[{a.signal.number}]]",
+                f"MESSAGE[TIMEOUT DI {a.signal.number}]",
                 "ABORT",
             ]
         elif isinstance(a, WaitTime):

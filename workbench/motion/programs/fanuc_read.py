@@ -56,7 +56,9 @@ _PATTERNS = {
     "uframe_num": re.compile(r"UFRAME_NUM\s*=\s*(\d+)$", re.I),
     "pr_zero": re.compile(r"PR\[\s*(\d+)\s*(?::[^\]]*)?\]\s*=\s*LPOS\s*-\s*LPOS$", re.I),
     "pr_elem": re.compile(rf"PR\[\s*(\d+)\s*,\s*(\d+)\s*\]\s*=\s*({NUM})$", re.I),
-    "frame": re.compile(r"(UTOOL|UFRAME)\[\s*(\d+)\s*\]\s*=\s*PR\[\s*(\d+)\s*(?::[^\]]*)?\]$", re.I),
+    "frame": re.compile(
+        r"(UTOOL|UFRAME)\[\s*(\d+)\s*\]\s*=\s*PR\[\s*(\d+)\s*(?::[^\]]*)?\]$", re.I
+    ),
     "do": re.compile(rf"DO{_IO}\s*=\s*(ON|OFF)$", re.I),
     "pulse": re.compile(rf"DO{_IO}\s*=\s*PULSE\s*,\s*({NUM})\s*sec$", re.I),
     "waittmout": re.compile(r"\$WAITTMOUT\s*=\s*\(?\s*(\d+)\s*\)?$", re.I),
@@ -66,7 +68,9 @@ _PATTERNS = {
     "wait_t": re.compile(rf"WAIT\s+({NUM})\s*\(\s*sec\s*\)$", re.I),
     "end": re.compile(r"END$", re.I),
     "j": re.compile(rf"J\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*%\s+{_TERM}\s*(.*)$", re.I),
-    "l": re.compile(rf"L\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*mm/sec\s+{_TERM}\s*(.*)$", re.I),
+    "l": re.compile(
+        rf"L\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*mm/sec\s+{_TERM}\s*(.*)$", re.I
+    ),
     "c": re.compile(
         rf"C\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*mm/sec"
         rf"\s+{_TERM}\s*(.*)$",
@@ -113,7 +117,9 @@ def _T(xyzwpr: np.ndarray) -> np.ndarray:
 
 def parse_config(text: str, where: str) -> tuple[ArmConfiguration, tuple[int, int, int]]:
     """Return (ArmConfiguration, turn numbers of J1, J4, J6) of FANUC's 'F U T, t1, t4, t6'."""
-    m = re.fullmatch(r"\s*([NF])\s*([UD])\s*([TB])\s*(?:,\s*(-?\d+)\s*,\s*(-?\d+)\s*,\s*(-?\d+))?\s*", text, re.I)
+    m = re.fullmatch(
+        r"\s*([NF])\s*([UD])\s*([TB])\s*(?:,\s*(-?\d+)\s*,\s*(-?\d+)\s*,\s*(-?\d+))?\s*", text, re.I
+    )
     if not m:
         raise InputError(f"{where}: CONFIG {text!r} is not 'N|F U|D T|B, t1, t4, t6'")
     f, u, t = (g.upper() for g in m.groups()[:3])
@@ -147,7 +153,9 @@ def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
             continue
         m = re.match(r'\s*P\[\s*(\d+)\s*(?::\s*"?([^"\]]*)"?\s*)?\]\s*\{', text)
         if not m:
-            raise InputError(f"line {no}: expected a position 'P[i]{{' in /POS, got {text.strip()!r}")
+            raise InputError(
+                f"line {no}: expected a position 'P[i]{{' in /POS, got {text.strip()!r}"
+            )
         block = [text[m.end() :]]
         while "};" not in block[-1]:
             k += 1
@@ -163,7 +171,9 @@ def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
         ut = re.search(r"UT\s*:\s*(\d+)", body)
         if not uf or not ut:
             raise InputError(f"{where}: the position needs 'UF : m, UT : n'")
-        pos = _Position(no, (m.group(2) or "").strip() or f"P{m.group(1)}", int(uf.group(1)), int(ut.group(1)))
+        pos = _Position(
+            no, (m.group(2) or "").strip() or f"P{m.group(1)}", int(uf.group(1)), int(ut.group(1))
+        )
         joints = dict(re.findall(rf"\bJ(\d)\s*=\s*({NUM})\s*deg", body))
         cart = dict(re.findall(rf"\b([XYZWPR])\s*=\s*({NUM})\s*(?:mm|deg)", body))
         cfg = re.search(r"CONFIG\s*:\s*'([^']*)'", body)
@@ -175,7 +185,9 @@ def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
         elif len(cart) == 6:
             pos.xyzwpr = np.array([_num(cart[c], where) for c in "XYZWPR"])
             if not cfg:
-                raise InputError(f"{where}: a Cartesian position needs CONFIG : 'F U T, t1, t4, t6'")
+                raise InputError(
+                    f"{where}: a Cartesian position needs CONFIG : 'F U T, t1, t4, t6'"
+                )
             pos.config = cfg.group(1)
         else:
             raise InputError(f"{where}: expected J1..J6 [deg] or X, Y, Z [mm], W, P, R [deg]")
@@ -219,7 +231,9 @@ def _instructions(mn: list[tuple[int, str]]) -> list[tuple[int, str]]:
         elif cont and out:
             out[-1] = (out[-1][0], out[-1][1].rstrip() + " " + cont.group(1).strip())
         else:
-            raise InputError(f"line {no}: a /MN line starts with its number 'n:', got {raw.strip()!r}")
+            raise InputError(
+                f"line {no}: a /MN line starts with its number 'n:', got {raw.strip()!r}"
+            )
     clean = []
     for no, text in out:
         t = text.strip()
@@ -264,9 +278,23 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
             return ReadTarget(p.name, joints=np.radians(p.joints))
         assert p.xyzwpr is not None and p.config is not None
         cfg, turns = parse_config(p.config, f"line {p.line} (P[{i}])")
-        return ReadTarget(p.name, T_wobj_tcp=_T(p.xyzwpr), configuration=cfg, controller_ranges=controller_ranges(turns))
+        return ReadTarget(
+            p.name,
+            T_wobj_tcp=_T(p.xyzwpr),
+            configuration=cfg,
+            controller_ranges=controller_ranges(turns),
+        )
 
-    def move(kind: str, i: str, speed: float, term: str, rest: str, no: int, text: str, via: ReadTarget | None = None) -> None:
+    def move(
+        kind: str,
+        i: str,
+        speed: float,
+        term: str,
+        rest: str,
+        no: int,
+        text: str,
+        via: ReadTarget | None = None,
+    ) -> None:
         tgt = target(i, no)
         p = positions[int(i)]
         zone = zone_of_cnt(term.replace(" ", ""))
@@ -283,7 +311,9 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         if text.startswith("!"):
             c = text[1:].strip()
             if m := _C_TOOL.match(c):
-                (st.tool_names if m.group(1).upper() == "UTOOL" else st.frame_names)[int(m.group(2))] = m.group(3)
+                (st.tool_names if m.group(1).upper() == "UTOOL" else st.frame_names)[
+                    int(m.group(2))
+                ] = m.group(3)
             elif m := _C_MASS.match(c):
                 st.mass[int(m.group(1))] = float(m.group(2))
             elif m := _C_COG.match(c):
@@ -300,6 +330,7 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         if hit is None:
             unknown.append((no, text))
             continue
+        assert m is not None
         g = m.groups()
         where = f"line {no}"
         if hit == "utool_num":
@@ -317,7 +348,9 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
             k = int(g[2])
             if k not in st.pr:
                 raise InputError(f"{where}: PR[{k}] is used before the program sets it")
-            (st.tool_values if g[0].upper() == "UTOOL" else st.frame_values)[int(g[1])] = st.pr[k].copy()
+            (st.tool_values if g[0].upper() == "UTOOL" else st.frame_values)[int(g[1])] = st.pr[
+                k
+            ].copy()
         elif hit == "do":
             items.append((no, SetOutput(_signal("DO", g[0], g[1]), g[2].upper() == "ON")))
         elif hit == "pulse":
@@ -328,7 +361,9 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
             timeout = None
             if g[3] is not None:
                 if waittmout is None:
-                    notes.append(f"{where}: TIMEOUT without $WAITTMOUT: FANUC's default 30 s applies")
+                    notes.append(
+                        f"{where}: TIMEOUT without $WAITTMOUT: FANUC's default 30 s applies"
+                    )
                 timeout = (waittmout if waittmout is not None else DEFAULT_WAITTMOUT) / 100.0
             items.append((no, WaitInput(_signal("DI", g[0], g[1]), g[2].upper() == "ON", timeout)))
         elif hit == "wait_t":
@@ -347,19 +382,29 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
     tools = [ToolData("UTOOL0", np.eye(4))]
     for n in sorted(set(st.tool_values) | st.used_ut - {0}):
         if n not in st.tool_values:
-            notes.append(f"UTOOL[{n}] is used but not set in the program: read as identity (the controller's value applies)")
+            notes.append(
+                f"UTOOL[{n}] is used but not set in the program: read as identity (the controller's value applies)"
+            )
         T = _T(st.tool_values[n]) if n in st.tool_values else np.eye(4)
         tools.append(ToolData(f"UTOOL{n}", T, st.mass.get(n), st.cog.get(n)))
     wobjs = [WorkObject("UFRAME0", np.eye(4))]
     for n in sorted(set(st.frame_values) | st.used_uf - {0}):
         if n not in st.frame_values:
-            notes.append(f"UFRAME[{n}] is used but not set in the program: read as identity (the controller's value applies)")
-        wobjs.append(WorkObject(f"UFRAME{n}", _T(st.frame_values[n]) if n in st.frame_values else np.eye(4)))
+            notes.append(
+                f"UFRAME[{n}] is used but not set in the program: read as identity (the controller's value applies)"
+            )
+        wobjs.append(
+            WorkObject(f"UFRAME{n}", _T(st.frame_values[n]) if n in st.frame_values else np.eye(4))
+        )
     tools, wobjs, instructions = _named(tools, wobjs, instructions, st)
-    return ReadProgram(name, tuple(tools), tuple(wobjs), tuple(instructions), tuple(unknown), tuple(notes))
+    return ReadProgram(
+        name, tuple(tools), tuple(wobjs), tuple(instructions), tuple(unknown), tuple(notes)
+    )
 
 
-def _fold_syncs(items: list[tuple[int, object]], unknown: list[tuple[int, str]]) -> list[ReadMove | Action]:
+def _fold_syncs(
+    items: list[tuple[int, object]], unknown: list[tuple[int, str]]
+) -> list[ReadMove | Action]:
     out: list[ReadMove | Action] = []
     k = 0
     while k < len(items):
@@ -375,10 +420,12 @@ def _fold_syncs(items: list[tuple[int, object]], unknown: list[tuple[int, str]])
                 and seq[2].signal.number == seq[0].signal.number
             )  # fmt: skip
             if ok:
-                out.append(SyncPoint(name, robots, seq[0].signal, seq[1].signal))  # type: ignore[union-attr]
+                out.append(SyncPoint(name, robots, seq[0].signal, seq[1].signal))  # type: ignore[attr-defined]
                 k += 4
                 continue
-            unknown.append((no, f"!SYNC {name}: not followed by DO[n]=ON, WAIT DI[m]=ON, DO[n]=OFF"))
+            unknown.append(
+                (no, f"!SYNC {name}: not followed by DO[n]=ON, WAIT DI[m]=ON, DO[n]=OFF")
+            )
             k += 1
             continue
         out.append(it)  # type: ignore[arg-type]
@@ -386,7 +433,9 @@ def _fold_syncs(items: list[tuple[int, object]], unknown: list[tuple[int, str]])
     return out
 
 
-def _named(tools: list[ToolData], wobjs: list[WorkObject], ins: list, st: _State) -> tuple[list, list, list]:
+def _named(
+    tools: list[ToolData], wobjs: list[WorkObject], ins: list, st: _State
+) -> tuple[list, list, list]:
     """Give tools and frames the names of the program's comments (!UTOOL[n]: name)."""
     tmap = {f"UTOOL{n}": nm for n, nm in st.tool_names.items()}
     fmap = {f"UFRAME{n}": nm for n, nm in st.frame_names.items()}
@@ -399,6 +448,16 @@ def _named(tools: list[ToolData], wobjs: list[WorkObject], ins: list, st: _State
     out = []
     for i in ins:
         if isinstance(i, ReadMove):
-            i = ReadMove(i.kind, i.target, i.speed, i.zone, tmap.get(i.tool, i.tool), fmap.get(i.wobj, i.wobj), i.duration, i.via, i.line)
+            i = ReadMove(
+                i.kind,
+                i.target,
+                i.speed,
+                i.zone,
+                tmap.get(i.tool, i.tool),
+                fmap.get(i.wobj, i.wobj),
+                i.duration,
+                i.via,
+                i.line,
+            )
         out.append(i)
     return tools, wobjs, out

@@ -223,7 +223,9 @@ class _Writer:
             self.set_out(a.signal, a.value)
         elif isinstance(a, PulseOutput):
             if not np.isfinite(a.duration) or a.duration <= 0:
-                raise InputError(f"signal {a.signal.name!r}: pulse duration {a.duration!r} s must be > 0")
+                raise InputError(
+                    f"signal {a.signal.name!r}: pulse duration {a.duration!r} s must be > 0"
+                )
             self.add(_comment(f"pulse DO {a.signal.number} for {_f(a.duration)} s"))
             self.set_out(a.signal, True)
             self.add(f"sleep({_f(a.duration)})")

@@ -168,7 +168,9 @@ class _Reader:
 
     def current_tool(self, no: int) -> str:
         if self.tool is None:
-            self.notes.append(f"line {no}: a move before any set_tcp: the installation's TCP applies; read as the flange")
+            self.notes.append(
+                f"line {no}: a move before any set_tcp: the installation's TCP applies; read as the flange"
+            )
             self.tools.setdefault("flange", ToolData("flange", np.eye(4)))
             self.tool = "flange"
         return self.tool
@@ -208,30 +210,46 @@ class _Reader:
                 self.wobjs.setdefault(wobj, WorkObject(wobj, self.poses[wobj]))
             t = _num(kw["t"], where) if "t" in kw else 0.0
             speed = None if t > 0 else _num(kw.get("v", "1.05"), where) / JOINT_SPEED
-            self.items.append(ReadMove("joint", tgt, speed, r, tool, wobj, t if t > 0 else None, None, no))
+            self.items.append(
+                ReadMove("joint", tgt, speed, r, tool, wobj, t if t > 0 else None, None, no)
+            )
             return
         if fn == "movel":
             if len(pos) != 1:
                 raise InputError(f"{where}: movel needs one target, got {inner!r}")
             wobj, T = self.pose(pos[0], where)
             tgt = self.cart_target(name or default, T, q_c, where)
-            self.items.append(ReadMove("linear", tgt, _num(kw.get("v", "0.25"), where), r, tool, wobj, None, None, no))
+            self.items.append(
+                ReadMove(
+                    "linear", tgt, _num(kw.get("v", "0.25"), where), r, tool, wobj, None, None, no
+                )
+            )
             return
         if len(pos) != 2:
             raise InputError(f"{where}: movec needs a via and an end pose, got {inner!r}")
         wv, Tv = self.pose(pos[0], where)
         wobj, T = self.pose(pos[1], where)
         if wv != wobj:
-            self.notes.append(f"{where}: movec via in {wv!r}, end in {wobj!r}: read both in {wobj!r}")
+            self.notes.append(
+                f"{where}: movec via in {wv!r}, end in {wobj!r}: read both in {wobj!r}"
+            )
         via = self.cart_target(via_name or f"via_{no}", Tv, qv_c, where)
         tgt = self.cart_target(name or default, T, q_c, where)
         if kw.get("mode", "0").strip() not in ("0",):
-            self.notes.append(f"{where}: movec mode={kw['mode']} (fixed orientation) is read as a circular move")
-        self.items.append(ReadMove("circular", tgt, _num(kw.get("v", "0.25"), where), r, tool, wobj, None, via, no))
+            self.notes.append(
+                f"{where}: movec mode={kw['mode']} (fixed orientation) is read as a circular move"
+            )
+        self.items.append(
+            ReadMove(
+                "circular", tgt, _num(kw.get("v", "0.25"), where), r, tool, wobj, None, via, no
+            )
+        )
 
     def cart_target(self, name: str, T: np.ndarray, q: np.ndarray | None, where: str) -> ReadTarget:
         if q is None:
-            self.notes.append(f"{where}: target {name!r} states no joints: the controller takes the nearest")
+            self.notes.append(
+                f"{where}: target {name!r} states no joints: the controller takes the nearest"
+            )
         return ReadTarget(name, joints=q, T_wobj_tcp=T)
 
     def joint_target(self, s: str, name: str, where: str) -> tuple[ReadTarget, str]:
@@ -257,13 +275,17 @@ class _Reader:
         m = re.fullmatch(r"set_(standard|configurable)_digital_out", fn)
         a, _ = _args(inner, where)
         if not m or len(a) != 2 or a[1] not in ("True", "False"):
-            raise InputError(f"{where}: expected set_standard_digital_out(n, True|False), got {fn}({inner})")
+            raise InputError(
+                f"{where}: expected set_standard_digital_out(n, True|False), got {fn}({inner})"
+            )
         n = int(_num(a[0], where)) + (STANDARD_IO if m.group(1) == "configurable" else 0)
         self.items.append(SetOutput(Signal(f"DO{n}", n), a[1] == "True"))
 
 
 def _in_condition(cond: str) -> tuple[Signal, bool] | None:
-    m = re.fullmatch(r"(not\s+)?get_(standard|configurable)_digital_in\(\s*(\d+)\s*\)", cond.strip())
+    m = re.fullmatch(
+        r"(not\s+)?get_(standard|configurable)_digital_in\(\s*(\d+)\s*\)", cond.strip()
+    )
     if not m:
         return None
     n = int(m.group(3)) + (STANDARD_IO if m.group(2) == "configurable" else 0)
@@ -335,7 +357,14 @@ def read_urscript(files: dict[str, str]) -> ReadProgram:
     wobjs = list(rd.wobjs.values())
     if not any(w.name == "base" for w in wobjs):
         wobjs.append(WorkObject("base", np.eye(4)))
-    return ReadProgram(name, tuple(rd.tools.values()), tuple(wobjs), tuple(instructions), tuple(rd.unknown), tuple(rd.notes))
+    return ReadProgram(
+        name,
+        tuple(rd.tools.values()),
+        tuple(wobjs),
+        tuple(instructions),
+        tuple(rd.unknown),
+        tuple(rd.notes),
+    )
 
 
 def _statements(rd: _Reader, body: list[tuple[int, str]]) -> None:
@@ -345,7 +374,7 @@ def _statements(rd: _Reader, body: list[tuple[int, str]]) -> None:
         where = f"line {no}"
         if t.startswith("#"):
             c = " ".join(t[1:].split())
-            if m := re.fullmatch(rf"pulse\s+DO\s+(\d+)\s+for\s+(\S+)\s+s", c):
+            if m := re.fullmatch(r"pulse\s+DO\s+(\d+)\s+for\s+(\S+)\s+s", c):
                 rd.items.append(("pulse", no, int(m.group(1)), _num(m.group(2), where)))
             elif m := re.fullmatch(r"sync\s+(\S+?)\s*:\s*(.*)", c):
                 robots = tuple(r.strip() for r in m.group(2).split(",") if r.strip())
@@ -388,11 +417,11 @@ def _statements(rd: _Reader, body: list[tuple[int, str]]) -> None:
             else:
                 rd.unknown.append((no, t))
             continue
-        c = _call(t)
-        if c is None:
+        call = _call(t)
+        if call is None:
             rd.unknown.append((no, t))
             continue
-        fn, inner = c
+        fn, inner = call
         if fn in ("movej", "movel", "movec"):
             rd.move(fn, inner, no)
         elif fn in ("set_standard_digital_out", "set_configurable_digital_out"):
@@ -408,6 +437,7 @@ def _statements(rd: _Reader, body: list[tuple[int, str]]) -> None:
 
 
 def _set_tcp(rd: _Reader, arg: str, where: str) -> None:
+    T: np.ndarray | None
     if arg in rd.poses:
         name, T = arg, rd.poses[arg]
     else:
@@ -447,7 +477,7 @@ def _fold(items: list[object], unknown: list[tuple[int, str]]) -> list[ReadMove 
                     and isinstance(seq[2], SetOutput) and not seq[2].value and seq[2].signal.number == it[2]
                 )  # fmt: skip
                 if ok:
-                    out.append(PulseOutput(seq[0].signal, it[3]))  # type: ignore[union-attr]
+                    out.append(PulseOutput(seq[0].signal, it[3]))  # type: ignore[attr-defined]
                     k += 4
                     continue
             else:
@@ -459,7 +489,7 @@ def _fold(items: list[object], unknown: list[tuple[int, str]]) -> list[ReadMove 
                     and seq[2].signal.number == seq[0].signal.number
                 )  # fmt: skip
                 if ok:
-                    out.append(SyncPoint(it[2], it[3], seq[0].signal, seq[1].signal))  # type: ignore[union-attr]
+                    out.append(SyncPoint(it[2], it[3], seq[0].signal, seq[1].signal))  # type: ignore[attr-defined]
                     k += 4
                     continue
             unknown.append((it[1], f"# {it[0]} block not followed by its output/wait/output lines"))
