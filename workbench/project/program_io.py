@@ -23,6 +23,7 @@ from workbench.motion.programs.model import (
     Comment,
     Gripper,
     MotionLimits,
+    ProgramSettings,
     PulseOutput,
     SetOutput,
     Signal,
@@ -370,3 +371,22 @@ def motion_limits(robot: Robot) -> MotionLimits:
     speed = default.max_tcp_speed if robot.max_tcp_speed is None else robot.max_tcp_speed * MM
     zone = default.max_zone if robot.max_zone is None else robot.max_zone * MM
     return MotionLimits(max_tcp_speed=speed, max_zone=zone)
+
+
+def program_settings(project: Project) -> ProgramSettings:
+    """Return what the workflows' program builders need (`ProgramSettings`): the tool, the
+    robot's motion limits, the gripper actions, the named signals, the sync signals."""
+    io = _io(project.io)
+    grip = (
+        [io.gripper_action(c, "io.gripper") for c in (True, False)] if io.gripper else [None, None]
+    )
+    sync = {r: s for r in io.sync if (s := io.sync_signals(r)) is not None}
+    return ProgramSettings(
+        tool_data(project.tool),
+        motion_limits(project.robot),
+        grip[0],
+        grip[1],
+        {s.name: s.to_si() for s in io.outputs},
+        {s.name: s.to_si() for s in io.inputs},
+        sync,
+    )

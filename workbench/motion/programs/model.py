@@ -252,6 +252,22 @@ class RobotProgram:
         return float(t)
 
 
+@dataclass(frozen=True, eq=False)
+class ProgramSettings:
+    """What a workflow's program builder needs of the project, in SI: the robot's `tool`, its
+    motion `limits`, the gripper's `close` and `open` actions (None: the project has no
+    gripper), the named digital `outputs` and `inputs`, and per robot (by name) its `sync`
+    handshake signals (output, input)."""
+
+    tool: ToolData
+    limits: MotionLimits = field(default_factory=MotionLimits)
+    close: Gripper | None = None
+    open: Gripper | None = None
+    outputs: dict[str, Signal] = field(default_factory=dict)
+    inputs: dict[str, Signal] = field(default_factory=dict)
+    sync: dict[str, tuple[Signal, Signal]] = field(default_factory=dict)
+
+
 def move_label(program: RobotProgram, index: int, move: MoveInstr) -> str:
     """Return how errors name a move: 'program main, move 3 (p_above)'."""
     return f"program {program.name}, move {index}" + (f" ({move.name})" if move.name else "")
