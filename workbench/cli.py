@@ -60,6 +60,11 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the program even if the plan collides or breaks a limit",
     )
+    cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
+    cache_sub = cache.add_subparsers(dest="cache_command", required=True)
+    cache_sub.add_parser(
+        "clear", help="remove every cache entry ($WORKBENCH_CACHE, default ~/.cache/workbench)"
+    )
     for p in (serve, check, export):
         p.add_argument(
             "--allow-dir",
@@ -145,6 +150,14 @@ def _serve(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cache_clear() -> int:
+    from workbench.disk_cache import cache_root, clear
+
+    files, freed = clear()
+    print(f"removed {files} cache files ({freed / 2**20:.1f} MB) from {cache_root()}")
+    return 0
+
+
 def _check(args: argparse.Namespace) -> int:
     from workbench.project.units import to_deg, to_mm
     from workbench.service import Workbench
@@ -172,6 +185,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _serve(args)
         if args.command == "export":
             return _export(args)
+        if args.command == "cache":
+            return _cache_clear()
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

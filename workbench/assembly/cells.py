@@ -20,6 +20,7 @@ from numpy.typing import NDArray
 from scipy import ndimage
 
 from workbench.assembly.boxes import box_triangle_overlap
+from workbench.bounded_cache import BoundedCache
 from workbench.errors import InputError, MeshError
 
 _CHUNK = 200_000
@@ -160,8 +161,14 @@ def winding_number(
     return out
 
 
-_CACHE: dict[tuple[str, float], CellGrid] = {}
-_CACHE_MAX = 64
+# The grids of meshes seen before, least recently used evicted first (a server sees many parts).
+CELL_GRID_CACHE_ITEMS = 64
+CELL_GRID_CACHE_BYTES = 256 << 20
+_CACHE: BoundedCache[CellGrid] = BoundedCache(
+    CELL_GRID_CACHE_ITEMS,
+    CELL_GRID_CACHE_BYTES,
+    lambda g: g.occupied.nbytes + g.boundary.nbytes + g.origin.nbytes,
+)
 
 
 def subdivide_cached(mesh: trimesh.Trimesh, cell_size: float) -> CellGrid:
@@ -172,7 +179,5 @@ def subdivide_cached(mesh: trimesh.Trimesh, cell_size: float) -> CellGrid:
     grid = _CACHE.get(key)
     if grid is None:
         grid = subdivide(mesh, cell_size)
-        if len(_CACHE) >= _CACHE_MAX:
-            _CACHE.pop(next(iter(_CACHE)))
-        _CACHE[key] = grid
+        _CACHE.put(key, grid)
     return grid

@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.atomic_file import atomic_write
+from workbench.disk_cache import prune, touch
 
 __all__ = ["cache_path", "load_entry", "store_entry"]
 
@@ -54,9 +55,14 @@ def load_entry(path: Path, required: Iterable[str] = ()) -> dict[str, NDArray] |
         return None
     if any(k not in arrays for k in required):
         return None
+    touch(path)  # recently used: evicted last (disk_cache.prune)
     return arrays
 
 
 def store_entry(path: Path, arrays: Mapping[str, NDArray]) -> None:
-    """Write `arrays` to `path` atomically (unique temporary file, fsync, rename)."""
+    """Write `arrays` to `path` atomically (unique temporary file, fsync, rename).
+
+    The folder is then pruned to the cache's size limit, oldest entries first (disk_cache.py).
+    """
     atomic_write(path, lambda fh: np.savez(fh, **dict(arrays)), binary=True)  # type: ignore[arg-type]
+    prune(path.parent, keep=path)

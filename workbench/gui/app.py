@@ -31,6 +31,7 @@ from workbench.gui.server_guard import (
 )
 from workbench.gui.timeline import Timeline
 from workbench.service import Workbench
+from workbench.service.memory import release_memory
 
 log = logging.getLogger("workbench.gui")
 
@@ -141,6 +142,7 @@ class WorkbenchApp:
             with self.motion_tab:
                 self.motion = MotionPanel(self.server, self.wb, self.timeline)
             self._build_workflows()
+        release_memory()  # the replaced project's memory back to the OS
 
 
 def serve(

@@ -8,6 +8,7 @@ from typing import Any, Protocol
 
 import viser
 
+from workbench.service.memory import release_memory
 from workbench.service.motion_plan import Progress
 
 
@@ -44,3 +45,4 @@ def busy(
         bar.visible = False
         for b in buttons:
             b.disabled = False
+        release_memory()  # a plan frees hundreds of MB in pieces: give them back
