@@ -124,6 +124,11 @@ def _replan(read: ReadProgram, model, q_start: np.ndarray) -> float:  # noqa: AN
     a time get the speed fraction at which the planner takes that time (fixed point)."""
     timed = {k: m.duration for k, m in enumerate(read.moves) if m.speed is None}
     fractions = dict.fromkeys(timed, 1.0)
+    first = _motion_program(read, model, fractions)[0].moves[0]
+    if first.kind == "joint" and np.max(np.abs(first.q - q_start)) < 1e-6:
+        # the program starts where the robot stands: the read-back joints (within the
+        # written digits) are that start, not a micro-move to plan (ruckig refuses those)
+        q_start = first.q
     for _ in range(12):
         program, T_flange_tcp = _motion_program(read, model, fractions)
         path = plan_program(model, program, q_start, model.max_velocity, T_flange_tcp=T_flange_tcp)
