@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from workbench.assembly import programs as ap
 from workbench.assembly.arm import AssemblyArm
 from workbench.assembly.arm_check import check_arm
 from workbench.assembly.contacts import Contact
@@ -31,6 +32,7 @@ from workbench.geometry import check_transform
 from workbench.motion import Program
 from workbench.motion.programs import EXPORT_FORMATS, export
 from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec, AssemblyTaskSI
+from workbench.project.program_io import program_settings
 from workbench.service.mesh_files import load_mesh_file
 from workbench.service.robot_setup import build_robot
 from workbench.service.section import SectionService
@@ -269,6 +271,11 @@ class AssemblyService(SectionService[AssemblySpec]):
         if robot not in self.arms:
             raise InputError(f"robot {robot!r} does not exist; the robots are {list(self.arms)}")
         return robot_program(robot, plan.tasks, self.si.speed)
+
+    def robot_programs(self, plan: AssemblyPlan | None = None) -> list[ap.RobotProgram]:
+        """Return each robot's program of the sequence (default: the last plan; `assembly.programs`)."""
+        plan, s = plan or self.last_plan or self.plan_sequence(), program_settings(self.wb.project)
+        return ap.assembly_programs(plan.tasks, self.arms, s)
 
     def export_program(self, robot: str, fmt: str, plan: AssemblyPlan | None = None) -> str:
         """Return robot `robot`'s motion of the last sequence as rapid, krl, ls, urscript, csv or json.
