@@ -134,6 +134,7 @@ def check_read_back(
     joint_tol: float = 1e-6,
     check_durations: bool = True,
     check_speeds: bool = True,
+    zone_tol: float = 1e-4,
 ) -> None:
     """Assert that `read` (a reader's result on a post's output of `program`) is `program`:
 
@@ -142,7 +143,8 @@ def check_read_back(
       planned joints (`joint_tol` rad), and FK of the planned joints with the tool equals the
       read target in its work object (0.01 mm, 0.01 deg);
     - the low-level actions equal the plan's, in order (signals compared by `signals_by`);
-    - each move's duration (where the program states one) or speed equals the plan's.
+    - each move's duration (where the program states one) or speed equals the plan's;
+    - each zone equals the plan's within `zone_tol` [m] (FANUC's CNT has 1 mm steps: 1e-3).
     """
     assert not read.unknown, f"the reader did not understand: {read.unknown}"
     planned, got = program.moves, read.moves
@@ -165,7 +167,7 @@ def check_read_back(
             assert T_read is not None, where
             assert np.linalg.norm(T_read[:3, 3] - T_planned[:3, 3]) < 1e-5, where
             assert _angle(T_read[:3, :3], T_planned[:3, :3]) < 0.01, where
-        assert abs(rm.zone - mv.zone) < 1e-4, (where, rm.zone, mv.zone)
+        assert abs(rm.zone - mv.zone) < zone_tol, (where, rm.zone, mv.zone)
         if check_durations and rm.duration is not None:
             assert abs(rm.duration - mv.duration) <= 0.01 * mv.duration + 1e-3, where
         elif check_speeds:

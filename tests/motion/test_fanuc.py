@@ -152,8 +152,23 @@ def test_rounded_zone_and_speed_are_noted() -> None:
     )
     out = write_ls(_with(prog, k, zone=0.0125, speed=0.2504))
     assert any("zone 12.5 mm written as 13 mm" in n for n in out.notes)
-    assert any("TCP speed 250.4 mm/sec written as 250 mm/sec" in n for n in out.notes)
+    assert any("TCP speed 250.4 mm/s written as 250 mm/s" in n for n in out.notes)
     assert "!note:" in out.text
+
+
+def test_slow_speeds_use_cm_per_min_where_mm_per_sec_is_too_coarse() -> None:
+    prog, model = sample_program()
+    k = next(
+        i
+        for i, x in enumerate(prog.instructions)
+        if isinstance(x, MoveInstr) and x.kind == "linear"
+    )
+    prog = _with(prog, k, speed=0.03762)  # 37.62 mm/s: 38 mm/sec is 1 % off, 226 cm/min 0.12 %
+    out = write_ls(prog)
+    assert "L P[3] 226cm/min FINE ;" in out.text
+    read = read_ls(out.files)
+    assert read.moves[2].speed == pytest.approx(2.26 / 60)
+    check_read_back(prog, read, model, signals_by="number")
 
 
 def test_manual_wait_example_and_hand_written_lines() -> None:

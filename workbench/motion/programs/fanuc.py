@@ -36,14 +36,15 @@ and, for the letters and the turn-number boundaries, RoboDK's open FANUC post
 rear bit, ``angle_2_turn``). Our own code follows that rule; tests check hand-computed cases.
 
 Moves. ``J P[i] pct% FINE|CNTn`` (pct = the move's fraction of the joints' maximum speed, a
-whole percent 1..100), ``L P[i] v mm/sec FINE|CNTn`` (v a whole mm/sec), ``C P[via]`` +
-``:  P[end] v mm/sec FINE|CNTn`` (FANUC's circular move through P[via]). Zones: FANUC's CNT
+whole percent 1..100), ``L P[i] v mm/sec FINE|CNTn`` (v a whole mm/sec, or whole cm/min where that is nearer),
+``C P[via]`` + ``:  P[end] v mm/sec FINE|CNTn`` (FANUC's circular move through P[via]). Zones: FANUC's CNT
 is not a radius (0..100 says how much of the corner the path may cut); this post states
 "CNTn = a blend radius of n mm": zone 0 -> FINE, a zone of z mm -> CNT round(z) (at least
 CNT1, at most CNT100: a zone over 100 mm is refused), and the reader inverts it (CNTn -> n
 mm), so whole-millimetre zones round-trip exactly; other zones are rounded to the mm, with a
-note. Speeds and pulse/wait times are rounded to the controller's steps (1 %, 1 mm/sec,
-0.1 s pulses, 0.01 s waits) with a note when that changes them.
+note. Speeds and pulse/wait times are rounded to the controller's steps (1 %; 1 mm/sec, or
+1 cm/min = 1/6 mm/s where mm/sec is off by more than 0.5 % and cm/min is nearer; 0.1 s pulses, 0.01 s waits) with a note when that
+changes them (one note per kind with the largest change when there are more than three).
 
 Actions. ``DO[n:name]=ON|OFF``, ``DO[n:name]=PULSE,t sec``, ``WAIT DI[n:name]=ON|OFF``,
 ``WAIT t(sec)``, comments ``!text`` (at most 32 characters a line; longer ones are split).
@@ -183,7 +184,7 @@ class _Writer:
         self.mn: list[str] = []
         self.pos: list[str] = []
         self.handlers: list[str] = []
-        self.notes: list[str] = []
+        self.rounds: dict[str, list[tuple[str, float, float, str]]] = {}
         self.n_pos = 0
         self.n_lbl = 0
         self.names = NameTable("FANUC LS", RESERVED, max_len=POSITION_COMMENT_LEN)
@@ -271,7 +272,40 @@ class _Writer:
 
     def rounded(self, where: str, what: str, value: float, written: float, unit: str) -> None:
         if abs(value - written) > 1e-9 * max(1.0, abs(value)):
-            self.notes.append(f"{where}: {what} {value:g} {unit} written as {written:g} {unit}")
+            self.rounds.setdefault(what, []).append((where, value, written, unit))
+
+    def rounding_notes(self) -> list[str]:
+        """Return one note per rounding (up to 3 of a kind), else a summary with the largest."""
+        out = []
+        for what, cases in self.rounds.items():
+            text = [f"{w}: {what} {v:g} {u} written as {x:g} {u}" for w, v, x, u in cases]
+            if len(cases) <= 3:
+                out += text
+                continue
+            worst = max(
+                range(len(cases)),
+                key=lambda k: abs(cases[k][1] - cases[k][2]) / max(abs(cases[k][1]), 1e-12),
+            )
+            out.append(
+                f"{what} rounded to the controller's steps on {len(cases)} lines; the largest: {text[worst]}"
+            )
+        return out
+
+    def speed(self, where: str, v: float) -> str:
+        """Return a TCP speed [m/s] as whole mm/sec (when within 0.5 %) or, where that is
+        nearer, whole cm/min (1/6 mm/s steps: slow process speeds)."""
+        mm = v * 1000.0
+        mms = int(math.floor(mm + 0.5))
+        cmm = int(math.floor(mm * 6.0 + 0.5))
+        if mms < 1 and cmm < 1:
+            raise InputError(
+                f"{where}: TCP speed {mm:g} mm/s is under FANUC's 1 cm/min; raise the move's speed"
+            )
+        if mms >= 1 and abs(mms - mm) <= 5e-3 * mm or abs(mms - mm) <= abs(cmm / 6.0 - mm):
+            self.rounded(where, "TCP speed", mm, mms, "mm/s")
+            return f"{mms}mm/sec"
+        self.rounded(where, "TCP speed", mm, cmm / 6.0, "mm/s")
+        return f"{cmm}cm/min"
 
     def move(self, k: int, mv: MoveInstr) -> None:
         where = move_label(self.p, k, mv)
@@ -284,21 +318,15 @@ class _Writer:
             i = self.position(mv.target, ut, uf)
             self.mn.append(f"J P[{i}] {pct}% {term} ;")
             return
-        mms = int(math.floor(mv.speed * 1000.0 + 0.5))
-        if mms < 1:
-            raise InputError(
-                f"{where}: TCP speed {mv.speed * 1000:g} mm/s is under FANUC's 1 mm/sec;"
-                " raise the move's speed"
-            )
-        self.rounded(where, "TCP speed", mv.speed * 1000.0, mms, "mm/sec")
+        speed = self.speed(where, mv.speed)
         if mv.kind == "linear":
             i = self.position(mv.target, ut, uf)
-            self.mn.append(f"L P[{i}] {mms}mm/sec {term} ;")
+            self.mn.append(f"L P[{i}] {speed} {term} ;")
             return
         assert mv.via is not None  # check_program
         iv = self.position(mv.via, ut, uf)
         i = self.position(mv.target, ut, uf)
-        self.mn.append(f"C P[{iv}]\n    :  P[{i}] {mms}mm/sec {term} ;")
+        self.mn.append(f"C P[{iv}]\n    :  P[{i}] {speed} {term} ;")
 
     def action(self, a: object) -> None:
         if isinstance(a, SetOutput):
@@ -411,7 +439,7 @@ def write_ls(
             k += 1
         else:
             w.action(ins)
-    notes = [*prog_names.notes, *w.frame_names.notes, *w.names.notes, *w.notes]
+    notes = [*prog_names.notes, *w.frame_names.notes, *w.names.notes, *w.rounding_notes()]
     head = [f"!{c}" for n in notes for c in _comment_lines("note: " + n)]
     body = [f"  {h} ;" for h in head] + w.mn
     if w.handlers:

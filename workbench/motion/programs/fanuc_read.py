@@ -4,7 +4,7 @@ into a `ReadProgram`.
 Read: /PROG name; in /MN the frame lines (``PR[k]=LPOS-LPOS``, ``PR[k,j]=v``,
 ``UTOOL[n]=PR[k]``, ``UFRAME[m]=PR[k]``, named by the comments ``!UTOOL[n]: name`` /
 ``!UFRAME[m]: name``, mass and cog from ``!UTn mass ... kg`` / ``!UTn cog x,y,z mm``),
-``UTOOL_NUM`` / ``UFRAME_NUM``, ``J P[i] pct% FINE|CNTn``, ``L P[i] v mm/sec FINE|CNTn``,
+``UTOOL_NUM`` / ``UFRAME_NUM``, ``J P[i] pct% FINE|CNTn``, ``L P[i] v mm/sec|cm/min FINE|CNTn``,
 ``C P[via]`` + ``: P[end] v mm/sec ...``, ``DO[n]=ON|OFF``, ``DO[n]=PULSE,t sec``,
 ``$WAITTMOUT=k`` + ``WAIT DI[n]=ON|OFF TIMEOUT,LBL[j]`` (timeout k/100 s; FANUC's default
 3000 = 30 s when the program does not set it), ``WAIT DI[n]=ON|OFF``, ``WAIT t(sec)``,
@@ -69,10 +69,10 @@ _PATTERNS = {
     "end": re.compile(r"END$", re.I),
     "j": re.compile(rf"J\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*%\s+{_TERM}\s*(.*)$", re.I),
     "l": re.compile(
-        rf"L\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*mm/sec\s+{_TERM}\s*(.*)$", re.I
+        rf"L\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*(mm/sec|cm/min)\s+{_TERM}\s*(.*)$", re.I
     ),
     "c": re.compile(
-        rf"C\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*mm/sec"
+        rf"C\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+P\[\s*(\d+)\s*(?::[^\]]*)?\]\s+({NUM})\s*(mm/sec|cm/min)"
         rf"\s+{_TERM}\s*(.*)$",
         re.I,
     ),
@@ -134,6 +134,12 @@ def controller_ranges(turns: tuple[int, ...], dof: int = 6) -> np.ndarray:
         lo, hi = turn_range_deg(t)
         rng[j] = [np.radians(lo) - TURN_SLACK, np.radians(hi) + TURN_SLACK]
     return rng
+
+
+def _tcp_speed(value: str, unit: str, where: str) -> float:
+    """Return a TCP speed [m/s] of FANUC's `value` in mm/sec or cm/min."""
+    v = _num(value, where)
+    return v / 1000.0 if unit.lower() == "mm/sec" else v / 6000.0
 
 
 def _num(s: str, where: str) -> float:
@@ -373,10 +379,10 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         elif hit == "j":
             move("joint", g[0], _num(g[1], where) / 100.0, g[2], g[3], no, text)
         elif hit == "l":
-            move("linear", g[0], _num(g[1], where) / 1000.0, g[2], g[3], no, text)
+            move("linear", g[0], _tcp_speed(g[1], g[2], where), g[3], g[4], no, text)
         elif hit == "c":
             via = target(g[0], no)
-            move("circular", g[1], _num(g[2], where) / 1000.0, g[3], g[4], no, text, via)
+            move("circular", g[1], _tcp_speed(g[2], g[3], where), g[4], g[5], no, text, via)
 
     instructions = _fold_syncs(items, unknown)
     tools = [ToolData("UTOOL0", np.eye(4))]
