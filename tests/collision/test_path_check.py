@@ -156,7 +156,6 @@ def test_exact_mode_gives_the_same_sample_verdicts(wb: Workbench, engine: Collis
             acceleration=None,
             deviation=np.zeros(exact.dof),
             max_depth=12,
-            budget=5000,
         )
         hit_intervals = {e[1] for e in out.events if e[3]}  # midpoints fcl found colliding
         assert hit_intervals <= set(b.between_indices)

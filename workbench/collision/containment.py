@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.collision.bodies import Pair, RobotBodies
+from workbench.collision.thin_matmul import thin_matmul
 
 FloatArray = NDArray[np.float64]
 
@@ -63,7 +64,7 @@ class Containment:
             body = scene.entry(outer)
             if body.halfspaces is not None:
                 normals, offsets = body.halfspaces
-                inside = np.all(local @ normals.T <= offsets, axis=1)
+                inside = np.all(thin_matmul(local, normals.T) <= offsets, axis=1)
             else:
                 inside = np.asarray(body.mesh.contains(local), bool)
             out[:, k] |= inside

@@ -28,7 +28,7 @@ from workbench.collision.containment import Containment
 from workbench.collision.exact_mode import ExactMode
 from workbench.collision.exact_pairs import ExactPairs
 from workbench.collision.pair_table import TABLE_TOL, PairTable, PairTables
-from workbench.collision.path_check import AccelerationBound, PathCertifier
+from workbench.collision.path_check import MAX_DEPTH, AccelerationBound, PathCertifier
 from workbench.collision.report import ConfigCheck, EnginePathReport, path_report
 from workbench.collision.robot_checker import RobotCollisionChecker
 from workbench.collision.spheres_mode import FAR_PAIR, SpheresMode
@@ -241,8 +241,7 @@ class CollisionEngine:
         deviation: ArrayLike | None = None,
         sampler: Callable[[FloatArray], FloatArray] | None = None,
         acceleration: ArrayLike | AccelerationBound | None = None,
-        max_depth: int = 12,
-        budget: int = 5000,
+        max_depth: int = MAX_DEPTH,
         progress: Progress | None = None,
     ) -> EnginePathReport:
         """Return the report of the path through samples qs (N, dof) [rad], between samples too.
@@ -252,7 +251,9 @@ class CollisionEngine:
         times -> (M, dof) [rad], the real motion) within ``acceleration * h**2 / 8`` of it,
         acceleration (dof,) [rad/s^2] bounding |q''| (or a function (t0, t1) -> (M, dof)
         bounding it on each interval [t0, t1]). Intervals that cannot be certified are
-        bisected up to `max_depth` times (at most `budget` configurations in all). All
+        bisected, each on its own, up to `max_depth` times (the finest subdivision; no
+        budget shared across the path, so the cost per sample does not grow with its length);
+        one still not certified there is reported as such (`uncertified_indices`). All
         samples go through the fast items at once; what they flag is confirmed exactly, pair
         by pair, so `colliding_indices` equals the dense exact check of every sample.
         """
@@ -279,7 +280,6 @@ class CollisionEngine:
             acceleration=acc,
             deviation=dev,
             max_depth=max_depth,
-            budget=budget,
             progress=progress,
         )
         self.save_tables()

@@ -44,7 +44,9 @@ class EnginePathReport(PathReport):
 
     `colliding_indices`: samples in collision (the exact verdict of each sample);
     `between_indices`: samples i whose interval to i+1 collides (or could not be certified)
-    between them. clearance [m]: lower bound over the whole path (samples and between) when
+    between them; `uncertified_indices`: those of them not certified at the finest
+    subdivision (`path_check.MAX_DEPTH` halvings) without a colliding configuration found.
+    clearance [m]: lower bound over the whole path (samples and between) when
     collision-free. first_time [s] / first_q [rad]: where the first collision is (a sample
     or, `between`, between two); link/obstacle: the colliding pair's names; penetration [m]:
     deepest vertex of either body inside the other. `evaluated`: configurations checked,
@@ -64,6 +66,7 @@ class EnginePathReport(PathReport):
     certified: bool = True
     between: bool = False
     between_indices: tuple[int, ...] = ()
+    uncertified_indices: tuple[int, ...] = ()
     flagged_samples: int = 0
     exact_pairs: int = 0
     fallback: str | None = None
@@ -89,9 +92,12 @@ class EnginePathReport(PathReport):
                 f" {self.evaluated} configurations checked, {self.mode})"
             )
         if not self.certified and self.link is None:
+            i = self.first_index
             return (
-                f"not certified between samples near t = {self.first_time:.3f} s: clearance"
-                " below the subdivision limit; treat it as touching"
+                f"not certified between samples {i} and {i + 1} near t = {self.first_time:.3f} s"
+                f" (no colliding configuration found; {len(self.uncertified_indices)}"
+                " interval(s) whose clearance is below what the finest subdivision resolves):"
+                " treat it as touching"
             )
         where = f"t = {self.first_time:.3f} s" if self.first_time is not None else "?"
         at = (
@@ -121,6 +127,7 @@ def path_report(
     n = len(q)
     hits = sorted(out.sample_hits)
     between = sorted({e[1] for e in out.events})
+    uncertified = sorted({e[1] for e in out.events if not e[3]})
     base: dict[str, Any] = {
         "collision_free": not hits and not out.events,
         "first_index": None,
@@ -132,6 +139,7 @@ def path_report(
         "clearance": 0.0,
         "evaluated": out.evaluated,
         "between_indices": tuple(between),
+        "uncertified_indices": tuple(uncertified),
         "flagged_samples": out.flagged,
         "exact_pairs": out.exact_pairs,
     }
