@@ -13,4 +13,4 @@ RUN pip install . && chown -R workbench:workbench /app
 
 USER workbench
 EXPOSE 8080
-CMD ["workbench", "serve", "projects/mz07_cell.json", "--host", "0.0.0.0", "--port", "8080"]
+CMD ["workbench", "serve", "projects/mz07_cell.json", "--host", "0.0.0.0", "--port", "8080", "--allow-dir", "web_assets"]
