@@ -1,0 +1,92 @@
+"""wb.robot_programs / wb.export_program: the Motion workflow's program, refusal of a plan with
+problems, the registry's formats, and `workbench export` writing one file, a folder or a zip."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from workbench import Workbench
+from workbench.errors import InputError, PlanningError
+from workbench.motion.programs import EXPORT_FORMATS, PROGRAM_FORMATS
+
+ROOT = Path(__file__).resolve().parents[2]
+MZ07 = ROOT / "projects" / "mz07_cell.json"
+
+
+@pytest.fixture(scope="module")
+def wb() -> Workbench:
+    w = Workbench.open(MZ07)
+    w.plan_motion()
+    return w
+
+
+def test_the_motion_program_is_the_plans(wb: Workbench) -> None:
+    (program,) = wb.robot_programs("motion")
+    plan = wb.last_plan
+    assert plan is not None and program.name == plan.program.name == "pick_place"
+    assert [m.name for m in program.moves] == [m.name for m in plan.program.moves]
+    assert program.tools[0].mass == 2.0 and program.robot == "MZ07"
+    assert sum(m.duration for m in program.moves) == pytest.approx(plan.cycle_time)
+    assert [type(a).__name__ for a in program.actions()].count("SetOutput") == 2  # grip, release
+
+
+@pytest.mark.parametrize("fmt", sorted(EXPORT_FORMATS))
+def test_every_format_exports_files_with_names(wb: Workbench, fmt: str) -> None:
+    out = wb.export_program(fmt)
+    assert out.files and all(name and text.strip() for name, text in out.files.items())
+    if fmt in PROGRAM_FORMATS:
+        text = "\n".join(out.files.values())
+        assert "pick" in text.lower() or fmt == "nachi"
+
+
+def test_bad_format_and_workflow_are_named(wb: Workbench) -> None:
+    with pytest.raises(
+        InputError, match="format: 'gcode' is not one of rapid, krl, ls, urscript, nachi"
+    ):
+        wb.export_program("gcode")
+    with pytest.raises(InputError, match="workflow: 'welding' is not one of motion, bending"):
+        wb.robot_programs("welding")
+
+
+def test_a_colliding_plan_is_refused_unless_forced() -> None:
+    data = json.loads(MZ07.read_text())
+    data["cell"]["objects"].append(
+        {"name": "crate", "shape": "box", "size": [200, 120, 200], "pose": {"xyz": [430, 0, 580]}}
+    )
+    wb = Workbench.from_dict(data, base_dir=MZ07.parent)
+    with pytest.raises(PlanningError, match="the plan has problems: .*crate.*force=True"):
+        wb.export_program("rapid")
+    assert wb.last_plan is not None and not wb.last_plan.ok
+    assert "MoveL" in wb.export_program("rapid", force=True).text
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "workbench", "export", str(MZ07), *args],
+        capture_output=True, text=True, timeout=300, cwd=ROOT,
+    )  # fmt: skip
+
+
+def test_cli_writes_a_file_a_folder_or_a_zip(tmp_path: Path) -> None:
+    res = _cli("--format", "rapid", "--out", str(tmp_path / "cell.mod"))
+    assert res.returncode == 0, res.stderr
+    assert (tmp_path / "cell.mod").read_text().startswith("MODULE pick_place")
+    res = _cli("--format", "krl", "--out", str(tmp_path / "krl"))
+    assert res.returncode == 0, res.stderr
+    assert sorted(p.name for p in (tmp_path / "krl").iterdir()) == [
+        "pick_place.dat",
+        "pick_place.src",
+    ]
+    res = _cli("--format", "krl", "--workflow", "motion", "--out", str(tmp_path / "krl.zip"))
+    assert res.returncode == 0, res.stderr
+    with zipfile.ZipFile(tmp_path / "krl.zip") as zf:
+        assert sorted(zf.namelist()) == ["pick_place.dat", "pick_place.src"]
+        assert (
+            zf.read("pick_place.src").decode() == (tmp_path / "krl" / "pick_place.src").read_text()
+        )
