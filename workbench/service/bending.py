@@ -18,6 +18,7 @@ from workbench.errors import InputError
 from workbench.kinematics import follow_path
 from workbench.motion import SampledMotion, smooth_joint_path
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
+from workbench.project.program_io import program_settings
 from workbench.service.section import SectionService
 from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
 from workbench.sheetmetal.check_cost import CheckCost, check_cost
@@ -38,6 +39,7 @@ from workbench.sheetmetal.grasp import (
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.plan import BendingPlan, first_collision, robot_frames
 from workbench.sheetmetal.plan import playback as sample_playback
+from workbench.sheetmetal.program import RobotProgram, bending_program
 from workbench.sheetmetal.sequence import check_sequence
 from workbench.sheetmetal.transfer import (
     base_flange_poses,
@@ -278,6 +280,11 @@ class BendingService(SectionService[BendingSpec]):
     def last_plan(self) -> BendingPlan | None:
         """Return the latest plan (None before `plan`, or after the sequence or grasp changed)."""
         return self._plan
+
+    def robot_programs(self, plan: BendingPlan | None = None) -> list[RobotProgram]:
+        """Return the plan (default: the last) as a robot program (`sheetmetal.program`)."""
+        plan, s = plan or self.last_plan or self.plan(), program_settings(self.wb.project)
+        return [bending_program(plan, self.wb.setup, self.si(), s, self.wb.joints)]
 
     def check_cost(self, plan: BendingPlan, repeat: int = 3) -> CheckCost:
         """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request."""

@@ -1,0 +1,245 @@
+"""The robot program of a bending plan: load, each bend at the die with the press handshake,
+the transfer to the pallet as planned, unload, home (SI: m, rad, s).
+
+What today's `BendingPlan` holds and how the program uses it:
+
+- `placements`: per bend, the TCP pose and the joints holding the part on the die. Each bend
+  is a joint move to its approach pose (the placement moved by the transfer's `retract` offset
+  in the die frame, solved nearest the placement's joints and refused when that is another arm
+  configuration), a linear move onto the die, the press handshake (pulse output `PRESS_START`,
+  wait for input `PRESS_DONE`, from the project's io; where a signal is missing a comment
+  names it), and a linear retreat to the approach pose.
+- `trajectory`: the checked transfer (retract, via poses, pallet). Its waypoints are the
+  targets with their planned joints and their durations between waypoints; the first one is
+  the last bend's retreat.
+- The plan times only the transfer. The other moves are timed here with the same jerk-limited
+  generator (ruckig) at `MOVE_SPEED` of the joint limits, exact stop to exact stop, so the
+  program's cycle time is the transfer's planned time plus those.
+- Load: the plan has no blank station, so the program closes the gripper at its start (a
+  comment says the blank is put into the gripper there). Regrips: the plan has none (one grasp
+  for the whole sequence).
+
+A bend-following plan (issue 13) will add: the blank station (approach, pick, retreat), the
+robot following the flange as the press closes (the bend as a timed move instead of a hold),
+regrips at the flip rack, and the times of the die moves from the plan instead of from here.
+"""
+
+from __future__ import annotations
+
+from typing import Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+from workbench.errors import UnreachableError
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.arm_configuration import arm_configuration
+from workbench.kinematics.model import RobotModel
+from workbench.motion.programs.from_plan import nearest_ik
+from workbench.motion.programs.model import (
+    Comment,
+    Instruction,
+    MoveInstr,
+    ProgramSettings,
+    PulseOutput,
+    RobotProgram,
+    Target,
+    WaitInput,
+    WorkObject,
+)
+from workbench.motion.trajectory import smooth_joint_path
+from workbench.sheetmetal.die import Die
+from workbench.sheetmetal.plan import BendingPlan
+from workbench.sheetmetal.transfer import Transfer
+
+F64 = NDArray[np.float64]
+
+#: The press brake's "start the bend" output (pulsed) and its "bend done" input, by name in io.
+PRESS_START = "bend start"
+PRESS_DONE = "bend done"
+#: The start pulse [s] and how long to wait for "bend done" [s].
+PRESS_PULSE = 0.2
+PRESS_TIMEOUT = 30.0
+#: Speed of the moves the plan does not time (fraction of the joints' limits).
+MOVE_SPEED = 0.5
+#: Blend radius [m] at the transfer's via poses (the plan passes through them without stopping).
+TRANSFER_ZONE = 0.005
+
+
+class RobotAt(Protocol):
+    """The robot as the program needs it (`RobotSetup` is one): model and base pose [m]."""
+
+    @property
+    def model(self) -> RobotModel: ...
+    @property
+    def T_world_base(self) -> F64: ...
+
+
+class BendingCell(Protocol):
+    """The die and the transfer (the project's `BendingSI` is one)."""
+
+    @property
+    def die(self) -> Die: ...
+    @property
+    def transfer(self) -> Transfer: ...
+
+
+def _timed(model: RobotModel, q: F64) -> F64:
+    """Return the durations (len(q) - 1,) [s] of stop-to-stop moves through joints q at MOVE_SPEED."""
+    f = MOVE_SPEED
+    traj = smooth_joint_path(
+        q,
+        np.asarray(model.max_velocity) * f,
+        np.asarray(model.max_acceleration) * f,
+        np.asarray(model.max_jerk) * f,
+        position_limits=model.limits,
+        exact_stop=list(range(len(q))),
+    )
+    return np.diff(np.asarray(traj.waypoint_times, float))
+
+
+def bending_program(
+    plan: BendingPlan,
+    robot_at: RobotAt,
+    cell: BendingCell,
+    settings: ProgramSettings,
+    q_start: F64,
+    *,
+    name: str = "bending",
+    robot: str | None = None,
+) -> RobotProgram:
+    """Return the bending `RobotProgram` of `plan` (see the module docstring).
+
+    `cell`: the die (its frame) and the transfer (its `retract` offset in the die frame [m]:
+    the approach and retreat of every bend), `settings` the tool, gripper and signals, `q_start` (dof,) [rad] the
+    start (and home) joints the plan started from; `robot` names the robot (default: the model's name). UnreachableError names a bend whose
+    approach pose needs another arm configuration than its placement.
+    """
+    model, tool = robot_at.model, settings.tool
+    T_base_world = invert_transform(np.asarray(robot_at.T_world_base, float))
+    T_tcp_flange = invert_transform(tool.T_flange_tcp)
+    off = cell.die.T_world_die[:3, :3] @ np.asarray(cell.transfer.retract, float)
+    traj = plan.trajectory
+    wq, wt = np.asarray(traj.waypoints, float), np.asarray(traj.waypoint_times, float)
+
+    # joints: start, then per bend approach, placement, retreat (the last: the transfer's start)
+    q_seq, labels = [np.asarray(q_start, float)], ["start"]
+    for k, pl in enumerate(plan.placements):
+        T = pl.T_world_tcp.copy()
+        T[:3, 3] += off
+        if k == len(plan.placements) - 1:
+            qa = wq[0]
+        else:
+            qa = nearest_ik(
+                model, T_base_world @ T @ T_tcp_flange, pl.q, f"bend {pl.bend!r} approach"
+            )
+        if arm_configuration(model, qa) != arm_configuration(model, pl.q):
+            raise UnreachableError(
+                f"bend {pl.bend!r}: its approach pose needs another arm configuration than its"
+                " placement; shorten bending.retract or move the die"
+            )
+        q_seq += [qa, pl.q, qa]
+        labels += [f"b{k + 1}_approach", f"b{k + 1}_bend", f"b{k + 1}_retreat"]
+    q_arr = np.array(q_seq)
+    dur = _timed(model, q_arr)
+    home_dur = float(_timed(model, np.array([wq[-1], q_start]))[0])
+    T_base_tcp = model.fk(q_arr) @ tool.T_flange_tcp
+
+    def target(label: str, q: F64, cartesian: bool = True) -> Target:
+        if not cartesian:
+            return Target(label, q)
+        return Target(label, q, model.fk(q) @ tool.T_flange_tcp, arm_configuration(model, q))
+
+    def speed(i: int) -> float:
+        d = float(np.linalg.norm(T_base_tcp[i, :3, 3] - T_base_tcp[i - 1, :3, 3]))
+        return max(d / max(float(dur[i - 1]), 1e-9), 1e-4)
+
+    start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
+    missing = [f"output {PRESS_START!r}"] * (start is None) + [f"input {PRESS_DONE!r}"] * (
+        done is None
+    )
+    ins: list[Instruction] = [
+        Comment(f"bending: {len(plan.placements)} bends ({plan.configuration})")
+    ]
+    if missing:
+        ins.append(
+            Comment(
+                f"note: the project's io has no {' and no '.join(missing)}: the press handshake is comments only"
+            )
+        )
+    ins.append(
+        Comment("load: the plan has no blank station; the blank is put into the gripper here")
+    )
+    ins.append(settings.close or Comment("gripper close: the project has no io.gripper; add one"))
+    for i in range(1, len(q_arr)):
+        label = labels[i]
+        if label.endswith("_approach"):
+            b = plan.placements[(i - 1) // 3]
+            ins.append(Comment(f"bend {b.bend!r} (step {b.step + 1})"))
+            ins.append(
+                MoveInstr(
+                    "joint", target(label, q_arr[i]), 1.0, 0.0, tool.name, "base", float(dur[i - 1])
+                )
+            )
+            continue
+        ins.append(
+            MoveInstr(
+                "linear",
+                target(label, q_arr[i]),
+                speed(i),
+                0.0,
+                tool.name,
+                "base",
+                float(dur[i - 1]),
+            )
+        )
+        if label.endswith("_bend"):
+            ins.append(
+                PulseOutput(start, PRESS_PULSE)
+                if start
+                else Comment(f"press: pulse output {PRESS_START!r} (missing in io.outputs)")
+            )
+            ins.append(
+                WaitInput(done, True, PRESS_TIMEOUT)
+                if done
+                else Comment(f"press: wait for input {PRESS_DONE!r} (missing in io.inputs)")
+            )
+    ins.append(Comment("transfer to the pallet as planned (checked)"))
+    for j in range(1, len(wq)):
+        last = j == len(wq) - 1
+        label = "pallet" if last else f"transfer{j}"
+        zone = 0.0 if last else TRANSFER_ZONE
+        ins.append(
+            MoveInstr(
+                "joint",
+                target(label, wq[j]),
+                1.0,
+                zone,
+                tool.name,
+                "base",
+                float(wt[j] - wt[j - 1]),
+            )
+        )
+    ins.append(Comment("unload"))
+    ins.append(settings.open or Comment("gripper open: the project has no io.gripper; add one"))
+    ins.append(
+        MoveInstr(
+            "joint",
+            target("home", np.asarray(q_start, float), False),
+            1.0,
+            0.0,
+            tool.name,
+            "base",
+            home_dur,
+        )
+    )
+    return RobotProgram(
+        name,
+        (tool,),
+        (WorkObject("base", np.eye(4)),),
+        tuple(ins),
+        model.convention,
+        model.dof,
+        robot or model.name,
+        settings.limits,
+    )
