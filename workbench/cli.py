@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from workbench.errors import ServerError, WorkbenchError
+from workbench.project.paths import read_regular_file
 
 DEFAULT_PROJECT = Path(__file__).resolve().parent.parent / "projects" / "mz07_cell.json"
 
@@ -60,12 +61,21 @@ def _parser() -> argparse.ArgumentParser:
         action="store_true",
         help="write the program even if the plan collides or breaks a limit",
     )
+    imp = sub.add_parser(
+        "import", help="read a robot program written elsewhere into the project's program"
+    )
+    imp.add_argument("project", help="project JSON (the robot, tool and cell the program runs in)")
+    imp.add_argument("program", nargs="+", help="program file(s): .mod, .src with its .dat, .ls, ...")
+    imp.add_argument(
+        "--format", choices=["rapid", "krl", "ls", "urscript", "nachi"], help="default: by file name"
+    )
+    imp.add_argument("--out", help="project JSON to write (default: overwrite PROJECT)")
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
         "clear", help="remove every cache entry ($WORKBENCH_CACHE, default ~/.cache/workbench)"
     )
-    for p in (serve, check, export):
+    for p in (serve, check, export, imp):
         p.add_argument(
             "--allow-dir",
             action="append",
@@ -130,6 +140,24 @@ def _export(args: argparse.Namespace) -> int:
     return 0 if plan.ok else 1
 
 
+def _import(args: argparse.Namespace) -> int:
+    from workbench.service import Workbench
+
+    wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
+    from workbench.service.program_import import program_files
+
+    files: dict[str, str] = {}
+    for f in args.program:  # a .zip gives its members
+        files.update(program_files(Path(f).name, read_regular_file(f, kind="program", field=f)))
+    notes = wb.import_program(files, args.format)
+    for note in notes:
+        print(f"note: {note}")
+    path = wb.save(args.out or args.project)
+    moves = len(wb.project.program.moves) if wb.project.program else 0
+    print(f"wrote {path}: program {wb.project.program.name} with {moves} items")  # type: ignore[union-attr]
+    return 0
+
+
 def _serve(args: argparse.Namespace) -> int:
     from workbench.gui.app import serve
 
@@ -187,6 +215,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _export(args)
         if args.command == "cache":
             return _cache_clear()
+        if args.command == "import":
+            return _import(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

@@ -2,20 +2,30 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import viser
 
 from workbench.gui.handles import Removable
-from workbench.gui.notify import guarded
+from workbench.gui.notify import guarded, notify
 from workbench.gui.progress import busy
 from workbench.gui.timeline import Timeline
 from workbench.service import EXPORT_FORMATS, ExportedProgram, Workbench
+from workbench.service.program_import import program_files
 
 
 class MotionPanel:
     """Plan button with progress, the plan's summary, and program export."""
 
-    def __init__(self, server: viser.ViserServer, wb: Workbench, timeline: Timeline) -> None:
+    def __init__(
+        self,
+        server: viser.ViserServer,
+        wb: Workbench,
+        timeline: Timeline,
+        on_replaced: Callable[[], None] = lambda: None,
+    ) -> None:
         self.server, self.wb, self.timeline = server, wb, timeline
+        self.on_replaced = on_replaced
         g = server.gui
         self.program = g.add_markdown("")
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
@@ -25,6 +35,13 @@ class MotionPanel:
             "Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
         )
         self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.upload = g.add_upload_button(
+            "Import program",
+            icon=viser.Icon.UPLOAD,
+            hint="A RAPID .mod, a KRL .zip of .src + .dat, a FANUC .ls, a URScript .script or a"
+            " NACHI program: it replaces the project's program",
+        )
+        self.upload.on_upload(guarded(server, "Import program")(self._on_import))
         self.plan_button.on_click(guarded(server, "Plan")(self._on_plan))
         self.download.on_click(guarded(server, "Export")(self._on_download))
         self.handles: list[Removable] = [
@@ -34,6 +51,7 @@ class MotionPanel:
             self.result,
             self.format,
             self.download,
+            self.upload,
         ]
         self.refresh()
 
@@ -80,6 +98,18 @@ class MotionPanel:
         if event.client is not None:
             name, data = download_of(exported, f"{self.wb.project.program.name}_{fmt}")  # type: ignore[union-attr]
             event.client.send_file_download(name, data, save_immediately=True)
+
+
+    def _on_import(self, event: viser.GuiEvent) -> None:
+        up = self.upload.value
+        notes = self.wb.import_program(program_files(up.name, up.content))
+        self.on_replaced()  # the program, tool and work objects changed: rebuild the tabs
+        body = f"{up.name}: {len(self.wb.project.program.moves)} items"  # type: ignore[union-attr]
+        notify(self.server, event.client, "Program imported", body, color="green")
+        if notes:  # lines the reader did not understand, values taken differently: stay open
+            text = "\n".join(f"- {n}" for n in notes[:20])
+            more = f"\n- … and {len(notes) - 20} more" if len(notes) > 20 else ""
+            notify(self.server, event.client, "Import notes", text + more, color="yellow")
 
 
 def _action_text(item: object) -> str:

@@ -32,7 +32,7 @@ def notify(
             body,
             color=color,
             with_close_button=True,  # type: ignore[call-overload]
-            auto_close_seconds=None if color == "red" else 6.0,
+            auto_close_seconds=6.0 if color == "green" else None,  # warnings and errors stay
         )
 
 

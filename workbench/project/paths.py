@@ -38,6 +38,7 @@ SIZE_LIMITS: dict[str, tuple[str, int]] = {
     "part": ("WORKBENCH_MAX_PART_FILE_BYTES", 4 * MiB),
     "urdf": ("WORKBENCH_MAX_URDF_BYTES", 8 * MiB),
     "mesh": ("WORKBENCH_MAX_MESH_BYTES", 200 * MiB),
+    "program": ("WORKBENCH_MAX_PROGRAM_BYTES", 4 * MiB),
 }
 
 
@@ -48,6 +49,7 @@ _MISSING: dict[str, tuple[type[WorkbenchError], str]] = {
     "part": (ProjectError, "{where}: cannot read {shown}: no such file; " + _FIX),
     "urdf": (ProjectError, "{where}: file not found: {shown}; " + _FIX),
     "mesh": (MeshError, "{where}: mesh file not found: {shown}; " + _FIX),
+    "program": (InputError, "{where}: no such file"),
 }
 
 

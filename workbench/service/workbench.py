@@ -29,7 +29,7 @@ from workbench.project import (
 )
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
-from workbench.service import programs
+from workbench.service import program_import, programs
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell
@@ -290,3 +290,8 @@ class Workbench:
         ls, urscript, nachi) or joint samples (csv, json); a plan that collides or breaks a
         limit is refused (PlanningError) unless `force`."""
         return programs.export(self, fmt, workflow, force=force)
+
+    def import_program(self, files: dict[str, str], fmt: str | None = None) -> tuple[str, ...]:
+        """Replace the project's program by a robot program written elsewhere (`files`: name ->
+        text); return the notes (lines not understood, by line). See `service.program_import`."""
+        return program_import.import_program(self, files, fmt)

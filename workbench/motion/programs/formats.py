@@ -152,3 +152,33 @@ def export(fmt: str, program: Program, times: FloatArray, joints: FloatArray) ->
         return json_text(times, joints)
     module = importlib.import_module(f"workbench.motion.programs.{_LEGACY_MODULE[fmt]}")
     return str(getattr(module, _LEGACY[fmt])(program))
+
+
+# File endings of each robot-program format's files, for telling a file's format by its name.
+_ENDINGS = {
+    "rapid": (".mod", ".modx", ".prg", ".sys"),
+    "krl": (".src", ".dat"),
+    "ls": (".ls",),
+    "urscript": (".script", ".urscript"),
+}
+
+
+def format_of(names: Sequence[str]) -> str:
+    """Return the robot-program format of files by their names (.mod RAPID, .src/.dat KRL, .ls
+    FANUC, .script URScript, .001-style numbers NACHI); InputError when they do not tell one."""
+    found = set()
+    for name in names:
+        low = name.lower()
+        ext = "." + low.rsplit(".", 1)[-1] if "." in low else ""
+        kinds = [f for f, ends in _ENDINGS.items() if ext in ends]
+        if not kinds and ext[1:].isdigit():
+            kinds = ["nachi"]
+        if not kinds:
+            raise InputError(
+                f"{name!r}: not a robot program this workbench reads (.mod RAPID, .src/.dat KRL,"
+                " .ls FANUC, .script URScript, .001 NACHI); give the format"
+            )
+        found.update(kinds)
+    if len(found) != 1:
+        raise InputError(f"files {list(names)}: they are of {len(found)} formats; import one program at a time")
+    return found.pop()
