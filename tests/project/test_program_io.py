@@ -142,8 +142,8 @@ def test_bad_names_and_values_name_their_field(patch: dict, words: str) -> None:
         ),
         ({"sync": {"R2": {"output": "blow", "input": "x"}}}, "sync.R2.input: 'x'"),
         (
-            {"outputs": [{"name": "a", "number": 1}, {"name": "b", "number": 1}]},
-            "outputs[1].number: 1 is used twice",
+            {"outputs": [{"name": "a", "number": 1}, {"name": "a", "number": 2}]},
+            "outputs[1].name: 'a' is used twice",
         ),
         ({"inputs": [{"name": "grip", "number": 9}]}, "name both an output and an input"),
     ],

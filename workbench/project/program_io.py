@@ -107,7 +107,8 @@ class SyncSignalsSpec(StrictModel):
 
 
 def _unique(items: list[SignalSpec], field: str) -> None:
-    for key in ("name", "number"):
+    # names only: numbers repeat across robots (each controller counts its own I/O from 1)
+    for key in ("name",):
         seen: set[object] = set()
         for k, s in enumerate(items):
             v = getattr(s, key)
