@@ -13,7 +13,6 @@ import numpy as np
 import pytest
 
 from workbench import Workbench
-from workbench.errors import UnreachableError
 from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.model import (
@@ -111,12 +110,6 @@ def test_rapid_read_back(planned: tuple) -> None:
     check_read_back(prog, read_rapid(write_rapid(prog).files), wb.robot)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    raises=UnreachableError,
-    reason="KRL's Turn sign bits cannot tell A6 = 0 from 360 deg on the MZ07 (J6 limits +-360 deg):"
-    " the KRL post should write such targets as E6AXIS (left to the KRL post)",
-)
 def test_krl_read_back(planned: tuple) -> None:
     wb, _, prog = planned
     check_read_back(prog, read_krl(write_krl(prog).files), wb.robot)
