@@ -92,7 +92,7 @@ class EnginePathReport(PathReport):
                 f" {self.evaluated} configurations checked, {self.mode})"
             )
         if not self.certified and self.link is None:
-            i = self.first_index
+            i = self.first_index if self.first_index is not None else -1
             return (
                 f"not certified between samples {i} and {i + 1} near t = {self.first_time:.3f} s"
                 f" (no colliding configuration found; {len(self.uncertified_indices)}"
