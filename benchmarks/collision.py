@@ -1,8 +1,9 @@
 """Collision engine geometry core: LBVH build, sparse SDF build, closest-point queries.
 
 Prints our figure, the peer's figure measured in the same run on the same data, and the
-ratio. Peers: python-fcl's BVHModel (OBBRSS) build, trimesh.proximity.closest_point and
-trimesh.proximity.signed_distance (rtree-based). Run: ``python benchmarks/collision.py``;
+ratio. Peers: python-fcl's BVHModel (OBBRSS) build, trimesh.proximity.closest_point,
+python-fcl and coal for the robot check; the SDF build's peer (libigl) is in
+benchmarks/sdf.py. Run: ``python benchmarks/collision.py``;
 ``--only robot`` runs the robot-versus-cell part alone (sphere fits, spheres+SDF against
 python-fcl, Workbench.plan_motion with the dense exact check against the fast mode).
 """
@@ -98,7 +99,6 @@ def closest_point_queries() -> None:
 
 
 def sdf_build() -> None:
-    rng = np.random.default_rng(0)
     m = _cell(6)
     print(f"sparse SDF build, {len(m.faces)} triangles (band 0: only cells the surface touches)")
     print(
@@ -112,20 +112,9 @@ def sdf_build() -> None:
         print(
             f"  {coarse * sub:>6d}^3     {coarse:>3d} x {sub}     {sdf.block_count:>7d}  {dt:8.2f}   {sdf.memory_bytes / 1e6:9.1f}   {dense / 1e6:12.1f}       {sdf.max_error * 1e3:6.2f}"
         )
-    # Peer: the same fine corners by trimesh.proximity.signed_distance, timed on a sample.
-    sdf = SparseSDF.from_mesh(m, resolution=32, subdivisions=4, band=0.0)
-    corners = sdf.values.size  # corner values stored (shared corners counted per block)
-    p = m.sample(2000, return_index=False) + rng.normal(0, 0.01, (2000, 3))
-    t = time.perf_counter()
-    trimesh.proximity.signed_distance(m, p)
-    per_point = (time.perf_counter() - t) / len(p)
-    t = time.perf_counter()
-    SparseSDF.from_mesh(m, resolution=32, subdivisions=4, band=0.0)
-    ours = time.perf_counter() - t
-    print(
-        f"  128^3-equivalent field: ours {ours:.2f} s; trimesh.signed_distance at the same {corners} corner values "
-        f"~{per_point * corners:.1f} s (extrapolated from 2000 points); ratio {per_point * corners / ours:.1f}x"
-    )
+    # The peer of the build (libigl's signed distance at the same corners, one thread) is
+    # benchmarks/sdf.py; trimesh's signed_distance, extrapolated from a sample, was a weak one.
+    print("  peer: python benchmarks/sdf.py (libigl signed_distance at the same corners)")
     mz07_cell_field()
 
 
