@@ -18,8 +18,10 @@ from pathlib import Path
 
 import fcl
 import numpy as np
+import trimesh
 
 from workbench import Workbench
+from workbench.collision.shapes import bvh_model
 from workbench.geometry import OBB
 from workbench.geometry.transforms import make_transform, rot_z
 from workbench.project.bending import PartSpec
@@ -157,7 +159,113 @@ def run(n_frames: int, repeat: int) -> None:
             part_mgr.collide(obs_mgr, None, cb)
         return count
 
+    # The part as one rigid fcl BVH: the seven flange boxes as one triangle mesh in the grasp
+    # frame, one transform per frame (fcl.Transform(R, t) from the matrix), against the cell's
+    # boxes in their own manager (python-fcl README, "Broadphase Checking": a manager can
+    # collide with a single object, ``manager.collide(obj, cdata, callback)``), the request
+    # stopping at the first contact (num_max_contacts=1: the question is yes/no).
+    part_mesh = trimesh.util.concatenate(
+        [
+            trimesh.creation.box(
+                2 * leaves.half_extents[k],
+                transform=make_transform(leaves.rotation[k], leaves.center[k]),
+            )
+            for k in range(nflange)
+        ]
+    )
+    part_bvh = fcl.CollisionObject(bvh_model(part_mesh.vertices, part_mesh.faces))
+    req1 = fcl.CollisionRequest(num_max_contacts=1)
+    R_all = np.ascontiguousarray(T[:, :3, :3])
+    p_all = np.ascontiguousarray(T[:, :3, 3])
+
+    def fcl_bvh_manager() -> list[bool]:
+        out = []
+        for f in range(F):
+            part_bvh.setTransform(fcl.Transform(R_all[f], p_all[f]))
+            data = fcl.CollisionData(request=req1)
+            obs_mgr.collide(part_bvh, data, fcl.defaultCollisionCallback)
+            out.append(bool(data.result.is_collision))
+        return out
+
+    def fcl_bvh_pairwise() -> list[bool]:
+        out = []
+        for f in range(F):
+            part_bvh.setTransform(fcl.Transform(R_all[f], p_all[f]))
+            out.append(
+                any(fcl.collide(part_bvh, b, req1, fcl.CollisionResult()) > 0 for b in obs_objs)
+            )
+        return out
+
+    peers = {
+        "python-fcl part BVH vs cell manager": fcl_bvh_manager,
+        "python-fcl part BVH vs each box, 1st hit": fcl_bvh_pairwise,
+    }
+    try:
+        import coal
+
+        def coal_box(h: np.ndarray, R: np.ndarray, c: np.ndarray):  # type: ignore[no-untyped-def]
+            return coal.CollisionObject(coal.Box(*(2 * h)), coal.Transform3s(R, c))
+
+        c_obs = [
+            coal_box(obstacles.half_extents[o], obstacles.rotation[o], obstacles.center[o])
+            for o in range(M)
+        ]
+        for o in c_obs:
+            o.computeAABB()
+        c_obs_mgr = coal.DynamicAABBTreeCollisionManager()
+        for o in c_obs:
+            c_obs_mgr.registerObject(o)
+        c_obs_mgr.setup()
+        c_bvh = coal.BVHModelOBBRSS()
+        c_bvh.beginModel(len(part_mesh.faces), len(part_mesh.vertices))
+        c_bvh.addVertices(np.asarray(part_mesh.vertices, float))
+        c_bvh.addTriangles(np.asarray(part_mesh.faces, np.int64))
+        c_bvh.endModel()
+        c_part = coal.CollisionObject(c_bvh)
+        c_flanges = [
+            coal.CollisionObject(coal.Box(*(2 * leaves.half_extents[k]))) for k in range(nflange)
+        ]
+        c_part_mgr = coal.DynamicAABBTreeCollisionManager()
+        for o in c_flanges:
+            c_part_mgr.registerObject(o)
+        c_part_mgr.setup()
+        cb = coal.CollisionCallBackDefault()  # coal's C++ callback: no Python per pair
+        cb.data.request.num_max_contacts = 1
+
+        def coal_bvh_manager() -> list[bool]:
+            out = []
+            for f in range(F):
+                c_part.setTransform(coal.Transform3s(R_all[f], p_all[f]))
+                c_part.computeAABB()  # coal's setTransform leaves the AABB stale
+                cb.data.result.clear()
+                cb.data.done = False
+                c_obs_mgr.collide(c_part, cb)
+                out.append(cb.data.result.isCollision())
+            return out
+
+        wR = np.ascontiguousarray(world_all.rotation)
+        wc = np.ascontiguousarray(world_all.center)
+
+        def coal_manager() -> list[bool]:
+            out = []
+            for f in range(F):
+                for k, obj in enumerate(c_flanges):
+                    obj.setTransform(coal.Transform3s(wR[f, k], wc[f, k]))
+                    obj.computeAABB()
+                c_part_mgr.update()
+                cb.data.result.clear()
+                cb.data.done = False
+                c_part_mgr.collide(c_obs_mgr, cb)
+                out.append(cb.data.result.isCollision())
+            return out
+
+        peers["coal part BVH vs cell manager"] = coal_bvh_manager
+        peers["coal flange boxes, two managers"] = coal_manager
+    except ImportError as exc:
+        print(f"coal not importable ({exc!r}): pip install -r benchmarks/requirements.txt")
+
     verdicts = {
+        **{name: fn() for name, fn in peers.items()},
         "tree": rep.collides.tolist(),
         "flat": flat.collides.tolist(),
         "flat loop": flat_loop(),
@@ -196,6 +304,7 @@ def run(n_frames: int, repeat: int) -> None:
             manager_narrow_tests() / F,
             best_of(fcl_manager),
         ),
+        *((name, float("nan"), best_of(fn)) for name, fn in peers.items()),
     ]
     free = ~rep.collides
     print(
@@ -215,6 +324,11 @@ def run(n_frames: int, repeat: int) -> None:
     for name, tests, total in rows:
         print(f"{name:42s} {tests:11.1f} {total / F * 1e6:9.1f} {total / F / tree_t:7.1f}x")
     print("(*) tests/frame of the manager: box-box pairs its AABB tree hands to the narrow phase")
+    fastest = min(rows[4:], key=lambda r: r[2])
+    print(
+        f"fastest peer: {fastest[0]} at {fastest[2] / F * 1e6:.1f} us/frame; tree batched"
+        f" {tree_t * 1e6:.1f} us/frame: peer/tree {fastest[2] / F / tree_t:.2f}x"
+    )
 
 
 def example(repeat: int = 3) -> None:
