@@ -55,6 +55,7 @@ def test_a_relative_path_inside_loads_and_an_escape_is_refused(tree: dict[str, P
 
 def test_the_refusal_does_not_tell_whether_the_outside_file_exists(tree: dict[str, Path]) -> None:
     proj, outside = tree["proj"], tree["outside"]
+    assert (outside / "secret.stl").is_file() and not (outside / "no_such_file.stl").exists()
     messages = []
     for name in ("secret.stl", "no_such_file.stl"):
         with pytest.raises(InputError) as err:
