@@ -140,7 +140,9 @@ class WorkbenchApp:
             with self.robot_tab:
                 self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
             with self.motion_tab:
-                self.motion = MotionPanel(self.server, self.wb, self.timeline, on_replaced=self.rebuild)
+                self.motion = MotionPanel(
+                    self.server, self.wb, self.timeline, on_replaced=self.rebuild
+                )
             self._build_workflows()
         release_memory()  # the replaced project's memory back to the OS
 
