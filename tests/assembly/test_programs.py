@@ -28,6 +28,7 @@ from workbench.motion.programs.model import (
 )
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
+from workbench.project.program_io import program_settings
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from program_round_trip import check_read_back  # noqa: E402
@@ -143,7 +144,15 @@ def test_the_project_without_io_writes_comments_and_rapid_names_the_massless_too
     planned: tuple,
 ) -> None:
     wb, plan, _ = planned
-    progs = wb.assembly.robot_programs(plan)
+    # the example's io has the gripper, its further robot the tool's mass and cog
+    full = wb.assembly.robot_programs(plan)
+    assert all(any(isinstance(i, Gripper) for i in p.instructions) for p in full)
+    b = full[1].tools[0]
+    assert b.name == "MZ07_B_tool" and b.mass == 1.2 and np.allclose(b.cog, [0, 0, 0.06])
+    assert len(write_programs("rapid", full).files) == 2
+    # without them: comments, and RAPID names the massless tool
+    bare = replace(program_settings(wb.project), close=None, open=None)
+    progs = assembly_programs(plan.tasks, wb.assembly.arms, bare)
     texts = [i.text for i in progs[0].instructions if hasattr(i, "text")]
     assert any("no io.gripper" in t for t in texts)
     with pytest.raises(InputError, match="MZ07_B_tool"):

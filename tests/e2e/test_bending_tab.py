@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -20,8 +21,15 @@ pytestmark = pytest.mark.e2e
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def test_reorder_fold_plan_and_first_collision(launch) -> None:  # type: ignore[no-untyped-def]
-    app, page = launch(ROOT / "projects" / "bending_cell.json")
+def test_reorder_fold_plan_and_first_collision(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    # The example passes over the flip rack; its first transfer via lowered into the rack
+    # (z 355 mm) makes the part's flanges hit a rack cup.
+    d = json.loads((ROOT / "projects" / "bending_cell.json").read_text())
+    del d["bending"]["part_file"]
+    d["bending"]["part"] = json.loads((ROOT / "projects" / "parts" / "seed_part.json").read_text())
+    d["bending"]["transfer"][0]["xyz"][2] = 355
+    (tmp_path / "bending_hit.json").write_text(json.dumps(d))
+    app, page = launch(tmp_path / "bending_hit.json")
     svc = app.wb.bending
     # Look from behind the robot towards the press brake (the fixture's view is from behind it).
     port = app.server.get_port()

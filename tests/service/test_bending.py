@@ -44,6 +44,28 @@ def plan(wb: Workbench):  # type: ignore[no-untyped-def]
     return wb.bending.plan()
 
 
+def colliding_dict() -> dict:
+    """The example with its first transfer via lowered into the flip rack (z 355 mm): the part's
+    flanges hit a rack cup (the example itself passes over the rack, collision-free)."""
+    d = example_dict()
+    d["bending"]["transfer"][0]["xyz"][2] = 355
+    return d
+
+
+@pytest.fixture(scope="module")
+def hit_wb() -> Workbench:
+    return Workbench.from_dict(colliding_dict(), base_dir=EXAMPLE.parent)
+
+
+@pytest.fixture(scope="module")
+def hit_plan(hit_wb: Workbench):  # type: ignore[no-untyped-def]
+    return hit_wb.bending.plan()
+
+
+def test_example_transfer_is_collision_free(plan) -> None:  # type: ignore[no-untyped-def]
+    assert plan.ok and plan.first_collision is None and not plan.part_colliding.any()
+
+
 def test_example_loads_seed_part_and_stored_joints_are_free(wb: Workbench) -> None:
     part = wb.bending.part
     assert len(part.flanges) == 7 and len(part.bends) == 6
@@ -151,7 +173,8 @@ def _fcl_twin(wb: Workbench, plan) -> tuple[np.ndarray, list[set]]:  # type: ign
     return np.array(verdict), pairs
 
 
-def test_frames_equal_python_fcl_and_first_hit_is_a_rack_cup(wb: Workbench, plan) -> None:  # type: ignore[no-untyped-def]
+def test_frames_equal_python_fcl_and_first_hit_is_a_rack_cup(hit_wb: Workbench, hit_plan) -> None:  # type: ignore[no-untyped-def]
+    wb, plan = hit_wb, hit_plan
     verdict, pairs = _fcl_twin(wb, plan)
     np.testing.assert_array_equal(plan.part_colliding, verdict)
     for f in range(len(plan.times)):
@@ -184,13 +207,14 @@ def test_tree_needs_a_third_of_the_flat_tests_on_free_frames(wb: Workbench, plan
     assert "tree/flat" not in plan.summary()
 
 
-def test_playback_and_progress(wb: Workbench, plan) -> None:  # type: ignore[no-untyped-def]
+def test_playback_and_progress(wb: Workbench, plan, hit_wb: Workbench, hit_plan) -> None:  # type: ignore[no-untyped-def]
     seen: list[float] = []
     wb.bending.plan(progress=lambda f, m: seen.append(f))
     assert seen[0] == 0.0 and seen[-1] == 1.0 and seen == sorted(seen)
     pb = wb.bending.playback(plan, dt=0.02)
     assert pb.times[-1] == pytest.approx(plan.trajectory.duration)
-    assert pb.colliding.any() and pb.tcp_speed.max() > 0
+    assert not pb.colliding.any() and pb.tcp_speed.max() > 0
+    assert hit_wb.bending.playback(hit_plan, dt=0.02).colliding.any()
     np.testing.assert_allclose(
         wb.bending.part_pose_at(plan, plan.times[-1]), plan.T_world_part[-1], atol=1e-9
     )

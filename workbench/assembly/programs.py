@@ -6,7 +6,9 @@ carried path as joint moves through the planned waypoints (5 mm blends), an exac
 place, the gripper opens, a linear retreat, a joint move home. Every target carries the planned
 joints (the task trajectory's waypoints, never re-solved), Cartesian ones also the TCP in the
 robot's base work object and their arm configuration; every move its planned duration (the time
-between the waypoints; a linear approach or retreat spans the waypoints of its straight line).
+between the waypoints; a linear approach or retreat spans the waypoints of its straight line,
+which the task timed in joint space: its TCP speed is the one at which the motion planner takes
+that time, `fit_linear_speed`).
 The tasks run one after the other: where a task's robot is not the previous task's, the two
 robots meet at a sync point (the same name, in the same order, in both programs): the previous
 one after its task, the next one before it; RAPID writes WaitSyncTask, the other posts an I/O
@@ -36,6 +38,7 @@ from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_rpy
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.motion import Move, Program
+from workbench.motion.programs.from_plan import fit_linear_speed
 from workbench.motion.programs.model import (
     Comment,
     Instruction,
@@ -107,12 +110,9 @@ def _task_moves(
         speed: float = 1.0,
     ) -> MoveInstr:
         dt = float(wt[i] - wt[a])
-        if kind == "linear":
-            speed = max(
-                float(np.linalg.norm(np.diff(tcp[a : i + 1, :3, 3], axis=0), axis=1).sum())
-                / max(dt, 1e-9),
-                1e-4,
-            )
+        if kind == "linear":  # the speed at which the motion planner takes the planned time
+            top = settings.limits.max_tcp_speed
+            speed = fit_linear_speed(model, T_flange_tcp, wp[a], tcp[i], dt, top)
         tgt = Target(
             f"t{k + 1}_{label}",
             wp[i],
@@ -149,19 +149,24 @@ def assembly_programs(
     tasks: Sequence[TaskPlan],
     arms: dict[str, AssemblyArm],
     settings: ProgramSettings,
+    tools: dict[str, ToolData] | None = None,
 ) -> list[RobotProgram]:
     """Return one `RobotProgram` per robot that has a task, in the order of `arms` (see the
     module docstring).
 
-    `settings`: the main arm's tool (`settings.tool`; the others get their setup's TCP as
-    "<robot>_tool", without mass), the gripper actions (None: a comment says so), the sync
-    signals per robot, the motion limits. Joint moves run at speed 1 in their planned times.
+    `settings`: the main arm's tool (`settings.tool`), the gripper actions (None: a comment
+    says so), the sync signals per robot, the motion limits. `tools`: the further arms' tools by
+    robot name (TCP, mass, centre of gravity; a further arm not in it gets its setup's TCP as
+    "<robot>_tool", without mass). Joint moves run at speed 1 in their planned times.
     """
     used = [name for name in arms if any(t.robot == name for t in tasks)]
     if not used:
         raise InputError("the planned sequence has no task; plan the sequence first")
+    given = tools or {}
     tools = {
-        n: settings.tool if arms[n].main else ToolData(f"{n}_tool", arms[n].setup.T_flange_tcp)
+        n: settings.tool
+        if arms[n].main
+        else given.get(n) or ToolData(f"{n}_tool", arms[n].setup.T_flange_tcp)
         for n in used
     }
     ins: dict[str, list[Instruction]] = {n: [] for n in used}

@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 from pydantic import Field, model_validator
 
 from workbench.project import bounds as B
+from workbench.project import program_io as io_
 from workbench.project.common import (
     Color,
     Joints,
@@ -30,6 +31,7 @@ from workbench.project.common import (
 from workbench.project.units import MM, matrix_to_pose, pose_to_matrix
 
 if TYPE_CHECKING:
+    from workbench.motion.programs.model import ToolData
     from workbench.project.models import RobotSI, ToolSI
 
 
@@ -126,6 +128,8 @@ class AssemblyRobotSpec(StrictModel):
     tcp: Pose = Field(default_factory=lambda: Pose(xyz=[0.0, 0.0, 150.0]))  # flange -> TCP
     tool_size: Size3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
     color: Color = Field(default_factory=lambda: [200, 215, 235])
+    mass: io_.Mass | None = None  # tool mass [kg] (RAPID's tooldata needs it)
+    cog: io_.Cog | None = None  # tool centre of gravity [mm] in the flange frame
 
     def to_si(self) -> AssemblyRobotSI:
         """Return this arm in SI: a project `robot` (preset, base, joints) and `tool` (TCP, box)."""
@@ -134,6 +138,13 @@ class AssemblyRobotSpec(StrictModel):
         robot = Robot(name=self.name, preset=self.preset, base=self.base, joints=self.joints)
         tool = Tool(tcp=self.tcp, size=self.tool_size)
         return AssemblyRobotSI(self.name, robot.to_si(), tool.to_si(), _rgb(self.color))
+
+    def tool_data(self) -> ToolData:
+        """Return this arm's tool for its robot program: "<name>_tool", TCP [m], mass, cog [m]."""
+        from workbench.project.models import Tool  # models imports this module
+
+        tool = Tool(name=f"{self.name}_tool", tcp=self.tcp, mass=self.mass, cog=self.cog)
+        return io_.tool_data(tool)
 
 
 def _vec(v: list[float]) -> tuple[float, float, float]:
@@ -277,6 +288,10 @@ class AssemblySpec(StrictModel):
         return [t for t in tasks if t.part in parts] + [
             AssemblyTaskSpec(part=n) for n in parts if n not in listed
         ]
+
+    def tools(self) -> dict[str, ToolData]:
+        """Return the further robots' tools (TCP, mass, cog; `AssemblyRobotSpec.tool_data`) by name."""
+        return {r.name: r.tool_data() for r in self.robots}
 
     def to_si(self) -> AssemblySI:
         """Return the section in SI."""

@@ -275,7 +275,7 @@ class AssemblyService(SectionService[AssemblySpec]):
     def robot_programs(self, plan: AssemblyPlan | None = None) -> list[ap.RobotProgram]:
         """Return each robot's program of the sequence (default: the last plan; `assembly.programs`)."""
         plan, s = plan or self.last_plan or self.plan_sequence(), program_settings(self.wb.project)
-        return ap.assembly_programs(plan.tasks, self.arms, s)
+        return ap.assembly_programs(plan.tasks, self.arms, s, self.spec.tools())
 
     def export_program(self, robot: str, fmt: str, plan: AssemblyPlan | None = None) -> str:
         """Return robot `robot`'s motion of the last sequence as rapid, krl, ls, urscript, csv or json.

@@ -12,9 +12,12 @@ What today's `BendingPlan` holds and how the program uses it:
 - `trajectory`: the checked transfer (retract, via poses, pallet). Its waypoints are the
   targets with their planned joints and their durations between waypoints; the first one is
   the last bend's retreat.
-- The plan times only the transfer. The other moves are timed here with the same jerk-limited
-  generator (ruckig) at `MOVE_SPEED` of the joint limits, exact stop to exact stop, so the
-  program's cycle time is the transfer's planned time plus those.
+- The plan times only the transfer (at the joints' full speed: its joint moves say 100 %). The
+  other moves (approach joint moves at `MOVE_SPEED` of the joints' maximum speed, linear moves
+  onto the die and back at `DIE_SPEED`, the joint move home) are timed here by the motion
+  planner itself (`plan_program` + `time_program`, exact stop to exact stop) as the program
+  states them, so the program planned again takes its stated time; the program's cycle time
+  is the transfer's planned time plus those (and the waits).
 - Load: the plan has no blank station, so the program closes the gripper at its start (a
   comment says the blank is put into the gripper there). Regrips: the plan has none (one grasp
   for the whole sequence).
@@ -35,7 +38,8 @@ from workbench.errors import UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
-from workbench.motion.programs.from_plan import nearest_ik
+from workbench.motion.program import Move, Program
+from workbench.motion.programs.from_plan import nearest_ik, planner_durations
 from workbench.motion.programs.model import (
     Comment,
     Instruction,
@@ -47,7 +51,6 @@ from workbench.motion.programs.model import (
     WaitInput,
     WorkObject,
 )
-from workbench.motion.trajectory import smooth_joint_path
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.plan import BendingPlan
 from workbench.sheetmetal.transfer import Transfer
@@ -55,13 +58,15 @@ from workbench.sheetmetal.transfer import Transfer
 F64 = NDArray[np.float64]
 
 #: The press brake's "start the bend" output (pulsed) and its "bend done" input, by name in io.
-PRESS_START = "bend start"
-PRESS_DONE = "bend done"
+PRESS_START = "press_start"
+PRESS_DONE = "press_done"
 #: The start pulse [s] and how long to wait for "bend done" [s].
 PRESS_PULSE = 0.2
 PRESS_TIMEOUT = 30.0
-#: Speed of the moves the plan does not time (fraction of the joints' limits).
+#: Speed of the joint moves the plan does not time (fraction of the joints' maximum speed).
 MOVE_SPEED = 0.5
+#: TCP speed [m/s] of the linear moves onto the die and back.
+DIE_SPEED = 0.25
 #: Blend radius [m] at the transfer's via poses (the plan passes through them without stopping).
 TRANSFER_ZONE = 0.005
 
@@ -82,20 +87,6 @@ class BendingCell(Protocol):
     def die(self) -> Die: ...
     @property
     def transfer(self) -> Transfer: ...
-
-
-def _timed(model: RobotModel, q: F64) -> F64:
-    """Return the durations (len(q) - 1,) [s] of stop-to-stop moves through joints q at MOVE_SPEED."""
-    f = MOVE_SPEED
-    traj = smooth_joint_path(
-        q,
-        np.asarray(model.max_velocity) * f,
-        np.asarray(model.max_acceleration) * f,
-        np.asarray(model.max_jerk) * f,
-        position_limits=model.limits,
-        exact_stop=list(range(len(q))),
-    )
-    return np.diff(np.asarray(traj.waypoint_times, float))
 
 
 def bending_program(
@@ -141,18 +132,22 @@ def bending_program(
         q_seq += [qa, pl.q, qa]
         labels += [f"b{k + 1}_approach", f"b{k + 1}_bend", f"b{k + 1}_retreat"]
     q_arr = np.array(q_seq)
-    dur = _timed(model, q_arr)
-    home_dur = float(_timed(model, np.array([wq[-1], q_start]))[0])
     T_base_tcp = model.fk(q_arr) @ tool.T_flange_tcp
+    # the moves the plan does not time, timed by the motion planner as the program states them
+    die = [
+        Move.joint(q_arr[i], speed=MOVE_SPEED, name=labels[i])
+        if labels[i].endswith("_approach")
+        else Move.linear(T_base_tcp[i], speed=DIE_SPEED, name=labels[i])
+        for i in range(1, len(q_arr))
+    ]
+    dur = planner_durations(model, Program("die", tuple(die)), q_arr[0], tool.T_flange_tcp)
+    home = Program("home", (Move.joint(np.asarray(q_start, float), speed=MOVE_SPEED),))
+    home_dur = float(planner_durations(model, home, wq[-1], tool.T_flange_tcp)[0])
 
     def target(label: str, q: F64, cartesian: bool = True) -> Target:
         if not cartesian:
             return Target(label, q)
         return Target(label, q, model.fk(q) @ tool.T_flange_tcp, arm_configuration(model, q))
-
-    def speed(i: int) -> float:
-        d = float(np.linalg.norm(T_base_tcp[i, :3, 3] - T_base_tcp[i - 1, :3, 3]))
-        return max(d / max(float(dur[i - 1]), 1e-9), 1e-4)
 
     start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
     missing = [f"output {PRESS_START!r}"] * (start is None) + [f"input {PRESS_DONE!r}"] * (
@@ -178,7 +173,13 @@ def bending_program(
             ins.append(Comment(f"bend {b.bend!r} (step {b.step + 1})"))
             ins.append(
                 MoveInstr(
-                    "joint", target(label, q_arr[i]), 1.0, 0.0, tool.name, "base", float(dur[i - 1])
+                    "joint",
+                    target(label, q_arr[i]),
+                    MOVE_SPEED,
+                    0.0,
+                    tool.name,
+                    "base",
+                    float(dur[i - 1]),
                 )
             )
             continue
@@ -186,7 +187,7 @@ def bending_program(
             MoveInstr(
                 "linear",
                 target(label, q_arr[i]),
-                speed(i),
+                DIE_SPEED,
                 0.0,
                 tool.name,
                 "base",
@@ -226,7 +227,7 @@ def bending_program(
         MoveInstr(
             "joint",
             target("home", np.asarray(q_start, float), False),
-            1.0,
+            MOVE_SPEED,
             0.0,
             tool.name,
             "base",
