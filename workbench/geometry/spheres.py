@@ -15,6 +15,7 @@ surface (an obstacle entirely inside a link, never touching its surface, is not 
 
 from __future__ import annotations
 
+import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -159,30 +160,49 @@ def _assign(need: FloatArray) -> tuple[FloatArray, NDArray[np.int64]]:
 
 
 def _enclosing_centres(
-    pts: FloatArray, owner: NDArray[np.int64], centres: FloatArray, rounds: int = 60
+    pts: FloatArray,
+    owner: NDArray[np.int64],
+    centres: FloatArray,
+    rounds: int = 60,
+    *,
+    unique: tuple[FloatArray, NDArray[np.int64]] | None = None,
 ) -> FloatArray:
     """Return centres (k, 3) moved towards each sphere's smallest ball around its points.
 
     Badoiu-Clarkson steps (move a fraction 1/(t+2) towards the farthest point); the centre
     kept is the one with the smallest farthest distance seen. `owner` (P,) gives each point's
-    sphere; spheres without points keep their centre.
+    sphere; spheres without points keep their centre. unique: `np.unique(pts, axis=0,
+    return_inverse=True)` when the caller has it (the same points every round). All spheres
+    step together (padded to the largest point set), each exactly as on its own.
     """
+    upts, inv = unique if unique is not None else np.unique(pts, axis=0, return_inverse=True)
+    inv = np.asarray(inv).reshape(-1)
+    k = len(centres)
+    sets = [np.unique(inv[owner == j]) for j in range(k)]  # sorted: np.unique's row order
+    live = np.array([len(s) > 0 for s in sets])
     out = centres.copy()
-    for j in range(len(centres)):  # k is small (spheres per link)
-        p = np.unique(pts[owner == j], axis=0)
-        if len(p) == 0:
-            continue
-        c = centres[j].copy()
-        d2 = np.sum((p - c) ** 2, axis=1)
-        i = int(np.argmax(d2))
-        best, best_r2 = c.copy(), d2[i]
-        for t in range(rounds):
-            c += (p[i] - c) / (t + 2.0)
-            d2 = np.sum((p - c) ** 2, axis=1)
-            i = int(np.argmax(d2))
-            if d2[i] < best_r2:
-                best, best_r2 = c.copy(), d2[i]
-        out[j] = best
+    if not np.any(live):
+        return out
+    m = max(len(s) for s in sets)
+    idx = np.zeros((k, m), dtype=np.int64)
+    valid = np.zeros((k, m), dtype=bool)
+    for j, s in enumerate(sets):
+        idx[j, : len(s)] = s
+        valid[j, : len(s)] = True
+    p = upts[idx]  # (k, m, 3)
+    rows = np.arange(k)
+    c = centres.copy()
+    d2 = np.where(valid, np.sum((p - c[:, None]) ** 2, axis=2), -np.inf)
+    i = np.argmax(d2, axis=1)
+    best, best_r2 = c.copy(), d2[rows, i]
+    for t in range(rounds):
+        c += (p[rows, i] - c) / (t + 2.0)
+        d2 = np.where(valid, np.sum((p - c[:, None]) ** 2, axis=2), -np.inf)
+        i = np.argmax(d2, axis=1)
+        r2 = d2[rows, i]
+        better = r2 < best_r2
+        best[better], best_r2[better] = c[better], r2[better]
+    out[live] = best[live]
     return out
 
 
@@ -199,8 +219,9 @@ def _tighten(
     radii, j = _assign(need)
     best = (centres.copy(), radii)
     pts = pieces.reshape(-1, 3)
+    unique = np.unique(pts, axis=0, return_inverse=True)
     for _ in range(rounds):
-        centres = _enclosing_centres(pts, np.repeat(j, 3), centres)
+        centres = _enclosing_centres(pts, np.repeat(j, 3), centres, unique=unique)
         need = _need(pieces, centres)
         radii, j = _assign(need)
         if np.sum(radii**3) < np.sum(best[1] ** 3):
@@ -216,6 +237,17 @@ def _axis_seeds(cover: FloatArray, count: int) -> FloatArray:
     _, _, vt = np.linalg.svd(cover - mean, full_matrices=False)
     order = np.argsort((cover - mean) @ vt[0])
     return np.stack([cover[part].mean(axis=0) for part in np.array_split(order, count)])
+
+
+def _mesh_arrays(mesh: Any) -> tuple[FloatArray, NDArray[np.int64]]:
+    """Return the checked (vertices, faces) of a trimesh.Trimesh or a (vertices, faces) tuple."""
+    if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
+        return check_mesh(mesh.vertices, mesh.faces)
+    if isinstance(mesh, tuple) and len(mesh) == 2:
+        return check_mesh(*mesh)
+    raise InputError(
+        f"mesh must be a trimesh.Trimesh or a (vertices, faces) tuple, got {type(mesh).__name__}"
+    )
 
 
 def fit_spheres(
@@ -234,17 +266,12 @@ def fit_spheres(
     vertices). Every triangle is contained exactly afterwards. cache_dir: reuse/store the fit
     there as ``spheres-<sha256 of mesh and parameters>.npz`` (`npz_cache`); a stored fit is
     used only after the same exact containment check the fit makes, else (and for an
-    unreadable entry) it is fitted again and overwritten. Raises InputError for
+    unreadable entry) it is fitted again and overwritten. A fit shipped with the package
+    (`SHIPPED_FITS`, the presets' links) under the same key is used first, after the same
+    check. Raises InputError for
     count <= 0, MeshError for an empty mesh.
     """
-    if hasattr(mesh, "vertices") and hasattr(mesh, "faces"):
-        v, f = check_mesh(mesh.vertices, mesh.faces)
-    elif isinstance(mesh, tuple) and len(mesh) == 2:
-        v, f = check_mesh(*mesh)
-    else:
-        raise InputError(
-            f"mesh must be a trimesh.Trimesh or a (vertices, faces) tuple, got {type(mesh).__name__}"
-        )
+    v, f = _mesh_arrays(mesh)
     if not isinstance(count, int | np.integer) or count <= 0:
         raise InputError(f"count (spheres per link) must be a positive integer, got {count!r}")
     if iterations < 0 or particles < 1 or samples < 0:
@@ -253,7 +280,68 @@ def fit_spheres(
         )
     if cache_dir is None:
         return _fit(v, f, count, seed, iterations, particles, samples)[0]
-    params = {
+    params = _params(count, seed, iterations, particles, samples)
+    path = cache_path(cache_dir, "spheres", [v, f.astype(np.int64)], params)
+    required = ("centres", "radii", "split", *_SCALARS)
+    for read in (lambda: _shipped_entry(path.name, required), lambda: load_entry(path, required)):
+        d = read()  # a fit shipped with the package first, then the disk cache
+        if d is not None:
+            loaded = _checked_entry(v, f, d)
+            if loaded is not None:
+                return loaded
+    # No entry, an unreadable one, or one whose spheres do not hold the mesh: fit again.
+    s, split = _fit(v, f, count, seed, iterations, particles, samples)
+    store_entry(path, _entry_arrays(s, split))
+    return s
+
+
+SHIPPED_FITS = Path(__file__).with_name("fits")
+"""Fits shipped with the package (the presets' link meshes at the engine's default count):
+entries named as in the disk cache (`cache_path`), read-only, checked on load like a cached
+entry. Written by `write_shipped_fits` (`WORKBENCH_UPDATE_FITS=1 pytest
+tests/geometry/test_shipped_fits.py` rewrites them for the MZ07 preset)."""
+
+
+def _shipped_entry(name: str, required: tuple[str, ...]) -> dict[str, NDArray[Any]] | None:
+    """Return the arrays of the shipped fit `name`, or None (none shipped, or unreadable)."""
+    path = SHIPPED_FITS / name
+    if not path.is_file():
+        return None
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            arrays = {k: np.asarray(data[k]) for k in data.files}
+    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
+        return None
+    return arrays if all(k in arrays for k in required) else None
+
+
+def write_shipped_fits(
+    meshes: list[Any], count: int, folder: str | Path = SHIPPED_FITS
+) -> list[Path]:
+    """Replace the fits in `folder` by fresh fits of `count` spheres to each of `meshes`.
+
+    The entries are the disk cache's own (default fit parameters, the same key), so
+    `fit_spheres` finds them; every older entry in `folder` is removed. Returns the paths.
+    """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    for old in folder.glob("spheres-*.npz"):
+        old.unlink()
+    out = []
+    for mesh in meshes:
+        v, f = _mesh_arrays(mesh)
+        path = cache_path(folder, "spheres", [v, f.astype(np.int64)], _params(int(count)))
+        s, split = _fit(v, f, int(count), 0, 60, 24, 2000)
+        store_entry(path, _entry_arrays(s, split))
+        out.append(path)
+    return out
+
+
+def _params(
+    count: int, seed: int = 0, iterations: int = 60, particles: int = 24, samples: int = 2000
+) -> dict[str, int]:
+    """Return what a fit depends on besides the mesh (the cache key's parameters)."""
+    return {
         "count": int(count),
         "seed": int(seed),
         "iterations": int(iterations),
@@ -261,24 +349,15 @@ def fit_spheres(
         "samples": int(samples),
         "format": _FORMAT,
     }
-    path = cache_path(cache_dir, "spheres", [v, f.astype(np.int64)], params)
-    d = load_entry(path, required=("centres", "radii", "split", *_SCALARS))
-    if d is not None:
-        loaded = _checked_entry(v, f, d)
-        if loaded is not None:
-            return loaded
-    # No entry, an unreadable one, or one whose spheres do not hold the mesh: fit again.
-    s, split = _fit(v, f, count, seed, iterations, particles, samples)
-    store_entry(
-        path,
-        {
-            "centres": s.centres,
-            "radii": s.radii,
-            "split": np.asarray(split, float),
-            **{k: np.asarray(getattr(s, k), float) for k in _SCALARS},
-        },
-    )
-    return s
+
+
+def _entry_arrays(s: SphereSet, split: float) -> dict[str, NDArray[Any]]:
+    return {
+        "centres": s.centres,
+        "radii": s.radii,
+        "split": np.asarray(split, float),
+        **{k: np.asarray(getattr(s, k), float) for k in _SCALARS},
+    }
 
 
 def _checked_entry(
