@@ -35,6 +35,7 @@ class Containment:
             )
 
         self.pairs: list[Pair] = []
+        self._one: tuple | None = None  # type: ignore[type-arg]  # contained_one's arrays
         self._tests: list[tuple[int, str, str]] = []  # (pair, inner, outer)
         for a, b in scene.pairs if enabled else []:
             tests = [(b, a)] if fits(b, a) else []
@@ -43,6 +44,51 @@ class Containment:
             if tests:
                 self._tests += [(len(self.pairs), i, o) for i, o in tests]
                 self.pairs.append((a, b))
+
+    def contained_one(self, poses: FloatArray) -> NDArray[np.bool_]:
+        """Return (len(pairs),) for one configuration, the moving bodies at poses (B, 4, 4).
+
+        The same probe-vertex tests as `contained`, all half-space tests in one padded batch
+        (~15 us rather than ~15 us per test); outers without half-spaces test their mesh.
+        """
+        out = np.zeros(len(self.pairs), bool)
+        if not self._tests:
+            return out
+        if self._one is None:
+            self._one = self._padded_tests()
+        pair, inner, outer, probe, normals, offsets, static, meshes = self._one
+        world = np.concatenate([poses, static])
+        Ti, To = world[inner], world[outer]
+        p = np.einsum("tij,tj->ti", Ti[:, :3, :3], probe) + Ti[:, :3, 3]
+        local = np.einsum("tji,tj->ti", To[:, :3, :3], p - To[:, :3, 3])
+        inside = np.all(np.einsum("tfk,tk->tf", normals, local) <= offsets, axis=1)
+        for t, mesh in meshes:
+            inside[t] = bool(mesh.contains(local[t : t + 1])[0])
+        out[pair[inside]] = True
+        return out
+
+    def _padded_tests(self) -> tuple:  # type: ignore[type-arg]
+        b, scene = self.bodies, self.bodies.scene
+        names = list(scene.static)
+        row = {**b.index, **{n: len(b.names) + k for k, n in enumerate(names)}}
+        static = np.stack([scene.static[n].T for n in names]) if names else np.zeros((0, 4, 4))
+        faces = max(
+            (len(h[0]) for _, _, o in self._tests if (h := scene.entry(o).halfspaces)), default=1
+        )
+        count = len(self._tests)
+        normals, offsets = np.zeros((count, faces, 3)), np.full((count, faces), np.inf)
+        meshes = []
+        for t, (_, _, o) in enumerate(self._tests):
+            h = scene.entry(o).halfspaces
+            if h is None:
+                meshes.append((t, scene.entry(o).mesh))
+                continue
+            normals[t, : len(h[0])], offsets[t, : len(h[0])] = h
+        pair = np.array([k for k, _, _ in self._tests], np.int64)
+        inner = np.array([row[i] for _, i, _ in self._tests], np.int64)
+        outer = np.array([row[o] for _, _, o in self._tests], np.int64)
+        probe = np.stack([scene.entry(i).probe for _, i, _ in self._tests])
+        return pair, inner, outer, probe, normals, offsets, static, meshes
 
     def contained(self, qs: FloatArray) -> NDArray[np.bool_]:
         """Return (N, len(pairs)): whether one body of the pair holds the other's probe vertex."""

@@ -218,8 +218,17 @@ class CollisionEngine:
 
     # -- checks -----------------------------------------------------------------------
     def check(self, q: ArrayLike) -> ConfigCheck:
-        """Return the check of one configuration q (dof,) [rad]; flagged ones confirmed exactly."""
+        """Return the check of one configuration q (dof,) [rad]; flagged ones confirmed exactly.
+
+        Fast modes: the items of q; a group with an item <= 0 is flagged and its exact pairs
+        are settled one by one: by their pair table's lower bound (scalar look-up), else
+        fcl's collide and, when free, fcl's distance. Containment is tested at every q. The
+        verdict is the exact one, the clearance the least lower bound (unflagged groups'
+        items, flagged pairs' table bounds or fcl distances).
+        """
         qq = np.asarray(q, float).reshape(1, -1)
+        if self.mode != "exact":
+            return self._check_fast(qq)
         clr, _ = self.items(qq)
         low = float(clr.min())
         flagged = low <= 0.0
@@ -232,6 +241,38 @@ class CollisionEngine:
                 low = float(self.exact_twin().items(qq)[0].min())
             return ConfigCheck(False, flagged, max(low, 0.0), exact=rep)
         return ConfigCheck(False, False, low)
+
+    def _check_fast(self, qq: FloatArray) -> ConfigCheck:
+        """Return `check` of one configuration qq (1, dof) [rad] in a fast mode."""
+        clr, _ = self.items(qq)
+        gmin = np.minimum.reduceat(clr[0], self.group_start)
+        flagged = np.flatnonzero(gmin <= 0.0)
+        held = self.containment.contained_one(self.bodies.poses(qq)[0])
+        if not flagged.size and not held.any():
+            return ConfigCheck(False, False, float(gmin.min()))
+        low = float(np.min(gmin[gmin > 0.0], initial=np.inf))
+        qv = qq[0].tolist()
+        poses = self.bodies.poses(qq)[0]
+        self.pairs.place(poses)
+        tables = self.tables.tables
+        unsettled: list[Pair] = []
+        for g in flagged.tolist():
+            for pair in self.group_pairs[g]:
+                table = tables.get(pair)
+                lb = table.bound_one(qv) - self.margin if table is not None else -np.inf
+                if lb > 0.0:
+                    low = min(low, lb)
+                else:
+                    unsettled.append(pair)
+        unsettled += [p for p, h in zip(self.always_pairs, held.tolist(), strict=True) if h]
+        for pair in dict.fromkeys(unsettled):  # in order, once each
+            if self.pairs.collides(pair):
+                a, b = pair
+                qv0 = qq[0]
+                return ConfigCheck(True, True, 0.0, a, b, self.penetration(qv0, a, b))
+        for pair in dict.fromkeys(unsettled):
+            low = min(low, self.pairs.distance(pair))
+        return ConfigCheck(False, bool(flagged.size), max(low, 0.0))
 
     def check_path(
         self,
