@@ -227,14 +227,14 @@ def test_joint_vector_names_the_field_and_what_is_wrong(value, message):
 
 
 def test_pick_solution_by_index_label_or_nearest():
-    sols = [("front/elbow A/no flip", np.zeros(6)), ("back/elbow A/no flip", np.ones(6))]
+    sols = [("front/elbow up/no flip", np.zeros(6)), ("back/elbow up/no flip", np.ones(6))]
     assert pick_solution(sols, None) is sols[0][1]
     assert pick_solution(sols, 1) is sols[1][1]
-    assert pick_solution(sols, "back/elbow A/no flip") is sols[1][1]
+    assert pick_solution(sols, "back/elbow up/no flip") is sols[1][1]
     with pytest.raises(InputError, match="index 2 out of range; 2 solution"):
         pick_solution(sols, 2)
     with pytest.raises(UnreachableError, match="available"):
-        pick_solution(sols, "front/elbow B/flip")
+        pick_solution(sols, "front/elbow down/flip")
 
 
 def test_branch_solutions_are_the_valid_branches_and_reach_the_pose():
@@ -253,3 +253,36 @@ def test_branch_solutions_are_the_valid_branches_and_reach_the_pose():
     far[:3, 3] = [10.0, 0.0, 0.0]
     rows, branches = branch_solutions(robot, far)
     assert rows.shape == (0, 6) and branches.shape == (0,)
+
+
+def test_labelled_solutions_are_every_configuration_and_turn_stable_across_picks():
+    """Twin: brute force over every branch and every turn (`every_solution`), labelled from the
+    controller joints; picking any solution leaves the list's labels and joints unchanged."""
+    from workbench.kinematics.arm_configuration import arm_configuration, every_solution
+    from workbench.kinematics.configurations import labelled_solutions
+
+    robot = DHRobot.mz07()
+    rng = np.random.default_rng(11)
+    lo, hi = robot.limits[:, 0], robot.limits[:, 1]
+    for _ in range(20):
+        q = rng.uniform(lo, hi)
+        T = robot.fk(q)
+        found = labelled_solutions(robot, T, q)
+        labels = [name for name, _ in found]
+        assert len(set(labels)) == len(labels), labels
+        brute = every_solution(robot, T)
+        assert len(found) == len(brute)
+        for name, qs in found:
+            np.testing.assert_allclose(robot.fk(qs), T, atol=1e-9)
+            assert name.split(", ")[0] == arm_configuration(robot, qs).label()
+            j6 = np.degrees(robot.convention.to_controller(qs)[5])
+            turn = int(np.ceil((j6 - 180.0 - 1e-9) / 360.0))
+            assert ("J6 +1 turn" in name) == (turn == 1) and ("J6 -1 turn" in name) == (turn == -1)
+            assert "elbow A" not in name and "elbow B" not in name
+        assert np.abs(found[0][1] - q).max() < 1e-7, "nearest first"
+        before = {name: qs for name, qs in found}
+        for name, qs in found[1:3]:
+            again = dict(labelled_solutions(robot, T, qs))
+            assert again.keys() == before.keys(), "labels do not depend on where the arm is"
+            for k in before:
+                np.testing.assert_allclose(again[k], before[k], atol=1e-9)

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from workbench.kinematics import DHRobot
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.joint_turns import all_turns, joint_turn, wrap_to_pi
 
@@ -45,6 +46,16 @@ def test_all_turns_enumerates_every_variant() -> None:
     assert np.all(np.abs(wrap_to_pi(np.array([3 * math.pi + 0.1]))) <= math.pi)
 
 
-def test_branch_names() -> None:
-    assert branch_name(0) == "front/elbow A/no flip"
-    assert branch_name(7) == "back/elbow B/flip"
+def test_branch_names_say_configuration_and_turns() -> None:
+    robot = DHRobot.mz07()
+    conv = robot.convention
+    # Straight up, elbow bent forward: the twin is the controller's own reading of the joints
+    # (J5 sign for the flip, J6 between 180 and 540 deg for +1 turn).
+    q_ctrl = np.radians([0.0, 0.0, 0.0, 0.0, 30.0, 200.0])
+    name = branch_name(robot, conv.to_model(q_ctrl))
+    assert name.endswith("/no flip, J6 +1 turn")
+    q_ctrl[4], q_ctrl[5] = np.radians(-30.0), np.radians(-190.0)
+    assert branch_name(robot, conv.to_model(q_ctrl)).endswith("/flip, J6 -1 turn")
+    q_ctrl[5] = np.radians(180.0)  # exactly +180 deg is still turn 0
+    assert ", J6" not in branch_name(robot, conv.to_model(q_ctrl))
+    assert "elbow A" not in name and "elbow B" not in name

@@ -43,7 +43,7 @@ def test_both_robot_classes_are_robot_models() -> None:
 def test_one_configuration_reproduces_the_poses_and_matches_brute_force() -> None:
     T = _line(turn=3.0)
     r = follow_path(ROBOT, T, Q0, max_joint_step=0.2)
-    assert isinstance(r, PathIK) and r.configuration == branch_name(r.branch)
+    assert isinstance(r, PathIK) and r.configuration == branch_name(ROBOT, r.q[0])
     # Twin 1: pinocchio's FK of the joints is the target pose.
     np.testing.assert_allclose(_pin_fk(r.q), T, atol=1e-9)
     assert r.max_step == pytest.approx(np.abs(np.diff(r.q, axis=0)).max())

@@ -6,7 +6,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError, UnreachableError
-from workbench.kinematics.ik_report import branch_name
+from workbench.kinematics.ik_report import branch_names
+from workbench.kinematics.joint_turns import all_turns
 from workbench.kinematics.model import RobotModel
 
 FloatArray = NDArray[np.float64]
@@ -38,17 +39,25 @@ def labelled_solutions(
 ) -> list[tuple[str, FloatArray]]:
     """Return (label, q (dof,) [rad]) of every IK solution of one pose (4, 4), nearest q_near first.
 
-    Analytic models: one solution per arm configuration, labelled by its branch
-    ('front/elbow A/no flip'), wide joints on the turn nearest q_near, so labels stay
-    stable as the arm moves. Numeric models: 'solution k'. Raises UnreachableError when
-    there is none.
+    Analytic models: every arm configuration at every turn of the wide joints the limits
+    allow, labelled by `ik_report.branch_names` ('front/elbow up/no flip, J6 +1 turn'): the
+    labels and the set of solutions depend on the pose only, not on q_near, so a list of them
+    stays the same when the arm moves from one solution to another. Numeric models: the
+    solver's rows, 'solution k'. Raises UnreachableError when there is none.
     """
     qn = np.asarray(q_near, dtype=float)
     rows, branches = branch_solutions(model, T_base_flange, qn)
-    found = [
-        (branch_name(int(b)) if b >= 0 else f"solution {k + 1}", np.array(q))
-        for k, (q, b) in enumerate(zip(rows, branches, strict=True))
-    ]
+    if len(rows) and branches[0] >= 0:
+        limits = np.asarray(model.limits, float)
+        rows = np.concatenate([all_turns(r, limits) for r in rows], axis=0)
+        names = branch_names(model, rows)
+    else:
+        names = [f"solution {k + 1}" for k in range(len(rows))]
+    seen: dict[str, int] = {}
+    found = []
+    for name, q in zip(names, rows, strict=True):
+        seen[name] = seen.get(name, 0) + 1  # a tie on a configuration boundary stays apart
+        found.append((name if seen[name] == 1 else f"{name} ({seen[name]})", np.array(q)))
     if not found:
         raise UnreachableError(
             "the TCP pose is unreachable: no inverse-kinematics solution within the joint limits"

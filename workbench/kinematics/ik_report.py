@@ -6,20 +6,57 @@ import math
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
+from workbench.kinematics.arm_configuration import arm_configurations
 from workbench.kinematics.joint_turns import LIMIT_SLACK, wrap_to_pi
 from workbench.kinematics.opw_single import solve_single
 
 if TYPE_CHECKING:
     from workbench.kinematics.dh_robot import DHRobot
+    from workbench.kinematics.model import RobotModel
 
-_BRANCH = ("front", "back"), ("elbow A", "elbow B"), ("no flip", "flip")
+_HALF_TURN = math.pi * (1.0 + 1e-12)  # rad; a joint at exactly +-180 deg is on turn 0
 
 
-def branch_name(b: int) -> str:
-    """Return a readable name of analytic branch b = 4 * shoulder + 2 * elbow + wrist."""
-    return "/".join(_BRANCH[i][(b >> (2 - i)) & 1] for i in range(3))
+def joint_turn_numbers(model: RobotModel, q_model: ArrayLike) -> NDArray[np.int64]:
+    """Return the turn k (..., dof) of each joint: q_ctrl - 360 k deg lies in (-180, 180].
+
+    Counted in the controller's convention (the one the sliders and programs show), so
+    "J6 +1 turn" means the controller's J6 is between 180 and 540 deg.
+    """
+    qc = np.asarray(model.convention.to_controller(np.asarray(q_model, float)), float)
+    return np.ceil((qc - _HALF_TURN) / (2.0 * math.pi)).astype(np.int64)
+
+
+def branch_names(model: RobotModel, q_model: ArrayLike) -> list[str]:
+    """Return the configuration label of each joint vector q (..., dof) [rad, model convention].
+
+    THE LABELLING RULE of IK configurations: the arm configuration
+    (`ArmConfiguration.label()`: 'front/elbow up/no flip') and, for each joint whose limits
+    span more than one turn, its turn when not 0 ('J6 +1 turn'): the label tells apart every
+    IK solution of one pose and does not depend on where the arm was before.
+    """
+    q = np.asarray(q_model, float).reshape(-1, model.dof)
+    if len(q) == 0:
+        return []
+    lim = np.asarray(model.convention.limits_to_controller(model.limits), float)
+    wide = np.flatnonzero((lim[:, 0] < -_HALF_TURN) | (lim[:, 1] > _HALF_TURN))
+    turns = joint_turn_numbers(model, q)
+    names = []
+    for conf, k in zip(arm_configurations(model, q), turns, strict=True):
+        extra = [
+            f"J{j + 1} {int(k[j]):+d} turn{'s' if abs(int(k[j])) > 1 else ''}"
+            for j in wide
+            if k[j] != 0
+        ]
+        names.append(", ".join([conf.label(), *extra]))
+    return names
+
+
+def branch_name(model: RobotModel, q_model: ArrayLike) -> str:
+    """Return the configuration label of one joint vector q (dof,) [rad] (see `branch_names`)."""
+    return branch_names(model, q_model)[0]
 
 
 def unreachable_reason(robot: DHRobot, T: NDArray[np.float64]) -> str:
@@ -59,7 +96,7 @@ def unreachable_reason(robot: DHRobot, T: NDArray[np.float64]) -> str:
         )
     problems = []
     lo, hi = robot.limits[:, 0], robot.limits[:, 1]
-    for b, (*theta, err) in enumerate(solve_single(g, T)):
+    for *theta, err in solve_single(g, T):
         if not err < 1e-9:
             continue
         q = wrap_to_pi(np.asarray(theta) - robot.dh[:, 0])
@@ -69,7 +106,7 @@ def unreachable_reason(robot: DHRobot, T: NDArray[np.float64]) -> str:
         if bad.size:
             j = int(bad[0])
             problems.append(
-                f"{branch_name(b)}: joint {j + 1} = {math.degrees(q[j]):.1f} deg outside "
+                f"{branch_name(robot, q)}: joint {j + 1} = {math.degrees(q[j]):.1f} deg outside "
                 f"[{math.degrees(lo[j]):.1f}, {math.degrees(hi[j]):.1f}] deg"
             )
     if problems:

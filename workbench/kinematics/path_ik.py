@@ -47,7 +47,7 @@ class PathIK:
 
     q: (N, dof) [rad], fk(q[i]) == T_base_flange[i]; branch: the analytic branch
     b = 4 * shoulder + 2 * elbow + wrist (-1 for a numeric model); configuration: its name
-    (`branch_name(b)`, or "nearest solution"); max_step: the largest joint change between
+    (`branch_name(model, q[0])`, or "nearest solution"); max_step: the largest joint change between
     consecutive poses [rad] (0 for one pose).
     """
 
@@ -100,7 +100,7 @@ def follow_path(
 
     if model.is_analytic and track == "configuration":
         q, b = _analytic(model, T, qn, max_joint_step, cost, what, name, fix)
-        configuration = branch_name(b)
+        configuration = branch_name(model, q[0])
     else:
         q, b, configuration = _numeric(model, T, qn, what, name, fix), -1, NUMERIC
     steps = np.abs(np.diff(q, axis=0)).max(axis=1) if len(q) > 1 else np.zeros(0)
@@ -134,8 +134,9 @@ def _analytic(
         # Name where the configuration reaching furthest along the poses gives up.
         reach = np.argmin(valid, axis=0)
         b = int(np.argmax(reach))
+        furthest = branch_name(model, qb[max(int(reach[b]) - 1, 0), b])
         raise UnreachableError(
-            f"{what}: no single arm configuration reaches every pose: '{branch_name(b)}', "
+            f"{what}: no single arm configuration reaches every pose: '{furthest}', "
             f"the one reaching furthest, misses {name(int(reach[b]))}{fix}"
         )
     limits = np.asarray(model.limits, dtype=float)
@@ -157,7 +158,9 @@ def _analytic(
     if best is None:
         assert jumped is not None and max_joint_step is not None
         _, b, i, jump = jumped
-        raise PlanningError(_jump(what, name(i), jump, branch_name(b), max_joint_step, fix))
+        raise PlanningError(
+            _jump(what, name(i), jump, branch_name(model, qb[0, b]), max_joint_step, fix)
+        )
     return best[2], best[1]
 
 

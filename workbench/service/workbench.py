@@ -176,9 +176,11 @@ class Workbench:
         return self.link_poses(q)[-1] @ self._setup.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
-        """Return every IK solution (at most 8) that puts the TCP at `T_world_tcp`, nearest first.
+        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first.
 
-        Labels name the arm configuration ('front/elbow A/no flip'); `move_tcp` accepts them.
+        One per arm configuration and turn of the wide joints, labelled
+        'front/elbow up/no flip, J6 +1 turn' (the labels depend on the pose only);
+        `move_tcp` accepts them.
         """
         T = check_transform(T_world_tcp, "T_world_tcp")
         T_base_flange = (
