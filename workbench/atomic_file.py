@@ -114,14 +114,20 @@ def _carry_over(fd: int, st: os.stat_result | None) -> None:
 
 
 def atomic_write(
-    path: str | os.PathLike[str], write: Callable[[IO[Any]], object], *, binary: bool
+    path: str | os.PathLike[str],
+    write: Callable[[IO[Any]], object],
+    *,
+    binary: bool,
+    durable: bool = True,
 ) -> None:
     """Write `path` atomically with write(file): temporary file in the same folder, fsync, rename.
 
     The temporary file has a unique name, so two writers of the same path never mix their
     bytes; the last rename wins and the folder is synced after it. The file keeps its mode and
     owner (a new one gets the umask's mode, as `open` would give it); a symlink is followed and
-    kept; anything but a regular file at the path raises InputError.
+    kept; anything but a regular file at the path raises InputError. durable=False skips
+    the two fsyncs (still atomic for readers): for cache entries, which are checked on load,
+    so one lost or torn by a power cut is only rebuilt.
     """
     p = Path(path)
     real, st = _target(p)
@@ -137,11 +143,14 @@ def atomic_write(
             _carry_over(fh.fileno(), st)
             write(fh)
             fh.flush()
-            os.fsync(fh.fileno())
+            if durable:
+                os.fsync(fh.fileno())
         os.replace(tmp, real)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+    if not durable:
+        return
     try:
         dir_fd = os.open(folder, os.O_RDONLY)
     except OSError:

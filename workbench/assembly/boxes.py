@@ -96,15 +96,29 @@ def box_triangle_overlap(
 
     center: (M, 3) cube centres [m]; half: cube half side [m]; triangles: (M, 3, 3)
     vertices [m]; tol [m] grows the cube so borderline contacts count as overlap.
+    The 13 axes are tested in turn on the pairs no earlier axis separated (the verdict is
+    the same as testing every axis on every pair: a pair overlaps iff no axis separates it).
     """
     v = np.asarray(triangles, dtype=float) - np.asarray(center, dtype=float)[:, None, :]
     h = float(half) + tol
-    sep = np.any(v.min(axis=1) > h, axis=1) | np.any(v.max(axis=1) < -h, axis=1)
+    m = len(v)
+    # Box face axes: per coordinate, the triangle's extent against [-h, h].
+    lo = np.minimum(np.minimum(v[:, 0], v[:, 1]), v[:, 2])
+    hi = np.maximum(np.maximum(v[:, 0], v[:, 1]), v[:, 2])
+    sep = (lo > h) | (hi < -h)
+    live = np.flatnonzero(~(sep[:, 0] | sep[:, 1] | sep[:, 2]))
+    out = np.zeros(m, dtype=bool)
+    if live.size == 0:
+        return out
+    v = v[live]
     e = np.stack([v[:, 1] - v[:, 0], v[:, 2] - v[:, 1], v[:, 0] - v[:, 2]], axis=1)
     n = np.cross(e[:, 0], e[:, 1])
-    sep |= np.abs(np.einsum("mi,mi->m", n, v[:, 0])) > h * np.abs(n).sum(axis=1)
+    keep = ~(np.abs(np.einsum("mi,mi->m", n, v[:, 0])) > h * np.abs(n).sum(axis=1))
+    live, v, e = live[keep], v[keep], e[keep]
     for k in range(3):
         for ax in range(3):
+            if live.size == 0:
+                return out
             # axis = unit_ax x e_k
             a = np.zeros_like(e[:, k])
             a1, a2 = (ax + 1) % 3, (ax + 2) % 3
@@ -112,5 +126,9 @@ def box_triangle_overlap(
             a[:, a2] = e[:, k, a1]
             p = np.einsum("mvi,mi->mv", v, a)
             r = h * np.abs(a).sum(axis=1)
-            sep |= (p.min(axis=1) > r) | (p.max(axis=1) < -r)
-    return ~sep
+            pmin = np.minimum(np.minimum(p[:, 0], p[:, 1]), p[:, 2])
+            pmax = np.maximum(np.maximum(p[:, 0], p[:, 1]), p[:, 2])
+            keep = ~((pmin > r) | (pmax < -r))
+            live, v, e = live[keep], v[keep], e[keep]
+    out[live] = True
+    return out

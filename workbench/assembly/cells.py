@@ -172,12 +172,19 @@ _CACHE: BoundedCache[CellGrid] = BoundedCache(
 
 
 def subdivide_cached(mesh: trimesh.Trimesh, cell_size: float) -> CellGrid:
-    """Return `subdivide(mesh, cell_size)`, reusing the grid of an identical mesh seen before."""
+    """Return `subdivide(mesh, cell_size)`, reusing the grid of an identical mesh seen before:
+    in memory, else on disk (`cell_cache`: keyed by mesh and cell size, checked on load)."""
+    from workbench.assembly.cell_cache import load_grid, store_grid
+
     h = hashlib.blake2b(np.ascontiguousarray(mesh.vertices, dtype=float).tobytes(), digest_size=16)
     h.update(np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes())
     key = (h.hexdigest(), float(cell_size))
     grid = _CACHE.get(key)
     if grid is None:
-        grid = subdivide(mesh, cell_size)
+        c = check_cell_size(cell_size, mesh)
+        grid = load_grid(mesh, c)
+        if grid is None:
+            grid = subdivide(mesh, c)
+            store_grid(mesh, grid)
         _CACHE.put(key, grid)
     return grid
