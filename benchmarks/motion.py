@@ -1,13 +1,23 @@
-"""Benchmark: flowing trajectories vs stop-and-go ruckig on the same waypoint sets.
+"""Benchmark: flowing trajectories vs stop-and-go ruckig and TOPP-RA's time-optimal bound.
 
-Prints the cycle time of `smooth_joint_path` against plain ruckig called rest-to-rest
-for every segment (the peer), their ratio, and the computation time per trajectory.
-Run: python benchmarks/motion.py
+For every waypoint set it prints the cycle time of `smooth_joint_path`, of plain ruckig
+called rest-to-rest for every segment (stop-and-go), and of TOPP-RA (velocity and
+acceleration limits, no jerk: a lower bound for any jerk-limited motion along its path)
+along the cubic spline through the same waypoints, as toppra's documentation sets a path
+up; the ratios; and the computation time of ours per segment against ruckig's own time
+per segment (one `calculate` of the stop-and-go peer).
+
+Sets: the benchmark's gentle random walks (10 and 50 waypoints, steps 0.1-0.3 rad, equal
+limits) and "random": 2-25 waypoints, steps 0.05-0.6 rad, random per-joint limits.
+Run: python benchmarks/motion.py [--no-toppra] [--sets N]
+(toppra: pip install -r benchmarks/requirements.txt)
 """
 
 from __future__ import annotations
 
+import argparse
 import time
+from dataclasses import dataclass
 
 import numpy as np
 import ruckig
@@ -29,39 +39,94 @@ def gentle_path(
     return np.array(pts)
 
 
-def stop_and_go(q: np.ndarray) -> float:
-    """Return the cycle time [s] of plain ruckig, rest to rest at every waypoint."""
+@dataclass
+class Problem:
+    q: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+    j: np.ndarray
+
+
+def benchmark_sets(n_sets: int, seed: int = 0) -> dict[str, list[Problem]]:
+    """Return the named waypoint sets with their limits."""
+    rng = np.random.default_rng(seed)
+    out: dict[str, list[Problem]] = {}
+    for n in (10, 50):
+        out[f"gentle {n}"] = [Problem(gentle_path(n, rng), V, A, J) for _ in range(n_sets)]
+    rnd = []
+    for _ in range(3 * n_sets):
+        n = int(rng.integers(2, 26))
+        q = gentle_path(n, rng, (0.05, 0.6))
+        lim = (rng.uniform(0.5, 3.0, 6), rng.uniform(2.0, 20.0, 6), rng.uniform(20.0, 300.0, 6))
+        rnd.append(Problem(q, *lim))
+    out["random 2-25"] = rnd
+    return out
+
+
+def stop_and_go(p: Problem) -> tuple[float, float]:
+    """Return (cycle time [s], ruckig calculate time [s] summed) rest to rest at every waypoint."""
     otg, inp = ruckig.Ruckig(6), ruckig.InputParameter(6)
-    inp.max_velocity, inp.max_acceleration, inp.max_jerk = V.tolist(), A.tolist(), J.tolist()
-    total = 0.0
-    for a, b in zip(q[:-1], q[1:], strict=True):
+    inp.max_velocity, inp.max_acceleration, inp.max_jerk = p.v.tolist(), p.a.tolist(), p.j.tolist()
+    total, spent = 0.0, 0.0
+    tr = ruckig.Trajectory(6)
+    for a, b in zip(p.q[:-1], p.q[1:], strict=True):
         inp.current_position, inp.target_position = a.tolist(), b.tolist()
-        tr = ruckig.Trajectory(6)
-        assert otg.calculate(inp, tr) == ruckig.Result.Working
+        t0 = time.perf_counter()
+        res = otg.calculate(inp, tr)
+        spent += time.perf_counter() - t0
+        assert res == ruckig.Result.Working
         total += tr.duration
-    return total
+    return total, spent
+
+
+def toppra_time(p: Problem) -> float:
+    """Return TOPP-RA's time-optimal duration [s] along the spline through the waypoints."""
+    import toppra as ta
+    import toppra.algorithm as algo
+    import toppra.constraint as constraint
+
+    ta.setup_logging("WARNING")
+    s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(p.q, axis=0), axis=1))])
+    path = ta.SplineInterpolator(s / s[-1], p.q)
+    pc_vel = constraint.JointVelocityConstraint(np.stack([-p.v, p.v], axis=1))
+    pc_acc = constraint.JointAccelerationConstraint(np.stack([-p.a, p.a], axis=1))
+    inst = algo.TOPPRA([pc_vel, pc_acc], path, parametrizer="ParametrizeConstAccel")
+    traj = inst.compute_trajectory(0, 0)
+    if traj is None:
+        return float("nan")
+    return float(traj.duration)
 
 
 def main() -> None:
-    rng = np.random.default_rng(0)
-    print("waypoints  sets  flowing[s]  stop-and-go[s]  ratio(mean/max)  ours[ms]  peer[ms]")
-    for n in (10, 50):
-        sets = [gentle_path(n, rng) for _ in range(30)]
-        ours, peer, t_ours, t_peer = [], [], [], []
-        for q in sets:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--no-toppra", action="store_true", help="skip the TOPP-RA bound")
+    ap.add_argument("--sets", type=int, default=30, help="sets per gentle row (random: 3x)")
+    args = ap.parse_args()
+    print(
+        "set          n  ours/s&g(median/max)  ours/TOPP-RA(median/max)  "
+        "ours[ms]  ours/ruckig per segment"
+    )
+    for name, probs in benchmark_sets(args.sets).items():
+        r_sg, r_tp, t_ours, t_rk = [], [], [], []
+        for p in probs:
             t0 = time.perf_counter()
-            ours.append(smooth_joint_path(q, V, A, J).duration)
-            t1 = time.perf_counter()
-            peer.append(stop_and_go(q))
-            t_ours.append(t1 - t0)
-            t_peer.append(time.perf_counter() - t1)
-        r = np.array(ours) / np.array(peer)
+            ours = smooth_joint_path(p.q, p.v, p.a, p.j).duration
+            t_ours.append(time.perf_counter() - t0)
+            sg, spent = stop_and_go(p)
+            t_rk.append(spent)
+            r_sg.append(ours / sg)
+            if not args.no_toppra:
+                r_tp.append(ours / toppra_time(p))
+        r_sg_a, t_o, t_r = np.array(r_sg), np.array(t_ours), np.array(t_rk)
+        tp = f"{np.nanmedian(r_tp):6.3f}/{np.nanmax(r_tp):6.3f}" if r_tp else "      -/     -"
         print(
-            f"{n:9d}  {len(sets):4d}  {np.mean(ours):10.3f}  {np.mean(peer):14.3f}  "
-            f"{r.mean():6.3f}/{r.max():6.3f}  {1e3 * np.median(t_ours):8.2f}  "
-            f"{1e3 * np.median(t_peer):8.2f}"
+            f"{name:11s} {len(probs):3d}  {np.median(r_sg_a):8.3f}/{r_sg_a.max():6.3f}       "
+            f"{tp:>14s}           {1e3 * np.median(t_o):7.2f}  {np.median(t_o / t_r):8.1f}"
         )
-    print(f"limits: v={V[0]} rad/s, a={A[0]} rad/s^2, j={J[0]} rad/s^3; steps 0.1-0.3 rad")
+    print(
+        f"gentle: v={V[0]} rad/s, a={A[0]} rad/s^2, j={J[0]} rad/s^3, steps 0.1-0.3 rad; "
+        "random: v 0.5-3, a 2-20, j 20-300 per joint, steps 0.05-0.6 rad"
+    )
 
 
 if __name__ == "__main__":

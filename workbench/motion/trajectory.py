@@ -3,9 +3,11 @@
 ruckig's community edition solves one state-to-state problem at a time (its
 ``intermediate_positions`` would call a cloud service), so the path is split into one
 segment per pair of consecutive waypoints. The motion flows through intermediate
-waypoints: each joint gets a waypoint velocity from the slopes of its neighbouring
-segments (zero at direction reversals, at exact stops and at the ends), bounded by what
-the joint can reach from rest and brake to rest within its neighbouring segments. Every
+waypoints: each waypoint gets a velocity along the chord of its two segments (zero for a
+joint that reverses there, at exact stops and at the ends), scaled to the velocity limits
+and lowered by a forward and a backward pass to what every joint can reach from, and brake
+to, its neighbours' speeds within part of the segments between them; one ruckig call per
+segment then times it. Every
 segment is checked (``validate_input``, the ``Result``, no overshoot beyond the box of its
 two waypoints); a segment that fails is re-solved with a stop at its end waypoint, then at
 its start waypoint (re-solving the previous segment).
@@ -16,7 +18,7 @@ flattened into one table of constant-jerk pieces per joint (`at` is exact, vecto
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -25,15 +27,61 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError, PlanningError
 from workbench.motion.limits import check_limits, check_position_limits, check_waypoints
-from workbench.motion.speed_bounds import max_speed_change, rest_to_rest_time
+from workbench.motion.speed_bounds import max_speed_change
 
 # Slack for "no overshoot beyond the waypoint box": ruckig's own position error is ~1e-12.
 _BOX_TOL = 1e-10
-# Consecutive waypoints closer than this (every joint) are merged into one.
-DUPLICATE_TOL = 1e-9
-# Refinement passes of the waypoint velocities: at most this many, while each gains > 1 %.
-MAX_PASSES = 4
-PASS_GAIN = 0.01
+# Consecutive waypoints closer than this (every joint) are merged into one [rad]: a shorter
+# segment is below ruckig's precision (a 1e-5 mm linear move gives ~1e-8 rad, whose
+# jerk-limited profile overshoots its waypoints), and 1e-7 rad moves a point 1 m out 0.1 um.
+DUPLICATE_TOL = 1e-7
+REACH_FRACTION = 0.45
+"""Share of a segment's length within which each joint must be able to change its speed
+between the segment's two waypoint speeds (the rest is slack that lets the joints share
+the segment time the slowest one sets). At 1 the speeds sit on the edge of reachability,
+so joints moving a little must dip their speed and ruckig's synchronised profile
+overshoots; 0.45 was the fastest on benchmarks/motion.py's sets (0.3-0.5 within 5 %).
+"""
+MAX_SAMPLES = 30_000
+"""Most samples of one trajectory (`Trajectory.sample`): its duration / dt. A longer one is
+refused before it is sampled, with the estimate."""
+
+# Why ruckig refused a segment, by its result code (the Python binding knows only some of
+# them by name: the others arrive as "ValueError: -101 is not a valid Result").
+RUCKIG_CAUSES = {
+    -1: "ruckig failed (an unclassified error)",
+    -100: "ruckig refused the input (a limit or state it cannot use)",
+    -101: (
+        "the segment would last longer than ruckig can time (about 7,600 s): the speed, "
+        "acceleration or jerk limits are too small for its distance"
+    ),
+    -102: "the segment would leave ruckig's position limits",
+    -104: "a velocity, acceleration or jerk limit is zero",
+    -110: (
+        "ruckig found no duration for the segment: its limits (speed, acceleration, jerk) and "
+        "its length differ by too many orders of magnitude"
+    ),
+    -111: "ruckig could not synchronise the joints of the segment",
+}
+
+
+def ruckig_cause(code: int) -> str:
+    """Return the cause of ruckig result `code` in words (its number for an unknown one)."""
+    return RUCKIG_CAUSES.get(int(code), f"ruckig returned error {int(code)}")
+
+
+def sample_count(duration: float, dt: float, what: str = "the trajectory") -> int:
+    """Return how many samples `duration` [s] every `dt` [s] takes (end included).
+
+    Raises PlanningError with the estimate when it is over `MAX_SAMPLES`."""
+    n = int(np.floor(duration / dt + 1e-9)) + 2
+    if n > MAX_SAMPLES:
+        raise PlanningError(
+            f"{what} lasts {duration:.4g} s: {n:,} samples every {dt:g} s, above the budget of "
+            f"{MAX_SAMPLES:,} (workbench.motion.trajectory.MAX_SAMPLES); raise the speeds, "
+            "accelerations or jerks, shorten the motion, or sample it less often"
+        )
+    return n
 
 
 @dataclass(frozen=True, eq=False)
@@ -101,6 +149,7 @@ class Trajectory:
         step = self.dt if dt is None else float(dt)
         if not np.isfinite(step) or step <= 0.0:
             raise InputError(f"dt must be a positive number of seconds, got {dt!r}")
+        sample_count(self.duration, step)
         n = int(np.floor(self.duration / step + 1e-9))
         times = np.arange(n + 1, dtype=np.float64) * float(step)
         if times[-1] < self.duration - 1e-12:
@@ -122,43 +171,75 @@ class Trajectory:
 
 def _flow_velocities(
     q: NDArray[np.float64],
-    seg_time: NDArray[np.float64],
     vmax: NDArray[np.float64],
     amax: NDArray[np.float64],
     jmax: NDArray[np.float64],
     stops: NDArray[np.bool_],
 ) -> NDArray[np.float64]:
-    """Return waypoint velocities (N, dof): along the path tangent, zero at reversals and stops.
+    """Return waypoint velocities (N, dof): along the path, zero at reversals, stops and ends.
 
-    The tangent (q[i+1] - q[i-1]) / (T[i-1] + T[i]) is scaled down as a whole to the
-    velocity limits; then, per joint, a forward and a backward pass keep each speed
-    reachable from, and brakeable to, its neighbours' within the segment between them.
+    Direction: the chord (q[i+1] - q[i-1]) over the two segments' times at full speed
+    (max over joints of distance / velocity limit), which lies between the two segments'
+    own velocities joint by joint, so every joint's share of the motion stays consistent
+    with the segment time the slowest joint sets; a joint whose two segments move in
+    opposite directions (or not at all) gets zero. Speed: the direction scaled as a whole
+    to the velocity limits of both segments, then lowered, as a whole per waypoint, by a
+    forward and a backward pass until every joint can reach its speed from the previous
+    waypoint's and brake to the next one's within `REACH_FRACTION` of the segment between
+    them (closed-form jerk-limited bound, `max_speed_change`). No segment time is needed,
+    so one ruckig call per segment follows.
     """
     d = np.diff(q, axis=0)
+    dist = np.abs(d)
+    cruise = np.max(dist / vmax, axis=1)
     same = (np.sign(d[:-1]) == np.sign(d[1:])) & (d[:-1] != 0.0)
-    tangent = (q[2:] - q[:-2]) / (seg_time[:-1] + seg_time[1:])[:, None]
-    mag = np.where(same, np.abs(tangent), 0.0)
+    chord = np.where(same, (q[2:] - q[:-2]) / (cruise[:-1] + cruise[1:])[:, None], 0.0)
     # A hair below the limit: ruckig's validate_input rejects a velocity equal to the
     # limit after rounding (seen with per-segment limits from linear moves).
     cap = np.minimum(vmax[:-1], vmax[1:]) * (1.0 - 1e-9)
+    mag = np.abs(chord)
     with np.errstate(divide="ignore"):
         scale = np.min(np.where(mag > 0.0, cap / mag, np.inf), axis=1, keepdims=True)
-    speed = np.zeros_like(q)
-    speed[1:-1] = mag * np.minimum(1.0, scale)
-    speed[stops] = 0.0
-    # Fixed point of both neighbour constraints, vectorised over waypoints; a constraint
-    # travels one waypoint per round, so N rounds always suffice.
-    dist = np.abs(d)
-    for _ in range(q.shape[0]):
-        new = speed.copy()
-        new[1:] = np.minimum(new[1:], max_speed_change(speed[:-1], dist, amax, jmax))
-        new[:-1] = np.minimum(new[:-1], max_speed_change(speed[1:], dist, amax, jmax))
-        if np.array_equal(new, speed):
-            break
-        speed = new
-    v = np.zeros_like(q)
-    v[1:-1] = np.sign(d[1:]) * speed[1:-1]
+    w = np.zeros_like(q)  # each waypoint's speed per joint at full scale
+    w[1:-1] = mag * np.where(np.isfinite(scale), scale, 0.0)
+    sigma = np.zeros(q.shape[0])  # the scale of each waypoint, in [0, 1]
+    sigma[1:-1] = 1.0
+    sigma[stops | ~np.any(w > 0.0, axis=1)] = 0.0
+    _reach_passes(sigma, w, dist * REACH_FRACTION, amax, jmax)
+    v = np.sign(np.concatenate([d[:1], d])) * w * sigma[:, None]
+    v[0] = v[-1] = 0.0
     return v
+
+
+def _reach_passes(
+    sigma: NDArray[np.float64],
+    w: NDArray[np.float64],
+    dist: NDArray[np.float64],
+    amax: NDArray[np.float64],
+    jmax: NDArray[np.float64],
+) -> None:
+    """Lower `sigma` (N,) in place: waypoint i's speeds sigma[i] * w[i] (N, dof) reachable from
+    waypoint i-1's and brakeable to waypoint i+1's within `dist` (N-1, dof), joint by joint
+    (`max_speed_change`).
+
+    Jacobi rounds of both neighbour constraints, vectorised over waypoints (faster here than
+    sequential passes: numpy's per-call cost dominates 6-element arrays); a constraint
+    travels one waypoint per round, so N rounds always suffice, typically far fewer. The
+    bound is a heuristic (ruckig checks each segment), so rounds stop once no scale drops
+    by more than 0.1 %."""
+    moving = w > 0.0
+    inv = 1.0 / np.where(moving, w, 1.0)
+    for _ in range(w.shape[0]):
+        s = sigma[:, None] * w
+        fwd = max_speed_change(s[:-1], dist, amax, jmax) * inv[1:]
+        bwd = max_speed_change(s[1:], dist, amax, jmax) * inv[:-1]
+        new = sigma.copy()
+        new[1:] = np.minimum(new[1:], np.min(np.where(moving[1:], fwd, np.inf), axis=1))
+        new[:-1] = np.minimum(new[:-1], np.min(np.where(moving[:-1], bwd, np.inf), axis=1))
+        done = np.all(new >= sigma * (1.0 - 1e-3))
+        sigma[:] = new
+        if done:
+            break
 
 
 class _SegmentSolver:
@@ -193,15 +274,25 @@ class _SegmentSolver:
             result = self.otg.calculate(inp, traj)
         except (RuntimeError, ruckig.RuckigError) as exc:  # validate_input raises on bad input
             return None, f"ruckig error: {exc}"
+        except ValueError as exc:  # a result code the binding has no name for
+            code = str(exc).split(" ", 1)[0]
+            if not code.lstrip("-").isdigit():
+                raise
+            return None, ruckig_cause(int(code))
         if result not in (ruckig.Result.Working, ruckig.Result.Finished):
-            return None, f"ruckig returned {result.name}"
+            return None, ruckig_cause(int(result.value))
         if not np.isfinite(traj.duration):
             return None, "ruckig returned a non-finite duration"
         lo, hi = np.minimum(q0, q1), np.maximum(q0, q1)
         tol = _BOX_TOL * np.maximum(1.0, np.abs(hi))
         for j, b in enumerate(traj.position_extrema):
             if b.min < lo[j] - tol[j] or b.max > hi[j] + tol[j]:
-                return None, f"joint {j + 1} overshoots its waypoints ({b.min:.6g}..{b.max:.6g})"
+                return None, (
+                    f"joint {j + 1} would overshoot its waypoints ({lo[j]:.10g}..{hi[j]:.10g};"
+                    f" the motion reaches {b.min:.10g}..{b.max:.10g}): the segment is too short "
+                    f"({hi[j] - lo[j]:.3g}) for the joint to stop on its waypoint within its "
+                    "acceleration and jerk limits"
+                )
         return traj, ""
 
 
@@ -210,8 +301,11 @@ def _solve_chain(
     v: NDArray[np.float64],
     vmax_seg: NDArray[np.float64],
     solver: _SegmentSolver,
+    names: list[str] | None = None,
 ) -> tuple[list[ruckig.Trajectory], NDArray[np.float64]]:
-    """Return per-segment trajectories and the waypoint velocities finally used."""
+    """Return per-segment trajectories and the waypoint velocities finally used.
+
+    `names` (one per segment) name each segment in the PlanningError of one that fails."""
     v = v.copy()
     n_seg = q.shape[0] - 1
     segs: list[ruckig.Trajectory | None] = [None] * n_seg
@@ -227,9 +321,11 @@ def _solve_chain(
             v[k] = 0.0  # stop at the start waypoint: the previous segment must end at rest
             k -= 1
         else:
+            where = f"segment {k} (waypoint {k} -> {k + 1})"
+            if names is not None:
+                where = f"{names[k]}, {where}"
             raise PlanningError(
-                f"segment {k} (waypoint {k} -> {k + 1}) has no jerk-limited solution even "
-                f"from rest to rest: {why}"
+                f"{where} has no jerk-limited solution even from rest to rest: {why}"
             )
     return [s for s in segs if s is not None], v
 
@@ -271,6 +367,7 @@ def smooth_joint_path(
     position_limits: ArrayLike | None = None,
     exact_stop: Iterable[int] | None = None,
     dt: float = 0.004,
+    labels: Sequence[str] | None = None,
 ) -> Trajectory:
     """Return a jerk-limited `Trajectory` through joint `waypoints` (N, dof) [rad].
 
@@ -280,6 +377,9 @@ def smooth_joint_path(
     waypoints, the whole motion stays within them. `exact_stop` lists waypoint indices
     where the robot comes to rest. `dt` [s] is the default period of `Trajectory.sample`.
     Consecutive waypoints equal within 1e-9 rad are merged (they share a waypoint time).
+
+    `labels` (N,) name what each waypoint belongs to (e.g. "move 2 (pick)"): a segment that
+    cannot be solved is named by its end waypoint's label, with the cause.
 
     Raises InputError on bad input and PlanningError naming a segment that cannot be solved.
     """
@@ -307,29 +407,18 @@ def smooth_joint_path(
             f"waypoints: all {n_in} waypoints are the same position; give at least two distinct ones"
         )
     q = q_in[keep]
+    names = None
+    if labels is not None:
+        if len(labels) != n_in:
+            raise InputError(f"labels: expected {n_in} (one per waypoint), got {len(labels)}")
+        names = [str(labels[i]) for i in np.flatnonzero(keep)[1:]]  # each segment's end
     vmax_seg = np.broadcast_to(vmax_in, (n_in - 1, dof))[moved]
     stops = np.zeros(q.shape[0], bool)
     np.logical_or.at(stops, group, stops_in)
 
     solver = _SegmentSolver(dof, amax, jmax)
-    # Segment times start at stop-and-go values and are refined from the solved durations
-    # (the tangent velocities depend on them) while the total keeps shrinking.
-    d = np.abs(np.diff(q, axis=0))
-    seg_time = np.max(rest_to_rest_time(d, vmax_seg, amax, jmax), axis=1)
-    best: tuple[float, list[ruckig.Trajectory], NDArray[np.float64]] | None = None
-    for _ in range(MAX_PASSES):
-        v = _flow_velocities(q, seg_time, vmax_seg, amax, jmax, stops)
-        segs, v_used = _solve_chain(q, v, vmax_seg, solver)
-        durations = np.array([s.duration for s in segs])
-        total = float(durations.sum())
-        if best is not None and total > best[0] * (1.0 - PASS_GAIN):
-            if total < best[0]:
-                best = (total, segs, v_used)
-            break
-        best = (total, segs, v_used)
-        seg_time = np.maximum(durations, 1e-9)
-    assert best is not None
-    _, segs, v_used = best
+    v = _flow_velocities(q, vmax_seg, amax, jmax, stops)
+    segs, v_used = _solve_chain(q, v, vmax_seg, solver, names)
     durations = np.array([s.duration for s in segs])
     starts = np.concatenate([[0.0], np.cumsum(durations)])
     table = _piece_table(segs, starts[:-1], dof)
