@@ -3,21 +3,25 @@
 from __future__ import annotations
 
 import logging
+import os
 import socket
 import threading
 import time
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import viser
 
-from workbench.errors import ServerError
-from workbench.gui import uploads
+from workbench.errors import ServerError, WorkbenchError
+from workbench.gui import jobs as gui_jobs
+from workbench.gui import project_upload, uploads
 from workbench.gui.assembly_panel import AssemblyPanel
 from workbench.gui.bending_panel import BendingPanel
 from workbench.gui.collision_panel import CollisionPanel
 from workbench.gui.jog_panel import JogPanel
 from workbench.gui.motion_panel import MotionPanel
+from workbench.gui.picker import Picker
 from workbench.gui.polishing_panel import PolishingPanel
 from workbench.gui.project_panel import ProjectPanel
 from workbench.gui.scene import RobotScene
@@ -32,19 +36,28 @@ from workbench.gui.server_guard import (
 from workbench.gui.timeline import Timeline
 from workbench.service import Workbench
 from workbench.service.memory import release_memory
+from workbench.service.project_files import open_into
 
 log = logging.getLogger("workbench.gui")
 
 
 def ensure_port_free(host: str, port: int) -> None:
-    """Raise ServerError when `host:port` cannot be bound (viser would silently move on)."""
+    """Raise ServerError when `host:port` cannot be bound (viser would silently move on).
+
+    The probe sets SO_REUSEADDR, as the server's own socket does (asyncio on POSIX): a port
+    with only TIME-WAIT connections of a server just stopped is free, a port another program
+    listens on is not.
+    """
     if not 0 < port < 65536:
         raise ServerError(f"--port: {port} is not a valid port (1..65535)")
     with socket.socket(
         socket.AF_INET6 if ":" in host else socket.AF_INET, socket.SOCK_STREAM
     ) as sock:
+        if os.name == "posix":  # on Windows SO_REUSEADDR would let two servers share a port
+            sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         try:
             sock.bind((host, port))
+            sock.listen(1)  # bind alone succeeds beside a listener that also set SO_REUSEADDR
         except OSError as exc:
             raise ServerError(
                 f"cannot listen on {host}:{port}: {exc.strerror}. Stop the other program using"
@@ -89,18 +102,40 @@ def start_server(
 
 
 class WorkbenchApp:
-    """Scene and panels of one workbench on one server; rebuilt when the project is replaced."""
+    """Scene and panels of one workbench on one server; rebuilt when the project is replaced.
 
-    def __init__(self, server: viser.ViserServer, wb: Workbench) -> None:
+    Every page shows the same session. Long jobs and project loads go through `jobs` (one at
+    a time; the banner on top shows the running one). `picker` (a server started without a
+    project) shows the example projects to open instead of the tabs. "Save as" writes in
+    `save_folder` (default: the working folder).
+    """
+
+    def __init__(
+        self,
+        server: viser.ViserServer,
+        wb: Workbench,
+        *,
+        picker: bool = False,
+        save_folder: str | Path | None = None,
+    ) -> None:
         self.server = server
         self.wb = wb
         self.lock = threading.RLock()
+        self.jobs = gui_jobs.of(server)
+        self.save_folder = Path(save_folder if save_folder is not None else Path.cwd()).resolve()
+        self.allowed = tuple(wb.folders.allowed)  # the folders allowed at start (--allow-dir)
+        self.upload_root: Path | None = None  # the folder of the uploaded project in use
         server.scene.set_up_direction("+z")
         server.scene.add_grid(
             "/grid", width=3.0, height=3.0, cell_size=0.1, plane="xy", position=(0.0, 0.0, 0.0005)
         )
         server.gui.configure_theme(control_width="large", dark_mode=False)
-        self.tabs = server.gui.add_tab_group()
+        self.banner = server.gui.add_markdown("", visible=False)
+        self.jobs.attach(self.banner)
+        self.picker: Picker | None = None
+        if picker:
+            self.picker = Picker(server, lambda ex, event: self.project_panel.open(ex, event))
+        self.tabs = server.gui.add_tab_group(visible=not picker)
         self.robot_tab = self.tabs.add_tab("Robot")
         self.motion_tab = self.tabs.add_tab("Motion")
         self.bending_tab = self.tabs.add_tab("Bending")
@@ -109,42 +144,85 @@ class WorkbenchApp:
         self.project_tab = self.tabs.add_tab("Project")
         self.scene = RobotScene(server, wb)
         self.timeline = Timeline(server, show=self.scene.show)
-        with self.robot_tab:
-            self.jog = JogPanel(server, wb, on_moved=self.scene.update)
-        with self.motion_tab:
-            self.motion = MotionPanel(server, wb, self.timeline, on_replaced=self.rebuild)
-        self._build_workflows()
+        self._build_panels()
         with self.project_tab:
-            self.project_panel = ProjectPanel(server, wb, on_replaced=self.rebuild)
+            self.project_panel = ProjectPanel(self)
+
+    def _build_panels(self) -> None:
+        with self.robot_tab:
+            self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
+        with self.motion_tab:
+            self.motion = MotionPanel(self.server, self.wb, self.timeline, on_replaced=self.rebuild)
+        self._build_workflows()
 
     def _build_workflows(self) -> None:
         with self.robot_tab:
-            self.collision = CollisionPanel(self)
+            self.collision = self._panel(CollisionPanel, "Collision")
         with self.bending_tab:
-            self.bending = BendingPanel(self)
+            self.bending = self._panel(BendingPanel, "Bending")
         with self.assembly_tab:
-            self.assembly = AssemblyPanel(self)
+            self.assembly = self._panel(AssemblyPanel, "Assembly")
         with self.polishing_tab:
-            self.polishing = PolishingPanel(self)
+            self.polishing = self._panel(PolishingPanel, "Polishing")
+
+    def _panel(self, cls: type, name: str) -> Any:
+        """Build panel `cls`; one that fails shows its error in its tab, the others still build."""
+        try:
+            return cls(self)
+        except WorkbenchError as exc:
+            return _FailedPanel(self.server, f"**{name}: cannot show this section:** {exc}")
+
+    # -- switching projects -------------------------------------------------------------------
+    def open_file(self, path: Path, *, allowed: tuple[Path, ...] = ()) -> None:
+        """Open the project file `path` (Busy while a job runs; on errors nothing changes)."""
+        with self.jobs.job("loading a project"):
+            open_into(self.wb, path, allowed=(*self.allowed, *allowed))
+            self._replaced(None)
+
+    def open_upload(self, json_path: Path, root: Path) -> None:
+        """Open an uploaded project unpacked in `root` (it gets no file: Save needs a name)."""
+        with self.jobs.job("loading a project"):
+            open_into(self.wb, json_path, allowed=(*self.allowed, root), unsaved=True)
+            self._replaced(root)
+
+    def _replaced(self, upload_root: Path | None) -> None:
+        old, self.upload_root = self.upload_root, upload_root
+        if old is not None and old != upload_root:
+            project_upload.remove_folder(old)
+        if self.picker is not None:
+            self.picker.remove()
+            self.picker = None
+            self.tabs.visible = True
+        self.rebuild()
 
     def rebuild(self) -> None:
-        """Recreate the scene and jog panel after the workbench switched projects."""
-        with self.lock:
-            self.timeline.pause()
+        """Recreate the scene and every panel after the workbench switched projects.
+
+        Runs as a job (Busy while another job runs, so no running job loses its widgets); the
+        timeline drops the previous project's motion.
+        """
+        with self.jobs.job("rebuilding the tabs"), self.lock:
+            self.timeline.clear()
             self.jog.remove()
             self.motion.remove()
             for panel in (self.collision, self.bending, self.assembly, self.polishing):
                 panel.remove()
             self.scene.clear()
             self.scene.build()
-            with self.robot_tab:
-                self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
-            with self.motion_tab:
-                self.motion = MotionPanel(
-                    self.server, self.wb, self.timeline, on_replaced=self.rebuild
-                )
-            self._build_workflows()
+            self._build_panels()
+            if hasattr(self, "project_panel"):
+                self.project_panel.refresh()
         release_memory()  # the replaced project's memory back to the OS
+
+
+class _FailedPanel:
+    """What a tab shows when its panel could not be built (the project's section is unusable)."""
+
+    def __init__(self, server: viser.ViserServer, text: str) -> None:
+        self.note = server.gui.add_markdown(text)
+
+    def remove(self) -> None:
+        self.note.remove()
 
 
 def serve(
@@ -170,13 +248,14 @@ def serve(
     )
     if project is not None:
         wb = Workbench.open(project, allowed_dirs=list(allowed_dirs))
-    else:
-        wb = Workbench.from_dict({"schema_version": 1})
+    else:  # the page opens on the project picker (examples and upload)
+        wb = Workbench.from_dict({"schema_version": 1, "name": "no project"})
         wb.folders = wb.folders.with_allowed(*allowed_dirs)
     server = start_server(host, port, access=access)
-    WorkbenchApp(server, wb)
+    WorkbenchApp(server, wb, picker=project is None)
     shown = "localhost" if host in ("127.0.0.1", "0.0.0.0", "::") else host
-    print(f"workbench: serving {wb.project.name!r} on {access.url(shown, port)}", flush=True)
+    what = repr(wb.project.name) if project is not None else "the project picker"
+    print(f"workbench: serving {what} on {access.url(shown, port)}", flush=True)
     if not is_loopback(host):
         print(
             f"workbench: WARNING: listening on {host}: anyone who has this URL can edit the"

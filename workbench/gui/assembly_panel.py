@@ -3,17 +3,19 @@
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import viser
 
+from workbench.errors import InputError
 from workbench.geometry.transforms import (
     make_transform,
     matrix_to_rpy,
     wxyz_to_matrix,
     xyz_rpy_to_transform,
 )
+from workbench.gui.fields import NumberField, schema_range
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
@@ -72,16 +74,43 @@ class AssemblyPanel:
             hint="ant, rrt_connect: the part's pose (the robot follows by IK); "
             "joint_rrt_connect: the carrying robot's joints, robot and part checked",
         )
-        self.cell = g.add_number(
-            "Cell size [mm]",
-            float(spec.planner.cell_size or 0.0),
-            step=0.1,
-            hint="Side of the subdivision cells and the motion-check spacing; 0: 1/20 of the part",
-        )
-        self.step = g.add_number("Step (ant)", int(spec.planner.step), min=1, step=1)
-        self.dis = g.add_number(
-            "dis (ant) [mm]", float(spec.planner.dis or 0.0), step=0.5, hint="0: automatic"
-        )
+        # The planner's numbers live in the section (assembly.planner, mm): the fields show
+        # and set them there, checked by the project's bounds; 0 means automatic (None).
+
+        def planner_spec() -> Any:
+            return self.wb.assembly.spec.planner
+
+        self.planner_fields = [
+            NumberField(
+                s,
+                "Cell size [mm]",
+                get=lambda: float(planner_spec().cell_size or 0.0),
+                put=lambda v: self._set_planner("cell_size", None if v == 0 else v),
+                allowed=lambda: (
+                    "0 (automatic: 1/20 of the part) or "
+                    + schema_range(planner_spec(), "cell_size", "mm")
+                ),
+                hint="Side of the subdivision cells and the motion-check spacing;"
+                " 0: automatic (1/20 of the part)",
+            ),
+            NumberField(
+                s,
+                "Step (ant)",
+                get=lambda: float(planner_spec().step),
+                put=lambda v: self._set_planner("step", int(v)),
+                allowed=lambda: schema_range(planner_spec(), "step", "segments"),
+                integer=True,
+            ),
+            NumberField(
+                s,
+                "dis (ant) [mm]",
+                get=lambda: float(planner_spec().dis or 0.0),
+                put=lambda v: self._set_planner("dis", None if v == 0 else v),
+                allowed=lambda: "0 (automatic) or " + schema_range(planner_spec(), "dis", "mm"),
+                hint="grid spacing on a cutting plane; 0: automatic",
+            ),
+        ]
+        self.cell, self.step, self.dis = (f.text for f in self.planner_fields)
         self.plan_button = g.add_button("Plan part", icon=viser.Icon.ROUTE)
         self.sequence_button = g.add_button("Plan sequence", icon=viser.Icon.LIST_NUMBERS)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
@@ -108,9 +137,7 @@ class AssemblyPanel:
             self.goal_rpy,
             self.status,
             self.planner,
-            self.cell,
-            self.step,
-            self.dis,
+            *(h for f in self.planner_fields for h in f.handles),
             self.plan_button,
             self.sequence_button,
             self.progress,
@@ -180,6 +207,8 @@ class AssemblyPanel:
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
+        for f in getattr(self, "planner_fields", ()):
+            f.remove()
         for h in (*self.handles, *self.nodes):
             h.remove()
         for extra in (getattr(self, "curve", None), getattr(self, "keys", None)):
@@ -249,8 +278,21 @@ class AssemblyPanel:
 
     # -- callbacks --------------------------------------------------------------------------------
     def _set_pose(self, name: str, which: str, T: np.ndarray) -> None:
-        self.wb.assembly.set_pose(name, which, T)
-        self._show_poses(name)
+        try:
+            self.wb.assembly.set_pose(name, which, T)
+        finally:
+            self._show_poses(name)  # the pose in use, also when refused
+
+    def _set_planner(self, field: str, value: float | None) -> None:
+        """Set assembly.planner.`field` [mm or count]; the section's bounds refuse it otherwise."""
+        planner = self.wb.assembly.spec.planner
+        try:
+            setattr(planner, field, value)  # validated on assignment (the project's bounds)
+        except ValueError as exc:  # pydantic's ValidationError: say it as the file would
+            detail = "; ".join(str(e.get("msg", e)) for e in getattr(exc, "errors", list)())
+            raise InputError(
+                f"assembly.planner.{field}: {detail or exc}".replace("Value error, ", "")
+            ) from None
 
     def _on_typed(self, which: str) -> None:
         if self._syncing:
@@ -270,21 +312,23 @@ class AssemblyPanel:
 
     def _options(self) -> dict[str, object]:
         planner = str(self.planner.value)
+        spec = self.wb.assembly.spec.planner  # the values the fields show
         opts: dict[str, object] = {}
-        cell = float(self.cell.value)
-        if cell != 0.0 or self.wb.assembly.spec.planner.cell_size is not None:
-            opts["cell_size"] = cell * MM  # 0 or too large: the service says what is allowed
+        if spec.cell_size is not None:
+            opts["cell_size"] = spec.cell_size * MM
         if planner == "ant":
-            opts["step"] = int(self.step.value)
-            if float(self.dis.value) > 0:
-                opts["dis"] = float(self.dis.value) * MM
+            opts["step"] = int(spec.step)
+            if spec.dis is not None:
+                opts["dis"] = spec.dis * MM
         return opts
 
     def _on_plan(self, event: viser.GuiEvent, *, one: bool) -> None:
         name = str(self.part.value)
         buttons = [self.plan_button, self.sequence_button]
         try:
-            with busy(self.progress, buttons, self.result) as progress:
+            with busy(
+                self.progress, buttons, self.result, what="planning the assembly"
+            ) as progress:
                 plan = self.wb.assembly.plan_sequence(
                     [name] if one else None,
                     str(self.planner.value),

@@ -11,8 +11,9 @@ import viser
 import viser.uplot as uplot
 from numpy.typing import NDArray
 
-from workbench.errors import WorkbenchError
+from workbench.errors import InputError, WorkbenchError
 from workbench.geometry.transforms import make_transform
+from workbench.gui.fields import NumberField, format_number
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 from workbench.gui.progress import busy
@@ -63,15 +64,37 @@ class BendingPanel:
             "Sequence", ",".join(svc.sequence), hint="Bend names in order, comma-separated"
         )
         self.apply_sequence = g.add_button("Apply sequence", icon=viser.Icon.ARROWS_SORT)
-        self.step = g.add_slider(
-            "Fold step", min=0.0, max=float(nb), step=0.05, initial_value=float(nb)
+        self._step = float(nb)  # the fold step shown [bends]
+        self.step_field = NumberField(
+            s,
+            "Fold step",
+            get=lambda: self._step,
+            put=self._set_step,
+            allowed=lambda: f"[0, {len(self.app.wb.bending.part.bends)}] bends",
+            changed=self.redraw,
+            slider=(0.0, float(nb), 0.05),
+            hint="bends folded so far (fractions fold partway)",
         )
+        self.step = self.step_field.slider
         self.animate = g.add_button("Animate folds", icon=viser.Icon.PLAYER_PLAY)
         flanges = tuple(f.name for f in part.flanges)
         self.grasp = g.add_dropdown("Grasp flange", options=flanges, initial_value=svc.grasp_flange)
-        off = svc.grasp_offset() * MM_PER_M
-        self.offset_x = g.add_number("Grasp x [mm]", initial_value=round(float(off[0]), 1), step=1)
-        self.offset_y = g.add_number("Grasp y [mm]", initial_value=round(float(off[1]), 1), step=1)
+        self.offset_fields = [
+            NumberField(
+                s,
+                f"Grasp {axis} [mm]",
+                get=lambda i=i: float(self.app.wb.bending.grasp_offset()[i] * MM_PER_M),
+                put=lambda v, i=i: self._set_offset(i, v),
+                allowed=lambda: (
+                    f"a point on flange '{self.app.wb.bending.grasp_flange}'"
+                    " (its polygon frame) [mm]"
+                ),
+                changed=self._reset,
+                decimals=2,
+            )
+            for i, axis in enumerate("xy")
+        ]
+        self.offset_x, self.offset_y = (f.text for f in self.offset_fields)
         self.levels = []
         depth = svc.tree_depth()
         with g.add_folder("OBB tree levels"):
@@ -89,11 +112,10 @@ class BendingPanel:
             self.info,
             self.sequence,
             self.apply_sequence,
-            self.step,
+            *self.step_field.handles,
             self.animate,
             self.grasp,
-            self.offset_x,
-            self.offset_y,
+            *(h for f in self.offset_fields for h in f.handles),
             *self.levels,
             self.tree_info,
             self.plan_button,
@@ -102,11 +124,9 @@ class BendingPanel:
             self.plot_folder,
         ]
         self.apply_sequence.on_click(guarded(s, "Bend sequence")(self._on_sequence))
-        self.step.on_update(guarded(s, "Fold step")(lambda _: self.redraw()))
+        self.step.on_update(guarded(s, "Fold step")(self._on_step_set))
         self.animate.on_click(guarded(s, "Animate")(self._on_animate))
         self.grasp.on_update(guarded(s, "Grasp")(self._on_grasp_flange))
-        self.offset_x.on_update(guarded(s, "Grasp offset")(self._on_grasp_offset))
-        self.offset_y.on_update(guarded(s, "Grasp offset")(self._on_grasp_offset))
         self.plan_button.on_click(guarded(s, "Plan bending")(self._on_plan))
         self.part_frame = s.scene.add_frame("/bending/part", show_axes=False)
         self.grasp_frame = s.scene.add_frame("/bending/part/obb", show_axes=False)
@@ -156,7 +176,7 @@ class BendingPanel:
         with self._lock:
             svc = self.app.wb.bending
             nb = len(svc.part.bends)
-            step = float(np.clip(self.step.value, 0.0, nb))
+            step = float(np.clip(self._step, 0.0, nb))
             state = svc.fold(step)
             k = svc.bend_on_die(step)
             mesh = state.solid()
@@ -239,26 +259,35 @@ class BendingPanel:
 
     def _on_grasp_flange(self, event: viser.GuiEvent) -> None:
         svc = self.app.wb.bending
-        svc.set_grasp(str(self.grasp.value))
-        off = svc.grasp_offset() * MM_PER_M
-        self._reset()
-        self._set_offset_widgets(off)
-
-    def _set_offset_widgets(self, off: NDArray[np.float64]) -> None:
-        self._quiet = True
-        try:
-            self.offset_x.value = round(float(off[0]), 1)  # type: ignore[misc]
-            self.offset_y.value = round(float(off[1]), 1)  # type: ignore[misc]
-        finally:
-            self._quiet = False
-
-    def _on_grasp_offset(self, event: viser.GuiEvent) -> None:
-        if self._quiet:
+        if event.client is None or self.grasp.value == svc.grasp_flange:
             return
-        svc = self.app.wb.bending
-        off = np.array([float(self.offset_x.value), float(self.offset_y.value)]) / MM_PER_M
-        svc.set_grasp(svc.grasp_flange, off)
+        try:
+            svc.set_grasp(str(self.grasp.value))
+        finally:
+            self.grasp.value = svc.grasp_flange  # type: ignore[misc]  # the flange in use
+            for f in self.offset_fields:
+                f.refresh()
         self._reset()
+
+    def _set_offset(self, i: int, value_mm: float) -> None:
+        """Move the grasp point's coordinate i (0: x, 1: y) [mm]; the service refuses off the flange."""
+        svc = self.app.wb.bending
+        off = np.array(svc.grasp_offset(), float)
+        off[i] = value_mm / MM_PER_M
+        svc.set_grasp(svc.grasp_flange, off)
+
+    def _set_step(self, v: float) -> None:
+        nb = len(self.app.wb.bending.part.bends)
+        if not 0.0 <= v <= nb:
+            raise InputError(f"Fold step: {format_number(v)} is outside [0, {nb}] bends")
+        self._step = v
+
+    def _on_step_set(self, event: Any) -> None:
+        if event.client is not None:
+            return  # the field commits what a page sends (or refuses it)
+        self._step = float(self.step.value)  # animation and Plan move the slider from here
+        self.step_field.refresh()
+        self.redraw()
 
     def _on_animate(self, event: viser.GuiEvent) -> None:
         if self._animating.is_set():
@@ -279,7 +308,9 @@ class BendingPanel:
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
         svc = self.app.wb.bending
-        with busy(self.progress, [self.plan_button], self.result) as progress:
+        with busy(
+            self.progress, [self.plan_button], self.result, what="planning the bending"
+        ) as progress:
             plan = svc.plan(progress=progress)
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()

@@ -83,7 +83,9 @@ class MotionPanel:
         self.plan_button.disabled = False
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
-        with busy(self.progress, [self.plan_button], self.result) as progress:
+        with busy(
+            self.progress, [self.plan_button], self.result, what="planning motion"
+        ) as progress:
             plan = self.wb.plan_motion(progress=progress)
         self.result.content = ("**OK:** " if plan.ok else "**Problems:** ") + plan.summary()
         self.download.disabled = False

@@ -11,6 +11,7 @@ from typing import Any, TypeVar
 import viser
 
 from workbench.errors import WorkbenchError
+from workbench.gui.jobs import callback_scope
 
 log = logging.getLogger("workbench.gui")
 F = TypeVar("F", bound=Callable[..., Any])
@@ -44,7 +45,8 @@ def guarded(server: viser.ViserServer, title: str) -> Callable[[F], F]:
         def inner(event: Any) -> Any:
             client = getattr(event, "client", None)
             try:
-                return func(event)
+                with callback_scope():  # a job it starts is kept until it returns (jobs.py)
+                    return func(event)
             except WorkbenchError as exc:
                 log.info("%s: %s", title, exc)
                 notify(server, client, title, str(exc))

@@ -13,6 +13,7 @@ import viser.uplot as uplot
 from numpy.typing import NDArray
 
 from workbench.errors import InputError, WorkbenchError
+from workbench.gui.fields import NumberField, format_number, schema_range
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
@@ -53,6 +54,8 @@ class PolishingPanel:
         self.handles: list[Removable] = []
         self.nodes: dict[str, Removable] = {}
         self.plots: list[Removable] = []
+        self.fields: list[NumberField] = []
+        self._motion: Any = None  # the samples this tab put on the timeline
         g = app.server.gui
         if app.wb.project.polishing is None:
             self.handles.append(g.add_markdown("This project has no `polishing` section."))
@@ -72,20 +75,53 @@ class PolishingPanel:
         self.pattern = g.add_dropdown(
             "Pattern", options=self.svc.patterns, initial_value=spec.pattern
         )
-        self.step = g.add_slider("Step [mm]", min=0.5, max=20.0, step=0.5, initial_value=spec.step)
-        self.spacing = g.add_slider(
-            "Spacing [mm]", min=2.0, max=60.0, step=1.0, initial_value=spec.spacing
-        )
-        self.force = g.add_slider(
-            "Force [N]", min=1.0, max=float(spec.max_force), step=1.0, initial_value=spec.force
-        )
-        self.feed = g.add_slider(
-            "Feed [mm/s]",
-            min=1.0,
-            max=float(min(200.0, spec.controller.max_speed)),
-            step=1.0,
-            initial_value=spec.feed,
-        )
+        # Path and process values: typed, set through the service, shown from its section.
+        s = app.server
+        self.fields = [
+            NumberField(
+                s,
+                "Step [mm]",
+                get=lambda: float(self.svc.spec.step),
+                put=lambda v: self.svc.set_parameters(step=v * MM),
+                allowed=lambda: (
+                    schema_range(self.svc.spec, "step", "mm") + ", below the workpiece's size"
+                ),
+                changed=self._clear_results,
+            ),
+            NumberField(
+                s,
+                "Spacing [mm]",
+                get=lambda: float(self.svc.spec.spacing),
+                put=lambda v: self.svc.set_parameters(spacing=v * MM),
+                allowed=lambda: (
+                    schema_range(self.svc.spec, "spacing", "mm") + ", below the workpiece's size"
+                ),
+                changed=self._clear_results,
+            ),
+            NumberField(
+                s,
+                "Force [N]",
+                get=lambda: float(self.svc.spec.force),
+                put=lambda v: self.svc.set_parameters(force=v),
+                allowed=lambda: (
+                    f"[0.001, {format_number(self.svc.spec.max_force)}] N (the tool's max_force)"
+                ),
+                changed=self._clear_results,
+            ),
+            NumberField(
+                s,
+                "Feed [mm/s]",
+                get=lambda: float(self.svc.spec.feed),
+                put=lambda v: self.svc.set_parameters(feed=v * MM),
+                allowed=lambda: (
+                    schema_range(self.svc.spec, "feed", "mm/s")
+                    + f", at most the controller's {format_number(self.svc.spec.controller.max_speed)}"
+                    " mm/s"
+                ),
+                changed=self._clear_results,
+            ),
+        ]
+        self.step, self.spacing, self.force, self.feed = (f.text for f in self.fields)
         self.plan_button = g.add_button("Plan path", icon=viser.Icon.ROUTE)
         self.sim_button = g.add_button("Simulate", icon=viser.Icon.PLAYER_PLAY, disabled=True)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
@@ -101,10 +137,6 @@ class PolishingPanel:
             self.upload,
             self.units,
             self.pattern,
-            self.step,
-            self.spacing,
-            self.force,
-            self.feed,
             self.plan_button,
             self.sim_button,
             self.progress,
@@ -115,8 +147,7 @@ class PolishingPanel:
             self.plot_folder,
         ]
         self.upload.on_upload(guard(self._on_upload))
-        for h in (self.pattern, self.step, self.spacing, self.force, self.feed):
-            h.on_update(guard(self._on_parameter))
+        self.pattern.on_update(guard(self._on_parameter))
         self.plan_button.on_click(guard(self._on_plan))
         self.sim_button.on_click(guard(self._on_simulate))
         self.download.on_click(guard(self._on_download))
@@ -230,18 +261,31 @@ class PolishingPanel:
         self.download.disabled = True
 
     def _on_parameter(self, event: viser.GuiEvent) -> None:
-        self.svc.set_parameters(
-            pattern=str(self.pattern.value),
-            step=float(self.step.value) * MM,
-            spacing=float(self.spacing.value) * MM,
-            force=float(self.force.value),
-            feed=float(self.feed.value) * MM,
-        )
+        if event.client is None:
+            return
+        try:
+            self.svc.set_parameters(pattern=str(self.pattern.value))
+        finally:
+            self.pattern.value = self.svc.spec.pattern  # type: ignore[misc]  # the value in use
+        self._clear_results()
+
+    def _clear_results(self) -> None:
+        """Drop what no longer matches the parameters: path, plots, summaries, the timeline's motion."""
+        self._clear_path_nodes()
+        for p in self.plots:
+            p.remove()
+        self.plots = []
+        self.path_info.content = ""
+        self.sim_info.content = ""
         self.sim_button.disabled = True
         self.download.disabled = True
+        if self._motion is not None and self.app.timeline.motion is self._motion:
+            self.app.timeline.clear()
+        self._motion = None
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
-        with busy(self.progress, [self.plan_button, self.sim_button]) as progress:
+        buttons = [self.plan_button, self.sim_button]
+        with busy(self.progress, buttons, what="planning the polishing path") as progress:
             pp = self.svc.plan_path(progress=progress)
         self._show_path(pp)
         self.path_info.content = (
@@ -252,7 +296,8 @@ class PolishingPanel:
         self.sim_button.disabled = False
 
     def _on_simulate(self, event: viser.GuiEvent) -> None:
-        with busy(self.progress, [self.plan_button, self.sim_button]) as progress:
+        buttons = [self.plan_button, self.sim_button]
+        with busy(self.progress, buttons, what="simulating the polishing") as progress:
             motion = self.svc.plan_motion(progress=lambda f, m: progress(0.7 * f, m))
             sim = self.svc.simulate(progress=lambda f, m: progress(0.7 + 0.3 * f, m))
         self._show_plots(sim)
@@ -262,6 +307,7 @@ class PolishingPanel:
         )
         self.download.disabled = False
         robot = self.app.wb.robot
+        self._motion = motion.samples
         self.app.timeline.load(
             motion.samples,
             robot=robot,
@@ -324,6 +370,9 @@ class PolishingPanel:
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
+        for f in self.fields:
+            f.remove()
+        self.fields.clear()
         for h in [*self.plots, *self.nodes.values(), *self.handles]:
             h.remove()
         if getattr(self, "root", None) is not None:

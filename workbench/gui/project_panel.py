@@ -1,60 +1,163 @@
-"""The "Project" tab: upload a project JSON, download the current one, save it on the server."""
+"""The "Project" tab: open an example, upload a project with its files, download, save, save as.
+
+- **Open example**: the example projects (`picker.py`), loaded from their files.
+- **Upload**: a project JSON, a .zip of the JSON and its meshes, or the JSON then each file it
+  names (`project_upload.py`); relative paths resolve in the upload's own folder.
+- **Save** writes the file the project was opened from; an example (`projects/`) is read-only
+  to it, and an uploaded project has no file yet: both need **Save as**.
+- **Save as** writes `name` atomically in the server's working folder (`workbench serve`'s
+  current folder); an existing file is replaced only with **Overwrite** ticked.
+
+Every load runs as the session's job: refused with "busy: ..." while a plan runs.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 import viser
 
-from workbench.errors import ProjectError
+from workbench.errors import InputError
+from workbench.gui import project_upload
 from workbench.gui.notify import guarded, notify
-from workbench.service import Workbench
+from workbench.gui.picker import Example, examples, is_example
+from workbench.service.project_files import save_as, save_target
+
+if TYPE_CHECKING:
+    from workbench.gui.app import WorkbenchApp
 
 
 class ProjectPanel:
-    """Upload / download / save of the whole project; `on_replaced` rebuilds the scene."""
+    """Open / upload / download / save of the whole project; loads go through `app.open_project`."""
 
-    def __init__(
-        self, server: viser.ViserServer, wb: Workbench, on_replaced: Callable[[], None]
-    ) -> None:
-        s = server
-        self.server, self.wb, self.on_replaced = server, wb, on_replaced
-        self.info = s.gui.add_markdown("")
-        self.upload = s.gui.add_upload_button(
-            "Load project JSON", icon=None, mime_type="application/json"
+    def __init__(self, app: WorkbenchApp) -> None:
+        self.app = app
+        s = self.server = app.server
+        g = s.gui
+        self.staged: project_upload.Staged | None = None
+        self.info = g.add_markdown("")
+        self.examples = examples()
+        titles = [f"{e.title} ({e.path.name})" for e in self.examples] or ["(no examples found)"]
+        self.example = g.add_dropdown("Example", options=tuple(titles), initial_value=titles[0])
+        self.open_example = g.add_button("Open example", disabled=not self.examples)
+        self.upload = g.add_upload_button(
+            "Upload project or its files",
+            icon=viser.Icon.UPLOAD,
+            hint="A project .json, a .zip of the project and its meshes, or (after a .json)"
+            " each file it names",
         )
-        self.download = s.gui.add_button("Download project JSON")
-        self.save = s.gui.add_button(
-            "Save on server",
-            disabled=wb.path is None,
-            hint="Write the project back to its file (atomic)",
-        )
+        self.pending = g.add_markdown("")
+        self.download = g.add_button("Download project JSON", icon=viser.Icon.DOWNLOAD)
+        self.save = g.add_button("Save", icon=viser.Icon.DEVICE_FLOPPY)
+        with g.add_folder("Save as", expand_by_default=True):
+            self.name = g.add_text(
+                "File name", initial_value="", hint="saved in the working folder"
+            )
+            self.overwrite = g.add_checkbox("Overwrite", initial_value=False)
+            self.save_as = g.add_button("Save as")
+        self.open_example.on_click(guarded(s, "Open example")(self._on_open_example))
         self.upload.on_upload(guarded(s, "Load project")(self._on_upload))
         self.download.on_click(guarded(s, "Download project")(self._on_download))
         self.save.on_click(guarded(s, "Save project")(self._on_save))
+        self.save_as.on_click(guarded(s, "Save as")(self._on_save_as))
         self.refresh()
 
+    @property
+    def wb(self):  # type: ignore[no-untyped-def]  # the app's workbench (one per server)
+        return self.app.wb
+
+    @property
+    def folder(self) -> Path:
+        """Return the folder "Save as" writes to: the server's working folder."""
+        return self.app.save_folder
+
     def refresh(self) -> None:
-        """Show the project's name and file."""
+        """Show the project's name, its file and where Save and Save as write."""
         wb = self.wb
-        where = f"`{wb.path}`" if wb.path else "not saved to a file"
-        self.info.content = f"**{wb.project.name}**  \n{where}"
+        if wb.path is None:
+            where = "not saved to a file yet: **Save as** gives it a name"
+        elif is_example(wb.path):
+            where = f"`{wb.path}` (an example: read-only to Save, use **Save as**)"
+        else:
+            where = f"`{wb.path}`"
+        self.info.content = f"**{wb.project.name}**  \n{where}  \nSave as writes in `{self.folder}`"
+        self.save.disabled = wb.path is None or is_example(wb.path)
+        self.save.label = f"Save to {wb.path.name}" if wb.path is not None else "Save"
+        self.pending.content = self.staged.describe() if self.staged is not None else ""
+
+    # -- loading --------------------------------------------------------------------------
+    def _on_open_example(self, event: viser.GuiEvent) -> None:
+        titles = list(self.example.options)
+        ex = self.examples[titles.index(str(self.example.value))]
+        self.open(ex, event)
+
+    def open(self, ex: Example, event: viser.GuiEvent | None) -> None:
+        """Open example `ex` from its file (its meshes' folder allowed)."""
+        self.app.open_file(ex.path, allowed=ex.allowed)
+        self._drop_staged()
+        notify(
+            self.server,
+            _client(event),
+            "Project loaded",
+            f"{ex.path.name}: {ex.title}",
+            color="green",
+        )
 
     def _on_upload(self, event: viser.GuiEvent) -> None:
         file = self.upload.value
-        if not file.name.lower().endswith(".json"):
-            raise ProjectError(f"{file.name}: expected a .json project file")
-        project = self.wb.replace_from_json(file.content, source=file.name)
-        self.on_replaced()
-        self.refresh()
+        name = file.name.lower()
+        if self.staged is not None and self.staged.wants(file.name):
+            filled = self.staged.add(file.name, file.content)
+            if not self.staged.ready:
+                self.refresh()
+                notify(self.server, event.client, "File added", filled, color="green")
+                return
+            staged = self.staged
+        elif name.endswith(".zip"):
+            staged = self._restage(project_upload.stage_zip(file.name, file.content))
+        elif name.endswith(".json"):
+            staged = self._restage(project_upload.stage_json(file.name, file.content))
+        elif self.staged is not None:
+            self.staged.add(file.name, file.content)  # raises: says which files it waits for
+            return
+        else:
+            raise InputError(
+                f"upload: {file.name}: expected a project (.json or .zip); upload a mesh after"
+                " the project that names it"
+            )
+        if not staged.ready:
+            self.refresh()
+            notify(
+                self.server, event.client, "Project needs files", staged.describe(), color="yellow"
+            )
+            return
+        self.staged = None
+        try:
+            self.app.open_upload(staged.json_path, staged.root)
+        except BaseException:
+            project_upload.remove_folder(staged.root)
+            self.refresh()
+            raise
         notify(
             self.server,
             event.client,
             "Project loaded",
-            f"{file.name}: {project.name}",
+            f"{file.name}: {staged.name}",
             color="green",
         )
 
+    def _restage(self, staged: project_upload.Staged) -> project_upload.Staged:
+        self._drop_staged()
+        self.staged = staged
+        return staged
+
+    def _drop_staged(self) -> None:
+        if self.staged is not None:
+            project_upload.remove_folder(self.staged.root)
+            self.staged = None
+
+    # -- saving ---------------------------------------------------------------------------
     def _on_download(self, event: viser.GuiEvent) -> None:
         if event.client is None:
             return
@@ -62,5 +165,49 @@ class ProjectPanel:
         event.client.send_file_download(name, self.wb.to_json().encode(), save_immediately=True)
 
     def _on_save(self, event: viser.GuiEvent) -> None:
-        path = self.wb.save()
+        wb = self.wb
+        if wb.path is None:
+            raise InputError("save: this project was uploaded and has no file; use Save as")
+        if is_example(wb.path):
+            raise InputError(
+                f"save: {wb.path.name} is an example (read-only to Save); use Save as with a"
+                " new name"
+            )
+        with self.app.jobs.job("saving the project"):
+            path = wb.save()
         notify(self.server, event.client, "Saved", str(path), color="green")
+
+    def _on_save_as(self, event: viser.GuiEvent) -> None:
+        target = save_target(self.folder, str(self.name.value))
+        with self.app.jobs.job("saving the project"):
+            notes = save_as(
+                self.wb,
+                target,
+                overwrite=bool(self.overwrite.value),
+                temporary=self.app.upload_root,
+            )
+        self.overwrite.value = False
+        self.refresh()
+        body = str(target) + "".join(f"\n- {n}" for n in notes)
+        notify(self.server, event.client, "Saved", body, color="yellow" if notes else "green")
+
+    def remove(self) -> None:
+        """Remove the tab's widgets and any upload still waiting for files."""
+        self._drop_staged()
+        for h in (
+            self.info,
+            self.example,
+            self.open_example,
+            self.upload,
+            self.pending,
+            self.download,
+            self.save,
+            self.name,
+            self.overwrite,
+            self.save_as,
+        ):
+            h.remove()
+
+
+def _client(event: viser.GuiEvent | None) -> viser.ClientHandle | None:
+    return getattr(event, "client", None)

@@ -13,6 +13,8 @@ import viser
 import viser.uplot as uplot
 from numpy.typing import NDArray
 
+from workbench.errors import InputError
+from workbench.gui.fields import NumberField, format_number, hide_slider_boxes
 from workbench.service import SampledMotion
 
 DEG_PER_RAD = 180.0 / np.pi  # display only
@@ -36,19 +38,32 @@ class Timeline:
         self._convention: Any = None
         self._follow: Callable[[float], None] | None = None
         self._plot_folder: viser.GuiFolderHandle | None = None
+        self._t = 0.0  # [s] the time shown: the slider's and the box's value in use
         self._playing = threading.Event()
         self._stop = threading.Event()
         s = server.gui
+        self._style = hide_slider_boxes(server)  # typed numbers go through strict text boxes
         with s.add_folder("Timeline"):
             self.info = s.add_markdown("No motion yet: plan one in a workflow tab.")
             self.play = s.add_button("Play", icon=viser.Icon.PLAYER_PLAY, disabled=True)
-            self.time = s.add_slider(
-                "Time [s]", min=0.0, max=1.0, step=0.01, initial_value=0.0, disabled=True
+            self.time_field = NumberField(
+                server,
+                "Time [s]",
+                get=lambda: self._t,
+                put=self._set_time,
+                allowed=lambda: (
+                    f"[0, {format_number(self.motion.duration)}] s"
+                    if self.motion is not None
+                    else "none until a motion is planned"
+                ),
+                slider=(0.0, 1.0, 0.01),
             )
+            self.time = self.time_field.slider
+            self.time.disabled = True
             self.speed = s.add_dropdown("Speed", options=SPEEDS, initial_value="1x")
             self.plots: list[viser.GuiUplotHandle] = []
         self.play.on_click(lambda _: self.toggle())
-        self.time.on_update(lambda _: self._on_time())
+        self.time.on_update(self._on_time)
         self._thread = threading.Thread(target=self._run, name="timeline", daemon=True)
         self._thread.start()
 
@@ -77,6 +92,7 @@ class Timeline:
         self._convention = robot.convention
         self._follow = follow
         self.time.max = max(motion.duration, 0.01)
+        self._t = 0.0
         self.time.value = 0.0  # type: ignore[misc]
         self.time.disabled = False
         self.play.disabled = False
@@ -89,6 +105,22 @@ class Timeline:
             self._plot_folder.remove()
         self.plots = self._make_plots(motion)
         self._pose(0.0)
+
+    def clear(self) -> None:
+        """Drop the loaded motion and its plots (the project it came from was replaced)."""
+        self.pause()
+        self.motion, self._follow = None, None
+        for p in self.plots:
+            p.remove()
+        if self._plot_folder is not None:
+            self._plot_folder.remove()
+        self.plots, self._plot_folder = [], None
+        self._t = 0.0
+        self.time.value = 0.0  # type: ignore[misc]
+        self.time_field.refresh()
+        self.time.disabled = True
+        self.play.disabled = True
+        self.info.content = "No motion yet: plan one in a workflow tab."
 
     def _pose(self, t: float) -> None:
         if self.motion is None:
@@ -166,8 +198,8 @@ class Timeline:
         if self._playing.is_set():
             self.pause()
         elif self.motion is not None:
-            if self.time.value >= self.motion.duration - 1e-9:
-                self.time.value = 0.0  # type: ignore[misc]
+            if self._t >= self.motion.duration - 1e-9:
+                self._set_time(0.0)
             self._playing.set()
             self.play.label, self.play.icon = "Pause", viser.Icon.PLAYER_PAUSE
 
@@ -181,8 +213,29 @@ class Timeline:
         """Return True while the motion plays."""
         return self._playing.is_set()
 
-    def _on_time(self) -> None:
-        self._pose(float(self.time.value))
+    def _set_time(self, t: float) -> None:
+        """Scrub to t [s]; refused outside [0, duration] (the robot stays where it is)."""
+        m = self.motion
+        if m is None:
+            raise InputError("Time [s]: no motion yet; plan one in a workflow tab")
+        if not 0.0 <= t <= m.duration + 1e-9:
+            raise InputError(
+                f"Time [s]: {format_number(t)} s is outside the motion"
+                f" [0, {format_number(m.duration)}] s"
+            )
+        self._t = round(min(t, m.duration), 4)
+        if float(self.time.value) != self._t:
+            self.time.value = self._t  # type: ignore[misc]  # fires _on_time: poses the robot
+        else:
+            self._pose(self._t)
+            self.time_field.refresh()
+
+    def _on_time(self, event: Any) -> None:
+        if event.client is not None:
+            return  # the time field commits what a page sends (or refuses it)
+        self._t = float(self.time.value)  # set from here: bending and playback scrub so
+        self._pose(self._t)
+        self.time_field.refresh()
 
     def _run(self) -> None:
         last = time.monotonic()
@@ -194,8 +247,12 @@ class Timeline:
             if not self._playing.is_set() or m is None:
                 continue
             factor = float(self.speed.value.rstrip("x"))
-            t = min(self.time.value + dt * factor, m.duration)
-            self.time.value = round(t, 4)  # type: ignore[misc]  # fires _on_time: poses the robot
+            t = min(self._t + dt * factor, m.duration)
+            try:
+                self._set_time(t)  # poses the robot
+            except InputError:  # the motion was replaced meanwhile
+                self.pause()
+                continue
             if t >= m.duration:
                 self.pause()
 
