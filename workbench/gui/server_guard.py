@@ -174,6 +174,8 @@ class AccessPolicy:
 
         async def process_request(connection: Any, request: Request) -> Response | None:
             websocket = request.headers.get("Upgrade", "").lower() == "websocket"
+            if not websocket and urllib.parse.urlsplit(request.path).path == HEALTH_PATH:
+                return _health()  # token-free: says only that the server answers
             refused = self.refusal(request, websocket=websocket)
             if refused is not None:
                 return refused
@@ -190,6 +192,17 @@ class AccessPolicy:
 
         self.installed = True
         return process_request
+
+
+HEALTH_PATH = "/healthz"  # answers "ok" without the token (the Dockerfile's HEALTHCHECK)
+
+
+def _health() -> Response:
+    body = b"ok\n"
+    headers = Headers(
+        [("Content-Type", "text/plain; charset=utf-8"), ("Content-Length", str(len(body)))]
+    )
+    return Response(http.HTTPStatus.OK.value, "OK", headers, body)
 
 
 def _forbidden(why: str) -> Response:
