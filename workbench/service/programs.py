@@ -15,6 +15,7 @@ from workbench.motion.programs.formats import (
 )
 from workbench.motion.programs.model import RobotProgram
 from workbench.project.program_io import motion_limits, tool_data, work_objects
+from workbench.service import program_edit
 from workbench.service.motion_plan import MotionPlan, robot_program
 
 if TYPE_CHECKING:
@@ -32,8 +33,10 @@ def _check_workflow(workflow: str) -> str:
 
 def latest_plan(wb: Workbench, workflow: str) -> Any:
     """Return the workflow's latest plan, planned now when there is none."""
-    if _check_workflow(workflow) == "motion":
-        return wb.last_plan or wb.plan_motion()
+    if _check_workflow(workflow) == "motion":  # planned again after an edit of the program
+        plan = wb.last_plan
+        stale = plan is not None and program_edit.editor(wb).plan_is_stale(plan)
+        return wb.plan_motion() if plan is None or stale else plan
     if workflow == "bending":
         return wb.bending.last_plan or wb.bending.plan()
     if workflow == "assembly":
