@@ -229,10 +229,54 @@ def main() -> None:
                 args.seeds,
                 10.0,
             )
+    if not args.example_only:
+        _narrow_passages(args.seeds)
     _example(use_ompl, args.repeat)
     _ant_cold_warm()
     if not args.example_only:
         _cells_vs_fcl()
+
+
+def _narrow_passages(seeds: int) -> None:
+    """Ant and RRT-Connect through a window that fills the bounds (no way round the wall).
+
+    The scene of tests/assembly/test_narrow_passages.py: a 5 cm box, fixed orientation, the
+    window's centre and the end offsets varied by seed; the planners check every 1 mm.
+    """
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "assembly"))
+    from test_narrow_passages import BOUNDS, EDGE, RES, window_scene  # noqa: PLC0415
+
+    print(
+        "== narrow passages (window side / box edge, wall fills the bounds): solved, median"
+        f" time [ms], median length [m], planes refined (ant); {seeds} seeds"
+    )
+    for factor in (3.0, 2.6, 1.5, 1.08, 0.9):
+        line = f"{factor:>6.2f}"
+        for pl in ("ant", "rrt_connect"):
+            ok, ts, ls, refined = 0, [], [], 0
+            for seed in range(seeds):
+                yc, zc = np.random.default_rng(seed).uniform(-0.1, 0.1, 2)
+                part, wall, s, g = window_scene(factor * EDGE, yc, zc)
+                ch = InterferenceChecker(part, wall, 0.005)
+                opts = {"seed": seed, "max_time": 10.0} if pl == "rrt_connect" else {}
+                t0 = time.perf_counter()
+                try:
+                    r = plan_part_path(
+                        s, g, part, wall, pl, checker=ch, bounds=BOUNDS, resolution=RES, **opts
+                    )
+                    ok += 1
+                    ls.append(r.length)
+                    refined += r.stats.get("refined_planes", 0) > 0
+                except PlanningError:
+                    pass
+                ts.append(time.perf_counter() - t0)
+            med_l = f"{np.median(ls):6.3f}" if ls else "     -"
+            extra = f" refined {refined}" if pl == "ant" else ""
+            line += f"  {pl} {ok}/{seeds} {1e3 * np.median(ts):8.1f} {med_l}{extra}"
+        print(line)
 
 
 def _generated(planners: list[str], seeds: int) -> None:

@@ -28,7 +28,8 @@ class PartPath:
     Moving the part straight (lerp + slerp) between consecutive poses never interferes
     (checked every `resolution` [m] of point travel). time_s: planning time [s], without
     building the cells (setup_s); checks: poses checked; nodes: candidates (ant) or tree
-    nodes (RRT-Connect); length: translation length of the path [m].
+    nodes (RRT-Connect); length: translation length of the path [m]; stats (ant): the
+    planes whose grid was refined ("refined_planes") and the most halvings ("refine_levels").
     """
 
     poses: NDArray[np.float64]
@@ -82,7 +83,8 @@ def plan_part_path(
     t1 = time.perf_counter()
     fn = plan_ant if planner == "ant" else plan_rrt_connect
     check_options(planner, fn, options)
-    poses, nodes = fn(ch, S, G, **options)  # type: ignore[arg-type]
+    poses_nodes = fn(ch, S, G, **options)  # type: ignore[arg-type]
+    poses, nodes = poses_nodes
     dt = time.perf_counter() - t1
     length = float(np.sum(pose_distance(poses[:-1], poses[1:], 0.0)))
     return PartPath(
@@ -96,4 +98,9 @@ def plan_part_path(
         length=length,
         resolution=ch.cell_size,
         cell_size=ch.cell_size,
+        stats={
+            k: int(getattr(poses_nodes, k))
+            for k in ("refined_planes", "refine_levels")
+            if hasattr(poses_nodes, k)
+        },
     )

@@ -15,6 +15,12 @@ hole), and a part seated in a hole at the start or goal is first withdrawn along
 free axis (see `common.retreat`), as the seed's straight splitting cannot leave a hole
 sideways.
 
+Narrow passages: a cutting plane with no free grid point has its grid refined (spacing
+halved, the points already tried left out) down to `min_dis` (default: the larger of
+dis / 2**`REFINE_HALVINGS` and half a cell) before the planner gives up; the result says on
+how many planes and how far (`AntPath.refined_planes`, `AntPath.refine_levels`), and the
+error names the plane and the finest spacing tried.
+
 Speed without changing the result: a plane's candidates are decided in vectorised
 batches (their motions share one rotation, so they are sampled together and the AABB
 stage clears them in one call), taking the first free one in cost order as the seed's
@@ -39,6 +45,21 @@ from workbench.errors import InputError, PlanningError
 from workbench.geometry.transforms import make_transform, wxyz_to_matrix
 
 _AXES = "xyz"
+MAX_PLANE_POINTS = 250_000
+"""Most grid points on one cutting plane ((2 half width / dis + 1)²), refused before the search."""
+MAX_LINE_SAMPLES = 2_000_000
+"""Most poses of the straight move's check (its length / resolution), refused before it."""
+REFINE_HALVINGS = 3
+"""How many times a cutting plane's grid spacing may be halved when the plane has no free
+point (the default `min_dis` is dis / 2**REFINE_HALVINGS, at least half a cell)."""
+
+
+class AntPath(tuple):
+    """(poses (K, 4, 4), candidates tried), as `plan_ant` returns, with what refinement did:
+    refined_planes: planes whose grid was refined; refine_levels: most halvings on one."""
+
+    refined_planes: int = 0
+    refine_levels: int = 0
 
 
 def plan_ant(
@@ -51,12 +72,15 @@ def plan_ant(
     half_width: float | None = None,
     resolution: float | None = None,
     bounds: NDArray[np.float64] | None = None,
-) -> tuple[NDArray[np.float64], int]:
+    min_dis: float | None = None,
+) -> AntPath:
     """Return (poses (K, 4, 4) from start to goal, candidates tried) by the single-ant greedy.
 
     step: number of segments (>= 1); dis: grid spacing on each plane [m] (default: the
     larger of 2 cell sizes and half_width / 25); half_width: grid half size [m] (default
-    D/2 + the part's radius); resolution: motion check spacing [m] (default cell size).
+    D/2 + the part's radius); resolution: motion check spacing [m] (default cell size);
+    min_dis: the finest spacing a plane without a free point is refined to [m] (default
+    the larger of dis / 2**REFINE_HALVINGS and half a cell; min_dis >= dis: no refinement).
     start and goal must be free of interference (`plan_part_path` checks them first).
     """
     if not isinstance(step, int | np.integer) or step < 1:
@@ -79,10 +103,22 @@ def plan_ant(
     spacing = max(2.0 * checker.cell_size, hw / 25.0) if dis is None else float(dis)
     if not spacing > 0:
         raise InputError(f"dis must be a grid spacing > 0 m, got {dis!r}")
+    finest = (
+        max(spacing / 2**REFINE_HALVINGS, checker.cell_size / 2.0)
+        if min_dis is None
+        else float(min_dis)
+    )
+    if not finest > 0:
+        raise InputError(f"min_dis must be a grid spacing > 0 m, got {min_dis!r}")
     B = scene_bounds(checker, start, goal) if bounds is None else np.asarray(bounds, float)
     n = int(np.floor(hw / spacing))
-    g = np.arange(-n, n + 1) * spacing
-    gu, gv = (x.ravel() for x in np.meshgrid(g, g, indexing="ij"))
+    if (2 * n + 1) ** 2 > MAX_PLANE_POINTS:
+        raise InputError(
+            f"dis = {spacing:g} m lays {(2 * n + 1) ** 2:.3g} grid points on each cutting plane "
+            f"(half width {hw:g} m), above the budget of {MAX_PLANE_POINTS:,} "
+            f"(workbench.assembly.planners.ant.MAX_PLANE_POINTS); use dis >= "
+            f"{2 * hw / (MAX_PLANE_POINTS**0.5 - 1):.2g} m"
+        )
     nodes = interpolate(s, e, np.arange(1, step) / step) if step > 1 else np.zeros((0, 4, 4))
     path = list(head)
     tried = 0
@@ -91,6 +127,13 @@ def plan_ant(
     # The segments' samples are the whole line's at the same fractions (lerp and slerp
     # restricted to a sub-interval are the same motion), so one call makes them all.
     n_seg = max(1, int(np.ceil(float(pose_distance(s, e, checker.radius)) / (step * res))))
+    if step * n_seg > MAX_LINE_SAMPLES:
+        raise InputError(
+            f"the straight move ({float(pose_distance(s, e, checker.radius)):.3g} m) checked every"
+            f" {res:g} m takes {step * n_seg:.3g} poses, above the budget of {MAX_LINE_SAMPLES:,}"
+            " (workbench.assembly.planners.ant.MAX_LINE_SAMPLES); move the start and goal closer"
+            " or use a coarser cell_size"
+        )
     u = (np.arange(step)[:, None] + np.arange(1, n_seg + 1)[None] / n_seg).ravel() / step
     if checker.first_interference(interpolate(s, e, u), cells=False) < 0:
         path.extend(nodes)
@@ -100,26 +143,46 @@ def plan_ant(
         raise PlanningError(
             "single-ant planner: the straight move with step=1 interferes; use step > 1"
         )
+    refined_planes = refine_levels = 0
     for i, node in enumerate(nodes):
         prev = path[-1]
-        c = np.repeat(node[:3, 3][None], len(gu) + 2, axis=0)
-        c[: len(gu), u_ax] += gu
-        c[: len(gu), v_ax] += gv
-        for j, q in enumerate((e[:3, 3], prev[:3, 3])):  # projections onto the plane
-            c[len(gu) + j, [u_ax, v_ax]] = q[[u_ax, v_ax]]
-        c = c[np.all((c >= B[0]) & (c <= B[1]), axis=1)]
-        cost = np.linalg.norm(c - prev[:3, 3], axis=1) + np.linalg.norm(c - e[:3, 3], axis=1)
-        c = c[np.argsort(cost, kind="stable")]
-        k, n_tried = _first_free(
-            checker, prev, node[:3, :3], c, e if i == len(nodes) - 1 else None, res
-        )
-        tried += n_tried
+        last = i == len(nodes) - 1
+        level, dis_l, n_pts = 0, spacing, 0
+        while True:
+            c = _plane_candidates(node, prev, e, u_ax, v_ax, hw, dis_l, B, level > 0)
+            n_pts += len(c)
+            k, n_tried = _first_free(checker, prev, node[:3, :3], c, e if last else None, res)
+            tried += n_tried
+            if k < 0 and i > 0 and len(path) > len(head):
+                # Line up: move the previous plane's point in front of a free point of this
+                # plane (same plane coordinates), so the part enters the passage straight.
+                k, n_tried, lined = _line_up(checker, path[-2], prev, node, c, ax, last, e, res)
+                tried += n_tried
+                if k >= 0:
+                    path[-1] = lined
+            nxt = dis_l / 2.0
+            if (
+                k >= 0
+                or nxt < finest * (1.0 - 1e-9)
+                or (2 * int(np.floor(hw / nxt)) + 1) ** 2 > MAX_PLANE_POINTS
+            ):
+                break
+            level, dis_l = level + 1, nxt
         if k < 0:
+            how = (
+                f"refined down to dis = {dis_l:g} m (min_dis = {finest:g} m)"
+                if level
+                else f"dis = {spacing:g} m, not refined (min_dis = {finest:g} m)"
+            )
             raise PlanningError(
                 f"single-ant planner: no interference-free grid point on cutting plane "
-                f"{i + 1} of {step - 1} ({_AXES[ax]} = {node[ax, 3]:.4f} m, {len(c)} points, "
-                f"dis = {spacing:g} m); try a larger step, a smaller dis or planner='rrt_connect'"
+                f"{i + 1} of {step - 1} ({_AXES[ax]} = {node[ax, 3]:.4f} m, {n_pts} points, "
+                f"{how}); the passage there is narrower than the part can take on this "
+                "greedy path: try a larger step, a smaller min_dis or planner='rrt_connect'"
             )
+        if level:
+            refined_planes += 1
+            refine_levels = max(refine_levels, level)
         T = node.copy()
         T[:3, 3] = c[k]
         path.append(T)
@@ -127,7 +190,80 @@ def plan_ant(
     # by sample (b -> goal as goal -> b: the same samples, with the goal itself checked
     # by plan_part_path instead of b).
     path.extend(tail)
-    return np.asarray(path), tried
+    out = AntPath((np.asarray(path), tried))
+    out.refined_planes, out.refine_levels = refined_planes, refine_levels
+    return out
+
+
+def _line_up(
+    checker: InterferenceChecker,
+    before: NDArray,
+    prev: NDArray,
+    node: NDArray,
+    c: NDArray,
+    ax: int,
+    last: bool,
+    goal: NDArray,
+    res: float,
+) -> tuple[int, int, NDArray]:
+    """Return (k, candidates tried, the previous plane's new pose) for the first c[k] that the
+    part reaches as before -> (prev's plane, lined up with c[k]) -> c[k] (-> goal if `last`),
+    every motion free; k = -1 if none."""
+    r = checker.radius
+    b0, size = 0, 4
+    while b0 < len(c):
+        cb = c[b0 : b0 + size]
+        lined = cb.copy()
+        lined[:, ax] = prev[ax, 3]
+        parts = [
+            _fan(before[:3, :3], before[:3, 3], prev[:3, :3], lined, r, res),
+            _fan(prev[:3, :3], lined, node[:3, :3], cb, r, res),
+        ]
+        if last:
+            parts.append(_fan(node[:3, :3], cb, goal[:3, :3], goal[:3, 3], r, res))
+        gid = np.concatenate([np.repeat(np.arange(len(cb)), n) for _, n in parts])
+        S = np.concatenate([S for S, _ in parts])[np.argsort(gid, kind="stable")]
+        g = checker.first_free_group(S, sum(n for _, n in parts), cells=False)
+        if g >= 0:
+            T = prev.copy()
+            T[:3, 3] = lined[g]
+            return b0 + g, b0 + g + 1, T
+        b0 += len(cb)
+        size *= 4
+    return -1, len(c), prev
+
+
+def _plane_candidates(
+    node: NDArray,
+    prev: NDArray,
+    goal: NDArray,
+    u_ax: int,
+    v_ax: int,
+    hw: float,
+    dis: float,
+    B: NDArray,
+    refined: bool,
+) -> NDArray:
+    """Return a plane's candidate positions (M, 3) in cost order: the grid of spacing `dis`
+    around `node` and the projections of the goal and of `prev`, within bounds B.
+
+    `refined`: the grid of spacing 2 * dis was tried already; leave its points (both grid
+    indices even) and the projections out."""
+    n = int(np.floor(hw / dis))
+    idx = np.arange(-n, n + 1)
+    iu, iv = (x.ravel() for x in np.meshgrid(idx, idx, indexing="ij"))
+    if refined:
+        new = (iu % 2 != 0) | (iv % 2 != 0)
+        iu, iv = iu[new], iv[new]
+    c = np.repeat(node[:3, 3][None], len(iu) + (0 if refined else 2), axis=0)
+    c[: len(iu), u_ax] += iu * dis
+    c[: len(iu), v_ax] += iv * dis
+    if not refined:
+        for j, q in enumerate((goal[:3, 3], prev[:3, 3])):  # projections onto the plane
+            c[len(iu) + j, [u_ax, v_ax]] = q[[u_ax, v_ax]]
+    c = c[np.all((c >= B[0]) & (c <= B[1]), axis=1)]
+    cost = np.linalg.norm(c - prev[:3, 3], axis=1) + np.linalg.norm(c - goal[:3, 3], axis=1)
+    return c[np.argsort(cost, kind="stable")]
 
 
 def _fan(
