@@ -26,8 +26,14 @@ from workbench.motion.trajectory import Trajectory, smooth_joint_path
 
 # A line of a whole number of steps (85 mm at 5 mm) gets that many samples even when its
 # length carries rounding noise (a target read back from a program): the count, and so the
-# planned time, does not jump with the 1e-9 of a re-read pose.
-_COUNT_SLACK = 1e-6
+# planned time, does not jump with the rounding of a re-read pose (RAPID/KRL/LS write 4 decimals
+# of a mm: 5e-8 m, 1e-5 of a 5 mm step): a line up to 1e-3 of a step longer is not split again.
+_COUNT_SLACK = 1e-3
+#: How `plan_program` samples a linear move by default: every LINE_STEP [m] of TCP travel and
+#: LINE_ANGLE_STEP [rad] of tool rotation (a workflow that times a straight line itself samples
+#: it the same way, so the line planned again as a linear move takes the same time).
+LINE_STEP = 0.005
+LINE_ANGLE_STEP = float(np.radians(2.0))
 
 
 @dataclass(frozen=True, eq=False)
@@ -115,8 +121,8 @@ def plan_program(
     max_velocity: ArrayLike,
     *,
     T_flange_tcp: ArrayLike | None = None,
-    step: float = 0.005,
-    angle_step: float = np.radians(2.0),
+    step: float = LINE_STEP,
+    angle_step: float = LINE_ANGLE_STEP,
     max_joint_step: float = 0.2,
 ) -> JointPath:
     """Return the `JointPath` of `program` from joints `q_start` (6,) [rad].
@@ -186,8 +192,21 @@ def time_program(
     *,
     position_limits: ArrayLike | None = None,
     dt: float = 0.004,
+    program: Program | None = None,
 ) -> Trajectory:
-    """Return the jerk-limited `Trajectory` [s, rad] through a `JointPath`."""
+    """Return the jerk-limited `Trajectory` [s, rad] through a `JointPath`.
+
+    A segment that cannot be timed is named by its move ("move 3 (pick)" with the
+    `program` the path came from, else "move 3") in the PlanningError."""
+    moves = program.moves if program is not None else ()
+    labels = [
+        "the start"
+        if m < 0
+        else f"move {m} ({moves[m].name or moves[m].kind})"
+        if m < len(moves)
+        else f"move {m}"
+        for m in path.move_index.tolist()
+    ]
     return smooth_joint_path(
         path.positions,
         path.speed_limits,
@@ -196,4 +215,5 @@ def time_program(
         position_limits=position_limits,
         exact_stop=path.stop_indices,
         dt=dt,
+        labels=labels,
     )

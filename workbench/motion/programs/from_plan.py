@@ -31,7 +31,7 @@ from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
-from workbench.motion.moves import JointPath
+from workbench.motion.moves import JointPath, plan_program, time_program
 from workbench.motion.program import JOINT, Move, Program
 from workbench.motion.programs.model import (
     Action,
@@ -174,6 +174,62 @@ def move_durations(path: JointPath, trajectory: Trajectory, n_moves: int) -> Flo
     arrive[-1] = trajectory.duration
     return np.diff(np.concatenate([[0.0], arrive]))
 
+
+def planner_durations(
+    model: RobotModel, program: Program, q_start: FloatArray, T_flange_tcp: FloatArray
+) -> FloatArray:
+    """Return each move's duration (n_moves,) [s] as the motion planner times `program` from
+    `q_start` (`plan_program` + `time_program` with the robot's limits, `move_durations`):
+    how a workflow times the moves its own plan does not, so that the program planned again
+    takes the same time."""
+    path = plan_program(model, program, q_start, model.max_velocity, T_flange_tcp=T_flange_tcp)
+    traj = time_program(
+        path, model.max_acceleration, model.max_jerk, position_limits=model.limits, program=program
+    )
+    return move_durations(path, traj, len(program.moves))
+
+
+#: `fit_linear_speed` stops when the planned time is this close (relative) to the wanted one.
+FIT_TOLERANCE = 1e-3
+
+
+def fit_linear_speed(
+    model: RobotModel,
+    T_flange_tcp: FloatArray,
+    q_from: FloatArray,
+    T_base_tcp: FloatArray,
+    duration: float,
+    max_speed: float,
+    *,
+    iterations: int = 30,
+) -> float:
+    """Return the TCP speed [m/s] at which the motion planner takes `duration` [s] for a
+    stop-to-stop linear move from joints `q_from` to the pose `T_base_tcp` (4, 4) [m]: the
+    speed a program states for a straight move its workflow timed otherwise (e.g. in joint
+    space through the line's waypoints). The time falls with the speed until the joints'
+    limits take over (then it stays): the slowest speed whose time is within `FIT_TOLERANCE`
+    above `duration` (bisection on the log of the speed); `max_speed` when even that is slower.
+    """
+
+    def took(v: float) -> float:
+        prog = Program("fit", (Move.linear(T_base_tcp, speed=v),))
+        return float(planner_durations(model, prog, q_from, T_flange_tcp)[0])
+
+    dist = float(np.linalg.norm((model.fk(q_from) @ T_flange_tcp)[:3, 3] - T_base_tcp[:3, 3]))
+    hi = float(max_speed)
+    if duration <= 0.0 or dist < 1e-9 or took(hi) > duration * (1.0 + FIT_TOLERANCE):
+        return hi
+    lo = min(hi, 1e-4)
+    for _ in range(iterations):
+        v = float(np.sqrt(lo * hi))
+        t = took(v)
+        if duration <= t <= duration * (1.0 + FIT_TOLERANCE):
+            return v
+        if t > duration:
+            lo = v
+        else:
+            hi = v
+    return hi
 
 def _unique_names(names: list[str]) -> list[str]:
     seen: dict[str, int] = {}
