@@ -192,7 +192,10 @@ def _flow_velocities(
     d = np.diff(q, axis=0)
     dist = np.abs(d)
     cruise = np.max(dist / vmax, axis=1)
-    same = (np.sign(d[:-1]) == np.sign(d[1:])) & (d[:-1] != 0.0)
+    # a joint that moves less than DUPLICATE_TOL over a segment stands still there: the sign
+    # of IK noise (1e-16 on a joint held at 0 along a line) must not decide its flow
+    still = dist < DUPLICATE_TOL
+    same = (np.sign(d[:-1]) == np.sign(d[1:])) & ~still[:-1] & ~still[1:]
     chord = np.where(same, (q[2:] - q[:-2]) / (cruise[:-1] + cruise[1:])[:, None], 0.0)
     # A hair below the limit: ruckig's validate_input rejects a velocity equal to the
     # limit after rounding (seen with per-segment limits from linear moves).
