@@ -15,13 +15,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.assembly.arm import AssemblyArm
-from workbench.assembly.motion import interpolate, pose_distance
 from workbench.assembly.part import AssemblyPart
-from workbench.assembly.part_moves import PATH_SPACING, PartPlan, Progress
+from workbench.assembly.part_moves import PartPlan, Progress
 from workbench.assembly.workcell import Workcell
 from workbench.errors import InputError, UnreachableError
 from workbench.geometry.transforms import make_transform
 from workbench.motion import Trajectory, smooth_joint_path
+from workbench.motion.moves import LINE_ANGLE_STEP, LINE_STEP, line_poses
 
 #: Plans the part's move: (part, q_start [rad] where the approach ended or None, progress) -> PartPlan.
 MovePlanner = Callable[[str, NDArray[np.float64] | None, Progress], PartPlan]
@@ -46,15 +46,22 @@ class TaskPlan:
 
 
 def tcp_line(T0: NDArray[np.float64], T1: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Return poses (n, 4, 4) from T0 to T1 (both included), every PATH_SPACING [m] of TCP travel."""
-    n = max(1, int(np.ceil(float(pose_distance(T0, T1, 0.1)) / PATH_SPACING)))
-    return interpolate(T0, T1, np.linspace(0.0, 1.0, n + 1))
+    """Return poses (n, 4, 4) from T0 to T1 (both included) along the straight line, sampled as
+    the motion planner samples a linear move (`motion.moves.line_poses` every `LINE_STEP` and
+    `LINE_ANGLE_STEP`): the task's approach and retreat, planned again as the program's linear
+    moves, pass the same waypoints and take the same time."""
+    return np.concatenate([T0[None], line_poses(T0, T1, LINE_STEP, LINE_ANGLE_STEP)])
 
 
 def time_waypoints(
-    arm: AssemblyArm, waypoints: NDArray[np.float64], speed: float, exact_stop: list[int]
+    arm: AssemblyArm,
+    waypoints: NDArray[np.float64],
+    speed: float,
+    exact_stop: list[int],
+    labels: list[str] | None = None,
 ) -> Trajectory:
-    """Return the jerk-limited trajectory through joint `waypoints` at `speed` (fraction of the limits)."""
+    """Return the jerk-limited trajectory through joint `waypoints` at `speed` (fraction of the
+    limits); `labels` name each waypoint's stage in a PlanningError."""
     model = arm.setup.model
     return smooth_joint_path(
         waypoints,
@@ -63,6 +70,7 @@ def time_waypoints(
         np.asarray(model.max_jerk) * speed,
         position_limits=model.limits,
         exact_stop=exact_stop,
+        labels=labels,
     )
 
 
@@ -123,7 +131,18 @@ def plan_task(
     waypoints = np.concatenate([q_now[None], q_task, arm.q_home[None]])
     report(0.85, f"{part.name}: jerk-limited timing")
     n = len(waypoints)
-    traj = time_waypoints(arm, waypoints, speed, [0, 1, i_pick + 1, i_place + 1, n - 2, n - 1])
+    stages = [
+        (2, "to the approach"),
+        (i_pick + 2, "approach"),
+        (i_place + 2, "carry"),
+        (n - 1, "retreat"),
+        (n, "home"),
+    ]
+    head = f"{what} (robot {arm.name})"
+    labels = [f"{head}: the start"]
+    labels += [f"{head}: " + next(s for e, s in stages if k < e) for k in range(1, n)]
+    stops = [0, 1, i_pick + 1, i_place + 1, n - 2, n - 1]
+    traj = time_waypoints(arm, waypoints, speed, stops, labels)
     wt = traj.waypoint_times
     return TaskPlan(
         part=part.name,
