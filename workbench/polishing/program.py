@@ -30,6 +30,8 @@ from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
+from workbench.motion.program import Move, Program
+from workbench.motion.programs.from_plan import planner_durations
 from workbench.motion.programs.model import (
     Comment,
     Instruction,
@@ -40,8 +42,8 @@ from workbench.motion.programs.model import (
     ToolData,
     WorkObject,
 )
-from workbench.motion.trajectory import Trajectory, smooth_joint_path
-from workbench.polishing.process_motion import APPROACH_SPEED, ZONE
+from workbench.motion.trajectory import DUPLICATE_TOL, Trajectory
+from workbench.polishing.process_motion import APPROACH_SPEED
 from workbench.polishing.toolpath import force_offset
 
 F64 = NDArray[np.float64]
@@ -52,6 +54,10 @@ CHORD_TOLERANCE = 0.05e-3
 ANGLE_TOLERANCE = np.radians(0.5)
 #: The work object of the program: the workpiece frame.
 WOBJ = "workpiece"
+#: Largest blend radius [m] between the linear moves (less at sharper turns: `corner_zones`).
+BLEND_ZONE = 2e-3
+#: The blend radii [m] used (a corner gets the largest not above its own, at least the first).
+BLEND_LEVELS = (0.1e-3, 0.2e-3, 0.5e-3, 1e-3, 2e-3)
 
 
 class _Contact(Protocol):
@@ -120,21 +126,44 @@ def thin_path(
     return np.array(out, np.int64)
 
 
-def approach_time(model: RobotModel, q_start: F64 | None, q_end: F64) -> float:
-    """Return the time [s] of the jerk-limited joint move from `q_start` to `q_end` at
-    `APPROACH_SPEED` of the joint limits (the time of a stop-to-stop move, ruckig); a move of
-    less than 1e-9 rad takes a nominal 0.1 s (a controller still runs the instruction)."""
-    if q_start is None or np.max(np.abs(np.asarray(q_start, float) - q_end)) < 1e-9:
-        return 0.1
-    f = APPROACH_SPEED
-    traj = smooth_joint_path(
-        np.array([q_start, q_end], float),
-        np.asarray(model.max_velocity) * f,
-        np.asarray(model.max_acceleration) * f,
-        np.asarray(model.max_jerk) * f,
-        position_limits=model.limits,
-    )
-    return float(traj.duration)
+def approach_time(
+    model: RobotModel, q_start: F64 | None, q_end: F64, T_flange_tcp: F64 | None = None
+) -> float:
+    """Return the time [s] of the joint move from `q_start` to `q_end` at `APPROACH_SPEED` of
+    the joints' maximum speed, as the motion planner times it (`planner_durations`: ruckig,
+    stop to stop); 0 for a move shorter than the trajectory's `DUPLICATE_TOL` (none to make)."""
+    if q_start is None or np.max(np.abs(np.asarray(q_start, float) - q_end)) < DUPLICATE_TOL:
+        return 0.0
+    prog = Program("approach", (Move.joint(q_end, speed=APPROACH_SPEED),))
+    T = np.eye(4) if T_flange_tcp is None else T_flange_tcp
+    return float(planner_durations(model, prog, np.asarray(q_start, float), T)[0])
+
+
+def corner_zones(P: F64, tol: float, largest: float = BLEND_ZONE) -> F64:
+    """Return the blend radius [m] at each interior point of the polyline P (K, 3) [m] (K - 2,):
+    `largest`, or less where the corner turns so much that the blend would leave it by more
+    than `tol` (a quadratic blend of radius r at a turn of angle a passes r sin(a/2) / 2 from
+    the corner, so r <= 2 tol / sin(a/2)), rounded down to `BLEND_LEVELS` (at least the
+    first: a sharper corner may be left by more than `tol`)."""
+    u = np.diff(P, axis=0)
+    u /= np.maximum(np.linalg.norm(u, axis=1), 1e-12)[:, None]
+    turn = np.arccos(np.clip(np.sum(u[:-1] * u[1:], axis=1), -1.0, 1.0))
+    s = np.sin(turn / 2.0)
+    r = np.minimum(largest, 2.0 * tol / np.maximum(s, 1e-12))
+    # a few radii only (NACHI has 7 accuracy levels): the largest level not above r
+    levels = np.array(BLEND_LEVELS)
+    return levels[np.maximum(np.searchsorted(levels, r * (1.0 + 1e-9), side="right") - 1, 0)]
+
+
+def _calibrated_speed(
+    model: RobotModel, moves: list[Move], q0: F64, T_flange_tcp: F64, planned: float, feed: float
+) -> float:
+    """Return the TCP speed [m/s] at which the motion planner takes the `planned` time [s] for
+    the linear `moves` (stated at `feed`) from joints `q0`: the feed, scaled by the planned
+    over the planner's time (their waypoints differ: the plan's path points, the planner's
+    samples along the moves), so the program planned again takes the plan's cycle time."""
+    took = float(planner_durations(model, Program("polish", tuple(moves)), q0, T_flange_tcp).sum())
+    return feed * took / planned if planned > 0 else feed
 
 
 def polishing_program(
@@ -160,10 +189,13 @@ def polishing_program(
     planned targets) and the feed [m/s] (comment); the work object is the workpiece frame
     `T_world_workpiece` (4, 4) [m], the robot stands at `T_world_base`. The joint move to the
     first point starts at `q_start` (dof,) [rad] (default: there already); the plan does not
-    time it, so it is timed here (`approach_time`) and is the one move beyond the plan's cycle time. A joint move to the first point (not timed by the plan: duration 0, speed
-    `APPROACH_SPEED`), then linear moves to the points `thin_path` keeps, each with the planned
-    joints, its duration from the trajectory and the TCP speed that covers the planned arc in
-    that time; exact stops at the first process point and at the last point, `ZONE` elsewhere.
+    time it, so it is timed here (`approach_time`) and is the one move beyond the plan's cycle
+    time. Then linear moves to the points `thin_path` keeps, each with the planned joints and
+    its duration from the trajectory, all at one TCP speed: the feed, calibrated so that the
+    motion planner takes the plan's time for them (`_calibrated_speed`); exact stops where the
+    plan stops (its `stop_indices`: the first point, the first process point, the last point),
+    elsewhere blends of `corner_zones` (at most `BLEND_ZONE`, within `tol` of the corner: the
+    program's path stays within 2 `tol` of the planned points).
     """
     q = np.asarray(trajectory.waypoints, float)
     wt = np.asarray(trajectory.waypoint_times, float)
@@ -181,7 +213,6 @@ def polishing_program(
     first = int(np.argmax(process)) if process.any() else 0
     last_in = int(np.flatnonzero(process)[-1]) if process.any() else len(q) - 1
     kept = thin_path(P, Z, (first, last_in), tol=tol, angle_tol=angle_tol)
-    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(P, axis=0), axis=1))])
     T_wobj_base = invert_transform(T_base_wobj)
 
     def target(i: int, label: str) -> Target:
@@ -203,10 +234,32 @@ def polishing_program(
             0.0,
             tool.name,
             WOBJ,
-            approach_time(model, q_start, q[0]),
+            approach_time(model, q_start, q[0], tool.T_flange_tcp),
         ),
     ]
-    for a, b in zip(kept[:-1], kept[1:], strict=True):
+    stops = {int(i) for i in trajectory.stop_indices} | {0, len(q) - 1}
+    zones = np.concatenate([[0.0], corner_zones(P[kept], tol), [0.0]])
+    zones[[k for k, b in enumerate(kept) if int(b) in stops]] = 0.0
+    T_flange = tool.T_flange_tcp
+    lin = [
+        Move.linear(T_base_tcp[b], speed=feed, zone=float(zones[k])) for k, b in enumerate(kept)
+    ][1:]
+    planned = float(wt[kept[-1]] - wt[kept[0]])
+    speed = float(
+        np.clip(
+            _calibrated_speed(model, lin, q[kept[0]], T_flange, planned, feed),
+            1e-4,
+            (limits or MotionLimits()).max_tcp_speed,
+        )
+    )
+    ins.insert(
+        2,
+        Comment(
+            f"TCP speed {speed * 1e3:.2f} mm/s: the feed {feed * 1e3:g} mm/s, scaled so that the"
+            f" moves take the planned {planned:.2f} s"
+        ),
+    )
+    for k, (a, b) in enumerate(zip(kept[:-1], kept[1:], strict=True)):
         dt = float(wt[b] - wt[a])
         if dt <= 0:
             raise InputError(
@@ -217,10 +270,16 @@ def polishing_program(
                 Comment(f"process: press with F = {force:g} N (offset D = {D * 1e3:.3f} mm)")
             )
         kind = "lead_in" if b < first else ("lead_out" if b > last_in else "p")
-        zone = 0.0 if b in (first, last_in, len(q) - 1) else min(ZONE, tol)
-        speed = max(float((arc[b] - arc[a]) / dt), 1e-4)  # a move on the spot: any speed
         ins.append(
-            MoveInstr("linear", target(int(b), f"{kind}{b}"), speed, zone, tool.name, WOBJ, dt)
+            MoveInstr(
+                "linear",
+                target(int(b), f"{kind}{b}"),
+                speed,
+                float(zones[k + 1]),
+                tool.name,
+                WOBJ,
+                dt,
+            )
         )
         if b == last_in and b != len(q) - 1:
             ins.append(Comment("lead-out: off the surface, no contact force"))
