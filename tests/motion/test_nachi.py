@@ -33,7 +33,7 @@ def _angle_deg(Ra: np.ndarray, Rb: np.ndarray) -> float:
 def test_sample_program_reads_back() -> None:
     prog, model = sample_program()
     out = write_nachi(prog)
-    assert list(out.files) == ["MZ07-01-A.001"]
+    assert list(out.files) == ["r1-01-A.001"]  # the sample robot "r1": unit_name(robot)
     read = read_nachi(out.files)
     check_read_back(prog, read, model, signals_by="number")
     assert read.name == "demo"
@@ -41,7 +41,7 @@ def test_sample_program_reads_back() -> None:
 
 def test_program_number_and_unit() -> None:
     prog, _ = sample_program(name="cell_12")
-    assert list(write_nachi(prog).files) == ["MZ07-01-A.012"]
+    assert list(write_nachi(prog).files) == ["r1-01-A.012"]
     assert list(write_nachi(prog, unit="MZ07L-01-A", number=5).files) == ["MZ07L-01-A.005"]
     with pytest.raises(InputError, match="unit"):
         write_nachi(prog, unit="MZ 07")

@@ -1,7 +1,8 @@
 """NACHI FD post-processor: one program file `<unit>.<nnn>` of MOVEX lines and I/O instructions.
 
 The preset robot (NACHI MZ07) runs on an FD11/FD controller. A program is a numbered file, e.g.
-``MZ07-01-A.001`` (robot unit name, "-A", a three-digit program number), one instruction a
+``MZ07-01-A.001`` (robot unit name, "-A", a three-digit program number; the stem is the robot's
+name and unit 01, `unit_name`, so each robot of a cell gets its own file), one instruction a
 line, ending with ``END``. What is written, and where each form comes from:
 
 Confirmed by a public source (forms seen in two or more independent writers):
@@ -289,11 +290,21 @@ class _Writer:
         return head
 
 
+def unit_name(robot: str) -> str:
+    """Return the file-name stem ``<robot>-01-A`` of a robot's program: the robot's name (the
+    controller's robot model name, e.g. MZ07; characters other than letters, digits, '-' and '_'
+    become '_'), unit 01 (one arm per FD controller), "-A". Two robots of a cell, each on its
+    own controller, so get files of their own names (``MZ07-01-A.001``, ``MZ07_B-01-A.001``)."""
+    stem = re.sub(r"[^A-Za-z0-9_-]", "_", robot) or "MZ07"
+    return f"{stem if stem[0].isalnum() else 'R' + stem}-01-A"
+
+
 def write_nachi(
-    program: RobotProgram, *, unit: str = DEFAULT_UNIT, number: int | None = None
+    program: RobotProgram, *, unit: str | None = None, number: int | None = None
 ) -> ExportedProgram:
     """Return the NACHI FD program file ``<unit>.<nnn>`` of `program` (see the module docstring).
 
+    `unit` is the file-name stem (default `unit_name(program.robot)`, e.g. ``MZ07-01-A``);
     `number` is the program number (default: the program name's trailing digits, else 1).
     Raises InputError (naming the move) for what check_program refuses, for more than 7
     distinct blend zones, and for a sync point without its handshake signals.
@@ -304,6 +315,7 @@ def write_nachi(
             f"program {program.name}: the NACHI post writes 6-axis arms (M1J J1..J6); this robot"
             f" has {program.dof} joints"
         )
+    unit = unit_name(program.robot) if unit is None else unit
     if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_-]*", unit):
         raise InputError(
             f"NACHI unit {unit!r} must be letters, digits, '-' and '_' (e.g. {DEFAULT_UNIT})"
