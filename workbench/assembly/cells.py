@@ -24,6 +24,9 @@ from workbench.bounded_cache import BoundedCache
 from workbench.errors import InputError, MeshError
 
 _CHUNK = 200_000
+MAX_CELLS = 4_000_000
+"""Most cubic cells a part's bounding box may be cut into (extent / cell_size per axis,
+multiplied): a finer subdivision is refused before it starts, with its estimate."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -60,6 +63,14 @@ def check_cell_size(cell_size: float, mesh: trimesh.Trimesh, name: str = "cell_s
         raise InputError(
             f"{name}={c:g} m is larger than the part (largest extent {extent:g} m); "
             f"use a cell size <= {extent:g} m, typically 1/10 to 1/50 of it"
+        )
+    cells = float(np.prod(np.ceil(np.asarray(mesh.extents, float) / c) + 1))
+    if cells > MAX_CELLS:
+        finest = float(np.cbrt(np.prod(np.asarray(mesh.extents, float)) / MAX_CELLS))
+        raise InputError(
+            f"{name}={c:g} m cuts the part ({' x '.join(f'{e:g}' for e in mesh.extents)} m) into"
+            f" about {cells:.3g} cells, above the budget of {MAX_CELLS:,} "
+            f"(workbench.assembly.cells.MAX_CELLS); use a cell size of at least ~{finest:.2g} m"
         )
     return c
 

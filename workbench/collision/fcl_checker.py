@@ -46,6 +46,11 @@ class SceneBody:
         self.obj = fcl.CollisionObject(solid.fcl_geometry(), fcl.Transform())
         mesh = solid.to_trimesh()
         self.mesh = mesh
+        if mesh.bounds is None or len(mesh.faces) == 0 or not np.all(np.isfinite(mesh.bounds)):
+            raise InputError(
+                f"{solid.name}: its {solid.kind} has no usable triangles to check (too small "
+                "or degenerate); give it a size of at least a few micrometres"
+            )
         lo, hi = np.asarray(mesh.bounds, float)
         self.local_corners = np.array(list(itertools.product(*zip(lo, hi, strict=True))))
         # A point on the surface, for the containment test.

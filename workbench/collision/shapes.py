@@ -12,6 +12,9 @@ from numpy.typing import ArrayLike
 
 from workbench.errors import InputError, MeshError
 
+SOLID_SIZE = (1e-6, 1e4)
+"""Smallest and largest edge length, radius or height of a box or cylinder solid [m]."""
+
 
 @dataclass(frozen=True)
 class Solid:
@@ -33,6 +36,16 @@ class Solid:
             self.radius and self.height and self.radius > 0 and self.height > 0
         ):
             raise InputError(f"{self.name}: a cylinder needs radius > 0 and height > 0")
+        dims = self.size if self.kind == "box" else (self.radius, self.height)
+        if self.kind != "mesh" and not all(
+            SOLID_SIZE[0] <= float(d) <= SOLID_SIZE[1]  # type: ignore[arg-type]
+            for d in dims  # type: ignore[union-attr]
+        ):
+            raise InputError(
+                f"{self.name}: a {self.kind}'s dimensions must lie in [{SOLID_SIZE[0]:g}, "
+                f"{SOLID_SIZE[1]:g}] m (smaller ones vanish in the mesh, larger ones overflow), "
+                f"got {dims}"
+            )
         if self.kind == "mesh":
             check_mesh(self.mesh, self.name)
 
@@ -42,7 +55,11 @@ class Solid:
             return trimesh.creation.box(extents=self.size)
         if self.kind == "cylinder":
             assert self.radius is not None and self.height is not None
-            return trimesh.creation.cylinder(radius=self.radius, height=self.height, sections=32)
+            # A unit cylinder scaled: trimesh drops faces below an absolute area when it
+            # builds one, which would leave a sub-millimetre cylinder without triangles.
+            mesh = trimesh.creation.cylinder(radius=1.0, height=1.0, sections=32)
+            mesh.apply_transform(np.diag([self.radius, self.radius, self.height, 1.0]))
+            return mesh
         assert self.mesh is not None
         return self.mesh
 

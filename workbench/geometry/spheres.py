@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import InputError
+from workbench.errors import InputError, MeshError
 from workbench.geometry.lbvh import check_mesh
 from workbench.geometry.npz_cache import cache_path, load_entry, store_entry
 from workbench.geometry.sdf import is_watertight
@@ -272,6 +272,16 @@ def fit_spheres(
     count <= 0, MeshError for an empty mesh.
     """
     v, f = _mesh_arrays(mesh)
+    tri = v[f]
+    area = float(
+        np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1).sum()
+    )
+    if not area > 0.0:  # a box of zero size: every vertex on one point or one line
+        extent = np.ptp(v[np.unique(f)], axis=0)
+        raise MeshError(
+            f"the mesh has no area (extent {extent.tolist()} m): spheres cannot envelop it; "
+            "give the solid a positive size in every direction"
+        )
     if not isinstance(count, int | np.integer) or count <= 0:
         raise InputError(f"count (spheres per link) must be a positive integer, got {count!r}")
     if iterations < 0 or particles < 1 or samples < 0:

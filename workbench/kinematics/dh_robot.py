@@ -273,7 +273,8 @@ class DHRobot:
                 a * c + d * f + g * i,
                 b * c + e * f + h * i,
             )
-            ok = max(dots) < 1e-6 and min(dots) > -1e-6
+            det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+            ok = max(dots) < 1e-6 and min(dots) > -1e-6 and det > 0.0  # det < 0: a reflection
         if not ok:
             transform_array(T_arr)  # raises the InputError with details
         return T_arr, rows

@@ -79,17 +79,18 @@ def turns_scalar(
     specs: per joint (offset, lower, upper, narrow) with narrow = limits inside [-pi, pi].
     Returns None when a joint cannot fit its limits at any turn.
     """
-    two_pi, pi, slack, floor = TWO_PI, math.pi, LIMIT_SLACK, math.floor
+    two_pi, pi, slack, floor, ceil = TWO_PI, math.pi, LIMIT_SLACK, math.floor, math.ceil
     out = []
     for j in range(start, stop):
         o, lj, hj, narrow = specs[j]
         q = (theta[j] - o + pi) % two_pi - pi
         if not narrow:
-            q += two_pi * floor((ref[j] - q) / two_pi + 0.5)  # the turn nearest ref
-            while q > hj + slack and q - two_pi >= lj - slack:
-                q -= two_pi
-            while q < lj - slack and q + two_pi <= hj + slack:
-                q += two_pi
+            # The turn nearest ref, clipped to the turns within limits: in turns, not by
+            # stepping, so a far reference (q_near = 1e16) costs no more than a near one.
+            kmin, kmax = ceil((lj - slack - q) / two_pi), floor((hj + slack - q) / two_pi)
+            if kmin > kmax:
+                return None
+            q += two_pi * min(max(floor((ref[j] - q) / two_pi + 0.5), kmin), kmax)
         if q < lj - slack or q > hj + slack:
             return None
         out.append(lj if q < lj else hj if q > hj else q)

@@ -9,7 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.motion.trajectory import Trajectory
+from workbench.motion.trajectory import MAX_SAMPLES, Trajectory
 
 
 @dataclass(frozen=True)
@@ -226,8 +226,10 @@ def validate_trajectory(
 
     Jerk comes from the trajectory's constant-jerk pieces; waypoints must be passed at
     `waypoint_times` within `waypoint_tol` [rad]. `max_velocity` may be (dof,) only here.
+    A trajectory longer than `MAX_SAMPLES` x dt gets a coarser grid (MAX_SAMPLES points; the
+    peaks are still checked exactly).
     """
-    grid = np.arange(0.0, trajectory.duration, dt)
+    grid = np.arange(0.0, trajectory.duration, max(dt, trajectory.duration / MAX_SAMPLES))
     t = np.unique(
         np.concatenate(
             [grid, critical_times(trajectory), trajectory.waypoint_times, [trajectory.duration]]

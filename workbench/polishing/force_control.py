@@ -63,6 +63,9 @@ from workbench.polishing.orientation import (
 )
 
 F64 = NDArray[np.float64]
+MAX_STEPS = 500_000
+"""Most control steps of one simulation ((dwell + path length / feed) x control rate),
+refused before it starts, with the estimate."""
 
 
 @dataclass(frozen=True)
@@ -234,6 +237,13 @@ def simulate_hybrid_force_control(
     s_path = np.concatenate([[0.0], np.cumsum(seg)])
     total = dwell + s_path[-1] / feed_speed
     k_steps = int(math.ceil(total / dt)) + 1
+    if k_steps > MAX_STEPS:
+        raise InputError(
+            f"the simulation would take {k_steps:,} control steps ({total:.4g} s of dwell and "
+            f"feed at {prm.control_rate:g} Hz), above the budget of {MAX_STEPS:,} "
+            "(workbench.polishing.force_control.MAX_STEPS); raise the feed, shorten the dwell "
+            "or lower the control rate"
+        )
     t: F64 = np.arange(k_steps, dtype=np.float64) * dt
     s_ref = np.clip(feed_speed * (t - dwell), 0.0, s_path[-1])
     ref = np.stack([np.interp(s_ref, s_path, p[:, i]) for i in range(3)], axis=1)

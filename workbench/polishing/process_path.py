@@ -21,6 +21,36 @@ from workbench.polishing.toolpath import ToolPath, force_offset, spiral_toolpath
 F64 = NDArray[np.float64]
 _MM = 1e-3  # the summaries and messages speak millimetres
 _PLANNERS = {"spiral": spiral_toolpath, "raster": raster_toolpath}
+MAX_PASSES = {"spiral": 150, "raster": 1_000}
+"""Most passes a pattern may lay on the workpiece (its width / spacing, halved for the
+spiral's rings): the spiral's offset curves cost steeply more with each ring."""
+MAX_PATH_POINTS = 200_000
+"""Most path points (the workpiece's area / (spacing x step))."""
+
+
+def check_path_budget(mesh: trimesh.Trimesh, pattern: str, step: float, spacing: float) -> None:
+    """Refuse a path whose estimated passes or points are over `MAX_PASSES` or `MAX_PATH_POINTS`
+    before it is planned: InputError naming the field, with the estimate."""
+    width = float(np.sort(np.asarray(mesh.extents, float))[-2])
+    passes = width / spacing / (2.0 if pattern == "spiral" else 1.0)
+    limit = MAX_PASSES.get(pattern, MAX_PASSES["spiral"])
+    if passes > limit:
+        raise InputError(
+            f"spacing: {spacing * 1e3:g} mm lays about {passes:.0f} {pattern} passes over the "
+            f"{width * 1e3:g} mm wide workpiece, above the budget of {limit} "
+            f"(workbench.polishing.process_path.MAX_PASSES); use a spacing of at least "
+            f"{width / limit / (2.0 if pattern == 'spiral' else 1.0) * 1e3:.2g} mm"
+        )
+    points = float(mesh.area) / (spacing * step)
+    if points > MAX_PATH_POINTS:
+        raise InputError(
+            f"step: {step * 1e3:g} mm with spacing {spacing * 1e3:g} mm makes about "
+            f"{points:.3g} path points on the {float(mesh.area) * 1e6:.3g} mm² workpiece, above "
+            f"the budget of {MAX_PATH_POINTS:,} (workbench.polishing.process_path."
+            "MAX_PATH_POINTS); raise the step or the spacing"
+        )
+
+
 _KIND_NAMES = {0: "lead-in", 1: "process point", 2: "lead-out"}
 
 
@@ -102,6 +132,7 @@ def plan_process_path(
     report = progress or (lambda f, m: None)
     if pattern not in PATTERNS:
         raise InputError(f"pattern: {pattern!r} is not one of {PATTERNS}")
+    check_path_budget(mesh, pattern, step, spacing)
     report(0.2, f"{pattern} path")
     path = _PLANNERS[pattern](
         mesh,

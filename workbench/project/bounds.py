@@ -120,21 +120,24 @@ CUTOFF_HZ = (0.1, 100_000.0)
 """Polishing contact: the force sensor's low-pass cutoff [Hz]."""
 
 # -- work budgets (refused before the work starts, with the estimate) ---------------------------------
-LATENCY_MAX_CYCLES = 1_000
-"""Polishing: latency x control rate, in whole control cycles (the stability check's matrix
-grows with its square)."""
-POLISH_MAX_POINTS = 200_000
-"""Polishing: path points estimated from the workpiece's area, the spacing and the step."""
-SIMULATION_MAX_STEPS = 5_000_000
-"""Polishing: controller steps of a simulation (path time x control rate)."""
-ASSEMBLY_MAX_CELLS = 1_000_000
-"""Assembly: cubic cells a part is subdivided into (its bounding box / cell_size³)."""
-ASSEMBLY_MAX_GRID = 1_000_000
-"""Assembly (ant): candidate points, step x (the part's cross-section / dis²)."""
-TRAJECTORY_MAX_SAMPLES = 2_000_000
-"""Motion: samples of one trajectory (its duration / dt)."""
-PATH_MAX_POSES = 1_000_000
-"""Motion: interpolated poses of a program's linear moves (length / step)."""
+LATENCY_MAX_CYCLES = 100
+"""Polishing: latency x control rate, in whole control cycles (the orientation loop's
+stability check solves for poles of a matrix that grows with it; 200 cycles take ~25 s)."""
+
+BUDGETS = (
+    "workbench.project.bounds.LATENCY_MAX_CYCLES",
+    "workbench.motion.trajectory.MAX_SAMPLES",
+    "workbench.assembly.cells.MAX_CELLS",
+    "workbench.assembly.planners.ant.MAX_PLANE_POINTS",
+    "workbench.assembly.planners.ant.MAX_LINE_SAMPLES",
+    "workbench.polishing.process_path.MAX_PASSES",
+    "workbench.polishing.process_path.MAX_PATH_POINTS",
+    "workbench.polishing.force_control.MAX_STEPS",
+    "workbench.collision.shapes.SOLID_SIZE",
+)
+"""The work budgets, each a named setting next to the work it bounds (the domain packages
+cannot import the project's modules): work whose estimate exceeds one is refused before it
+starts, naming the setting and the estimate."""
 
 
 @dataclass(frozen=True)
@@ -180,11 +183,3 @@ def span(bounds: tuple[float, float], unit: str = "", *, lo_open: bool = False) 
 def symmetric(limit: float, unit: str = "") -> Range:
     """Return the `Range` [-limit, limit]."""
     return Range(-limit, limit, unit)
-
-
-def budget_message(what: str, estimate: float, limit: float, name: str, fix: str) -> str:
-    """Return the message of work refused before it starts: the estimate, the budget, the fix."""
-    return (
-        f"{what}: about {estimate:.3g} would be needed, above the budget of {limit:.3g} "
-        f"(workbench.project.bounds.{name}); {fix}"
-    )

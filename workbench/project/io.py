@@ -57,6 +57,10 @@ def problems_from(error: ValidationError) -> list[tuple[str, str]]:
     return [(field_path(tuple(e["loc"])), _message(dict(e))) for e in error.errors()]
 
 
+class _NonFinite(ValueError):
+    """A NaN or Infinity literal in the JSON text."""
+
+
 def _reject_nonfinite(value: str) -> float:
     raise _NonFinite(f"{value} is not allowed; numbers must be finite")
 
@@ -94,9 +98,7 @@ def _check_tree(data: object, source: str) -> None:
                     f"{path or 'the top-level object'}; keep one (JSON readers differ on which wins)",
                     [(where, "duplicate key")],
                 )
-            stack.extend(
-                (v, f"{path}.{k}" if path else str(k), depth + 1) for k, v in node.items()
-            )
+            stack.extend((v, f"{path}.{k}" if path else str(k), depth + 1) for k, v in node.items())
         elif isinstance(node, list):
             stack.extend((v, f"{path}[{i}]", depth + 1) for i, v in enumerate(node))
 
@@ -111,7 +113,8 @@ def parse_json(text: str | bytes, *, source: str = "project") -> Any:
         if b"\x00" in text[:8192]:
             raise ProjectError(
                 f"{source}: a binary file (it holds NUL bytes), not JSON text; give a project"
-                " JSON file", [("(file)", "binary file")]
+                " JSON file",
+                [("(file)", "binary file")],
             )
         try:
             text = bytes(text).decode("utf-8-sig")
@@ -136,13 +139,11 @@ def parse_json(text: str | bytes, *, source: str = "project") -> Any:
             [("(file)", "nested too deeply")],
         ) from None
     except ValueError as exc:  # e.g. an integer with more digits than Python reads
-        raise ProjectError(f"{source}: cannot read a value: {exc}", [("(file)", str(exc))]) from None
+        raise ProjectError(
+            f"{source}: cannot read a value: {exc}", [("(file)", str(exc))]
+        ) from None
     _check_tree(data, source)
     return data
-class _NonFinite(ValueError):
-    """A NaN or Infinity literal in the JSON text."""
-
-
 
 
 def _migrate(data: dict[str, Any]) -> dict[str, Any]:

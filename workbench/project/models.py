@@ -17,16 +17,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from pydantic import Field, model_validator
 
+from workbench.project import bounds as B
 from workbench.project.assembly import AssemblySpec
 from workbench.project.bending import BendingSpec
 from workbench.project.collision import CollisionSpec
-from workbench.project import bounds as B
 from workbench.project.common import (
     Angle,
     Color,
     Coordinate,
-    Joints,
     JointAngle,
+    Joints,
     MeshScale,
     Pose,
     Size3mm,

@@ -282,6 +282,8 @@ ITEM_TAG = "item:"
 
 def _item_tag(v: Any) -> str | None:
     t = v.get("type") if isinstance(v, dict) else getattr(v, "type", None)
+    if not isinstance(t, str):  # a list or object as the type: no item (the field is named)
+        return None
     if t in ("joint", "linear"):
         return ITEM_TAG + "move"
     return ITEM_TAG + t if t in ACTION_ITEMS else None

@@ -170,7 +170,9 @@ def plan_motion(
         model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp
     )
     report(0.2, "jerk-limited timing")
-    traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
+    traj = time_program(
+        path, model.max_acceleration, model.max_jerk, position_limits=model.limits, program=program
+    )
     plan = plan_from_trajectory(
         program,
         traj,
