@@ -85,3 +85,39 @@ def test_containment_of_one_configuration_equals_the_batched_test(
     one = np.stack([eng.containment.contained_one(eng.poses(q[None])[0]) for q in qs])
     np.testing.assert_array_equal(one, batched)
     assert batched.any()  # some probe does fall inside (adjacent links overlap)
+
+
+def test_items_of_one_configuration_equal_the_batched_items(
+    post_cell: tuple[Workbench, CollisionEngine],
+) -> None:
+    """Twin: `SpheresMode.items_one` (one gather, the fused field look-up, one pair norm)
+    against the batched `items` at 200 configurations: the same values to rounding, hence
+    the same flagged groups."""
+    wb, eng = post_cell
+    rng = np.random.default_rng(7)
+    lim = wb.robot.limits
+    qs = rng.uniform(lim[:, 0], lim[:, 1], (200, 6))
+    batched = eng.items(qs)[0]
+    one = np.stack([eng.checker.items_one(eng.bodies.poses_one(q)) for q in qs])
+    np.testing.assert_allclose(one, batched, rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(one <= 0, batched <= 0)
+    assert (batched <= 0).any() and (batched > 0).any()
+
+
+def test_fast_field_query_equals_the_checked_query(
+    post_cell: tuple[Workbench, CollisionEngine],
+) -> None:
+    """Twin: `SparseSDF.query_fast` against `query` in the band, in far blocks and outside
+    the grid (where it hands over to `query`)."""
+    _, eng = post_cell
+    sdf = eng.sdf
+    assert sdf is not None
+    lo, hi = sdf.mesh_bounds
+    rng = np.random.default_rng(8)
+    inside = rng.uniform(lo, hi, (5000, 3))
+    np.testing.assert_allclose(sdf.query_fast(inside), sdf.query(inside), rtol=0, atol=1e-12)
+    near = inside[np.abs(sdf.query(inside)) < sdf.band]
+    assert len(near) > 100
+    np.testing.assert_allclose(sdf.query_fast(near[:42]), sdf.query(near[:42]), rtol=0, atol=1e-12)
+    wide = rng.uniform(lo - 1.0, hi + 1.0, (2000, 3))
+    np.testing.assert_array_equal(sdf.query_fast(wide), sdf.query(wide))

@@ -9,6 +9,8 @@ body's frame (`relative_levers`).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import trimesh
 from numpy.typing import ArrayLike, NDArray
@@ -72,6 +74,16 @@ class RobotBodies:
         T.flags.writeable = False
         self._last = (q.copy(), T)
         return T
+
+    def poses_one(self, q: FloatArray) -> FloatArray:
+        """Return world poses (B, 4, 4) at one configuration q (dof,) float64 [rad] (not kept).
+
+        The scalar DH chain (`link_transforms` of one row), no batch bookkeeping; a q of
+        the wrong shape or not finite raises as `poses` does.
+        """
+        if q.shape != (self.dof,) or not math.isfinite(sum(q.tolist())):
+            return self.poses(q[None])[0]  # raises InputError
+        return np.matmul(self.T_world_base, self.robot.link_transforms(q)).take(self.frame, axis=0)
 
     def relative_levers(
         self,

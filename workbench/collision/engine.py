@@ -112,6 +112,7 @@ class CollisionEngine:
             bodies, self.pairs.node_distances, margin=self.margin, cache_dir=cache_dir, enabled=fast
         )
         self._twin: CollisionEngine | None = self if mode == "exact" else None
+        self._group_tables: list[list[tuple[Pair, PairTable | None]]] | None = None
         report(1.0, "collision engine ready")
 
     # -- what the modes hold ---------------------------------------------------------
@@ -243,36 +244,45 @@ class CollisionEngine:
         return ConfigCheck(False, False, low)
 
     def _check_fast(self, qq: FloatArray) -> ConfigCheck:
-        """Return `check` of one configuration qq (1, dof) [rad] in a fast mode."""
-        clr, _ = self.items(qq)
-        gmin = np.minimum.reduceat(clr[0], self.group_start)
-        flagged = np.flatnonzero(gmin <= 0.0)
-        held = self.containment.contained_one(self.bodies.poses(qq)[0])
-        if not flagged.size and not held.any():
-            return ConfigCheck(False, False, float(gmin.min()))
-        low = float(np.min(gmin[gmin > 0.0], initial=np.inf))
+        """Return `check` of one configuration qq (1, dof) [rad] in a fast mode.
+
+        One row's path throughout: the scalar FK (`RobotBodies.poses_one`), the mode's
+        `items_one` where it has one (spheres), the containment batch of one configuration,
+        then the flagged groups' pair tables in scalar math (the lists built once).
+        """
+        poses = self.bodies.poses_one(qq[0])
+        one = getattr(self.checker, "items_one", None)
+        clr = one(poses) if one is not None else self.items(qq)[0][0]
+        gmin = np.minimum.reduceat(clr, self.group_start).tolist()
+        held = self.containment.contained_one(poses).tolist()
+        low = min(gmin)
+        if low > 0.0 and True not in held:
+            return ConfigCheck(False, False, low)
+        flagged = [g for g, v in enumerate(gmin) if v <= 0.0]
+        low = min((v for v in gmin if v > 0.0), default=np.inf)
         qv = qq[0].tolist()
-        poses = self.bodies.poses(qq)[0]
         self.pairs.place(poses)
-        tables = self.tables.tables
+        if self._group_tables is None:
+            tables = self.tables.tables
+            self._group_tables = [[(p, tables.get(p)) for p in g] for g in self.group_pairs]
+        margin = self.margin
         unsettled: list[Pair] = []
-        for g in flagged.tolist():
-            for pair in self.group_pairs[g]:
-                table = tables.get(pair)
-                lb = table.bound_one(qv) - self.margin if table is not None else -np.inf
+        for g in flagged:
+            for pair, table in self._group_tables[g]:
+                lb = table.bound_one(qv) - margin if table is not None else -np.inf
                 if lb > 0.0:
                     low = min(low, lb)
                 else:
                     unsettled.append(pair)
-        unsettled += [p for p, h in zip(self.always_pairs, held.tolist(), strict=True) if h]
+        if True in held:
+            unsettled += [p for p, h in zip(self.always_pairs, held, strict=True) if h]
         for pair in dict.fromkeys(unsettled):  # in order, once each
             if self.pairs.collides(pair):
                 a, b = pair
-                qv0 = qq[0]
-                return ConfigCheck(True, True, 0.0, a, b, self.penetration(qv0, a, b))
+                return ConfigCheck(True, True, 0.0, a, b, self.penetration(qq[0], a, b))
         for pair in dict.fromkeys(unsettled):
             low = min(low, self.pairs.distance(pair))
-        return ConfigCheck(False, bool(flagged.size), max(low, 0.0))
+        return ConfigCheck(False, bool(flagged), max(low, 0.0))
 
     def check_path(
         self,

@@ -138,7 +138,7 @@ class PairTable:
             i = min(max(round((x - lo) / st), 0), n - 1)  # round half to even, like np.rint
             flat = flat * n + i
             slack += abs(x - (lo + i * st)) * lev
-        v = float(self.values.reshape(-1)[flat])
+        v = self.values.item(flat)  # a Python float, no array scalar
         if v != v:  # NaN: not computed yet
             return float(self.bound(np.asarray([q], float))[0])
         return v - slack

@@ -88,6 +88,9 @@ def is_watertight(vertices: FloatArray, faces: IntArray) -> bool:
     return bool(np.all(counts == 2))
 
 
+_SIDE, _SIDE0, _ONES8 = np.array([-1.0, 1.0]), np.array([1.0, 0.0]), np.ones(8)
+
+
 def _max_error(values: NDArray[np.float32], fine_cell: float) -> float:
     """Return the bound [m] on |query - exact signed distance| where |d| <= band: half a fine
     cell's diagonal (trilinear interpolation of a 1-Lipschitz field) plus float32 rounding."""
@@ -118,6 +121,15 @@ class SparseSDF:
         # single-configuration check read twice when it was a property).
         self.values.flags.writeable = False
         self.max_error: float = _max_error(self.values, self.fine_cell_size)
+        # `query_fast`'s constants: grid strides, the 8 corner offsets of a fine cell.
+        e = self.subdivisions + 1
+        d1, d2 = int(self.dims[1]), int(self.dims[2])
+        self._strides = np.array([d1 * d2, d2, 1], np.int64)
+        self._fine_strides = np.array([e * e, e, 1], np.int64)
+        self._corners = np.array(
+            [(dx * e + dy) * e + dz for dx in (0, 1) for dy in (0, 1) for dz in (0, 1)], np.int64
+        )
+        self._dims_l: list[int] = [int(x) for x in self.dims]
 
     @property
     def fine_cell_size(self) -> float:
@@ -250,6 +262,40 @@ class SparseSDF:
                         acc += wx * wy * wz * val
             out[near] = acc
         return out
+
+
+    def query_fast(self, points: FloatArray) -> FloatArray:
+        """Return `query` at points (M, 3) [m] that the caller guarantees finite float64.
+
+        The same trilinear interpolation in ~20 numpy calls on preallocated constants (the
+        8 corners gathered at once), for the few points of one configuration; points outside
+        the grid go to `query`.
+        """
+        g = (points - self.origin) / self.cell_size
+        cf = np.floor(g)
+        ci = cf.astype(np.int64)
+        # In the grid: negative indices wrap to huge unsigned ones; one reduction for all.
+        hi = ci.view(np.uint64).max(axis=0).tolist()
+        if not (hi[0] < self._dims_l[0] and hi[1] < self._dims_l[1] and hi[2] < self._dims_l[2]):
+            return self.query(points)
+        flat = ci @ self._strides
+        blk = self._block_flat.take(flat).astype(np.int64)
+        s = self.subdivisions
+        local = (g - cf) * s
+        fi = np.floor(local)
+        np.minimum(fi, s - 1.0, out=fi)  # local >= 0; == s only by rounding
+        t = local - fi
+        e3 = (s + 1) ** 3
+        base = np.maximum(blk, 0) * e3 + fi.astype(np.int64) @ self._fine_strides
+        v = self._values_flat.take(base[:, None] + self._corners)  # (M, 8)
+        tt = t[:, :, None] * _SIDE + _SIDE0  # (M, 3, 2): weights 1 - t and t per axis
+        w = tt[:, 0, :, None, None] * tt[:, 1, None, :, None] * tt[:, 2, None, None, :]
+        w = w.reshape(-1, 8)
+        w *= v
+        acc = w @ _ONES8
+        if blk.min() < 0:
+            return np.where(blk < 0, self._far_flat.take(flat), acc)  # type: ignore[no-any-return]
+        return acc  # type: ignore[no-any-return]
 
 
 def _unique_keys(key: IntArray, size: int | None) -> tuple[IntArray, IntArray]:
