@@ -21,18 +21,32 @@ PAGE_TIMEOUT_MS = 90_000  # [ms] limit of a Playwright action or wait (the conte
 NOTIFICATION_CLOSE = "button.mantine-Notification-closeButton"
 
 
-def set_slider(page, label: str, value: float) -> None:  # type: ignore[no-untyped-def]
-    """Type `value` into the number box beside the viser slider labelled `label`."""
+def number_box(page, label: str):  # type: ignore[no-untyped-def]
+    """Return the text box of the numeric field labelled `label` (workbench/gui/fields.py)."""
     row = (
         page.locator(".mantine-Flex-root, div")
         .filter(has=page.get_by_text(label, exact=True))
-        .filter(has=page.get_by_role("slider"))
+        .filter(has=page.locator("input[type=text], input:not([type])"))
         .last
     )
-    box = row.locator("input").last
+    return row.locator("input").first
+
+
+def type_number(page, label: str, text: str) -> None:  # type: ignore[no-untyped-def]
+    """Type `text` into the numeric field labelled `label` (committed by the server after a pause)."""
+    box = number_box(page, label)
     box.click()
-    box.fill(f"{value}")
+    box.fill(text)
     box.press("Enter")
+
+
+def set_slider(page, label: str, value: float) -> None:  # type: ignore[no-untyped-def]
+    """Type `value` into the text box of the slider field labelled `label`.
+
+    The slider's own number box is hidden (it reads "12,5" as 125); typed values go through
+    the field's strict text box, the slider beside it follows.
+    """
+    type_number(page, label, f"{value}")
 
 
 def canvas_png(page) -> bytes:  # type: ignore[no-untyped-def]

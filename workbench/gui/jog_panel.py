@@ -11,12 +11,13 @@ from collections.abc import Callable
 import numpy as np
 import viser
 
-from workbench.errors import UnreachableError
+from workbench.errors import JointLimitError, UnreachableError
 from workbench.geometry.transforms import (
     make_transform,
     matrix_to_rpy,
     wxyz_to_matrix,
 )
+from workbench.gui.fields import NumberField, format_number
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded
 from workbench.gui.scene import place
@@ -42,20 +43,23 @@ class JogPanel:
     def build(self) -> None:
         """Create the sliders, dropdown, gizmo and status for the current project."""
         s, wb = self.server, self.wb
-        q = self._controller_deg()
-        limits = wb.robot.convention.limits_to_controller(wb.robot.limits) * DEG_PER_RAD
-        self.sliders = []
+        self.limits = wb.robot.convention.limits_to_controller(wb.robot.limits) * DEG_PER_RAD
+        self.joint_fields = []
         for j in range(wb.robot.dof):
-            lo, hi = limits[j]
-            slider = s.gui.add_slider(
-                f"J{j + 1} [deg]",
-                min=float(np.floor(lo * 10) / 10),
-                max=float(np.ceil(hi * 10) / 10),
-                step=0.1,
-                initial_value=float(np.clip(q[j], lo, hi)),
+            lo, hi = self.limits[j]
+            self.joint_fields.append(
+                NumberField(
+                    s,
+                    f"J{j + 1} [deg]",
+                    get=lambda j=j: float(self._controller_deg()[j]),
+                    put=lambda v, j=j: self._set_joint(j, v),
+                    allowed=lambda lo=lo, hi=hi: f"[{format_number(lo)}, {format_number(hi)}] deg",
+                    changed=self.refresh,
+                    slider=(float(np.floor(lo * 10) / 10), float(np.ceil(hi * 10) / 10), 0.1),
+                    hint=f"controller joint value [deg], {format_number(lo)} to {format_number(hi)}",
+                )
             )
-            slider.on_update(guarded(s, f"Joint {j + 1}")(self._on_slider))
-            self.sliders.append(slider)
+        self.sliders = [f.slider for f in self.joint_fields]
         self.config = s.gui.add_dropdown(
             "IK configuration",
             options=("current",),
@@ -64,7 +68,8 @@ class JogPanel:
         )
         self.config.on_update(guarded(s, "IK configuration")(self._on_config))
         self.status = s.gui.add_markdown("")
-        self.handles = [*self.sliders, self.config, self.status]
+        self.handles = [h for f in self.joint_fields for h in f.handles]
+        self.handles += [self.config, self.status]
         self.gizmo = s.scene.add_transform_controls("/tcp_gizmo", scale=0.18, depth_test=False)
         self.gizmo.on_update(guarded(s, "Move TCP")(self._on_gizmo))
         self.refresh()
@@ -76,19 +81,29 @@ class JogPanel:
         self.gizmo.remove()
 
     # -- callbacks ----------------------------------------------------------------------
-    def _on_slider(self, _event: object) -> None:
-        if self._syncing:
-            return
-        q_ctrl = np.array([sl.value for sl in self.sliders]) / DEG_PER_RAD
-        self.wb.set_joints(self.wb.robot.convention.to_model(q_ctrl))
-        self.refresh()
+    def _set_joint(self, j: int, value_deg: float) -> None:
+        """Move joint j to the controller value [deg]; refused outside its limits (robot stays)."""
+        lo, hi = self.limits[j]
+        if not lo - 1e-9 <= value_deg <= hi + 1e-9:
+            raise JointLimitError(
+                f"joint {j + 1}: {format_number(value_deg)} deg is outside its limits"
+                f" [{format_number(lo)}, {format_number(hi)}] deg"
+            )
+        q_ctrl = self._controller_deg()
+        q_ctrl[j] = value_deg
+        self.wb.set_joints(self.wb.robot.convention.to_model(q_ctrl / DEG_PER_RAD))
 
-    def _on_config(self, _event: object) -> None:
-        if self._syncing or self.config.value == "current":
+    def _on_config(self, event: object) -> None:
+        if self._syncing or getattr(event, "client", None) is None:
             return
-        label = str(self.config.value).split(": ", 1)[1]
-        self.wb.move_tcp(self.wb.tcp_pose(), configuration=label)
-        self.refresh()
+        label = str(self.config.value)
+        if label not in self._labels:
+            self.refresh()
+            return
+        try:
+            self.wb.move_tcp(self.wb.tcp_pose(), configuration=label)
+        finally:
+            self.refresh()
 
     def _on_gizmo(self, event: viser.TransformControlsEvent) -> None:
         # IK is committed on release: during the drag only the gizmo moves.
@@ -112,20 +127,24 @@ class JogPanel:
     def refresh(self) -> None:
         """Put the sliders, gizmo, dropdown and status in line with the workbench's state."""
         wb = self.wb
-        q = self._controller_deg()
         T = wb.tcp_pose()
         try:
             sols = wb.ik_solutions(T)
         except UnreachableError:
             sols = []
-        labels = [f"{i + 1}: {s.label}" for i, s in enumerate(sols)]
+        # The list in a fixed order (by label: the set depends on the pose only), so a pick
+        # neither reorders nor renumbers it; the value is the configuration the arm is in.
+        self._labels = sorted(s.label for s in sols)
+        current = next((s.label for s in sols if np.abs(s.q - wb.joints).max() < 1e-6), "current")
         self._syncing = True
         try:
-            for slider, v in zip(self.sliders, q, strict=True):
-                if abs(slider.value - v) > 1e-9:
-                    slider.value = float(v)  # type: ignore[misc]
-            self.config.options = ("current", *labels)
-            self.config.value = "current"  # type: ignore[misc]
+            for field in self.joint_fields:
+                field.refresh()
+            options = tuple(self._labels) if current != "current" else ("current", *self._labels)
+            if tuple(self.config.options) != options:
+                self.config.options = options
+            if self.config.value != current:
+                self.config.value = current  # type: ignore[misc]
         finally:
             self._syncing = False
         place(self.gizmo, T)
