@@ -24,7 +24,7 @@ from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.picker import Picker
 from workbench.gui.polishing_panel import PolishingPanel
 from workbench.gui.project_panel import ProjectPanel
-from workbench.gui.scene import RobotScene
+from workbench.gui.scene import CameraViews, RobotScene
 from workbench.gui.server_guard import (
     PINNED_VISER,
     AccessPolicy,
@@ -132,6 +132,7 @@ class WorkbenchApp:
         server.gui.configure_theme(control_width="large", dark_mode=False)
         self.banner = server.gui.add_markdown("", visible=False)
         self.jobs.attach(self.banner)
+        self.views = CameraViews(server, wb)  # above the tabs: camera fit and view presets
         self.picker: Picker | None = None
         if picker:
             self.picker = Picker(server, lambda ex, event: self.project_panel.open(ex, event))
@@ -151,8 +152,11 @@ class WorkbenchApp:
     def _build_panels(self) -> None:
         with self.robot_tab:
             self.jog = JogPanel(self.server, self.wb, on_moved=self.scene.update)
+        self.scene.gizmo, self.scene.timeline = self.jog.gizmo, self.timeline
         with self.motion_tab:
-            self.motion = MotionPanel(self.server, self.wb, self.timeline, on_replaced=self.rebuild)
+            self.motion = MotionPanel(
+                self.server, self.wb, self.timeline, on_replaced=self.rebuild, scene=self.scene
+            )
         self._build_workflows()
 
     def _build_workflows(self) -> None:
@@ -210,6 +214,7 @@ class WorkbenchApp:
             self.scene.clear()
             self.scene.build()
             self._build_panels()
+            self.views.frame_all()
             if hasattr(self, "project_panel"):
                 self.project_panel.refresh()
         release_memory()  # the replaced project's memory back to the OS

@@ -60,6 +60,8 @@ class BendingPanel:
         part = svc.part
         nb = len(part.bends)
         self.info = g.add_markdown(self._describe())
+        self.look = g.add_button("Look at die and part", icon=viser.Icon.FOCUS_2)
+        self.look.on_click(guarded(s, "View")(lambda e: self.app.views.frame_bending(e.client)))
         self.sequence = g.add_text(
             "Sequence", ",".join(svc.sequence), hint="Bend names in order, comma-separated"
         )
@@ -110,6 +112,7 @@ class BendingPanel:
         self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)")
         self.handles += [
             self.info,
+            self.look,
             self.sequence,
             self.apply_sequence,
             *self.step_field.handles,

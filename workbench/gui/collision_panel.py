@@ -25,6 +25,26 @@ def _colormap(values: np.ndarray, scale: float) -> np.ndarray:
     return rgb.astype(np.uint8)
 
 
+FIELD_SCALE = 0.2  # [m] the distance at which the slice's colours saturate
+MM_PER_M = 1000.0  # display only
+
+
+def colour_bar(width: int = 256, height: int = 14) -> np.ndarray:
+    """Return the slice's colour legend as an RGB image (height, width, 3), -scale to +scale."""
+    row = _colormap(np.linspace(-FIELD_SCALE, FIELD_SCALE, width), FIELD_SCALE)
+    return np.repeat(row[None], height, axis=0)
+
+
+def legend_text(values: np.ndarray, z: float) -> str:
+    """Return the legend of a slice at height `z` [m] with `values` [m]: its range in mm."""
+    lo, hi = float(np.min(values)) * MM_PER_M, float(np.max(values)) * MM_PER_M
+    s = FIELD_SCALE * MM_PER_M
+    return (
+        f"Distance field at z = {z * MM_PER_M:.0f} mm: **min {lo:.0f} mm, max {hi:.0f} mm**  \n"
+        f"red −{s:.0f} mm (inside) · white 0 (surface) · blue +{s:.0f} mm and beyond"
+    )
+
+
 class CollisionPanel:
     """The plan collision mode (the project's `collision.mode`), toggles for the fitted spheres
     and the SDF slice, and the conservative check's report."""
@@ -45,6 +65,8 @@ class CollisionPanel:
             self.show_spheres = g.add_checkbox("Show spheres", initial_value=False)
             self.show_field = g.add_checkbox("Show distance field", initial_value=False)
             self.height = g.add_slider("Slice height [mm]", 0.0, 2000.0, 10.0, 400.0)
+            self.legend_bar = g.add_image(colour_bar(), label="Distance [mm]", visible=False)
+            self.legend = g.add_markdown("", visible=False)
             self.check_button = g.add_button("Check", icon=viser.Icon.SHIELD_CHECK)
             self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
             self.report = g.add_markdown("")
@@ -112,6 +134,7 @@ class CollisionPanel:
         if self.field_node is not None:
             self.field_node.remove()
             self.field_node = None
+        self.legend_bar.visible = self.legend.visible = bool(self.show_field.value)
         if not self.show_field.value:
             return
         self._engine()
@@ -119,7 +142,8 @@ class CollisionPanel:
         values, corners = self.app.wb.collision.sdf_slice("z", z, size=96)
         size = corners[1] - corners[0]
         # Image rows run along -y, columns along +x.
-        image = _colormap(values.T[::-1], 0.2)
+        image = _colormap(values.T[::-1], FIELD_SCALE)
+        self.legend.content = legend_text(values, z)
         self.field_node = self.app.server.scene.add_image(
             "/collision/field",
             image,

@@ -1,13 +1,16 @@
-"""The "Motion" tab: plan the project's program, see the checks, export robot programs."""
+"""The "Motion" tab: the program table and its editor, plan the program, see the checks, export
+robot programs; the last plan's TCP path in 3D."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import viser
 
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
+from workbench.gui.program_editor import ProgramEditorPanel, table_markdown
 from workbench.gui.progress import busy
 from workbench.gui.timeline import Timeline
 from workbench.service import EXPORT_FORMATS, ExportedProgram, Workbench
@@ -15,7 +18,10 @@ from workbench.service.program_import import program_files
 
 
 class MotionPanel:
-    """Plan button with progress, the plan's summary, and program export."""
+    """The program table and editor, Plan with progress, the plan's summary, program export.
+
+    `scene` (the `RobotScene`, optional) draws the last plan's TCP path and lets the TCP
+    gizmo follow its playback."""
 
     def __init__(
         self,
@@ -23,11 +29,14 @@ class MotionPanel:
         wb: Workbench,
         timeline: Timeline,
         on_replaced: Callable[[], None] = lambda: None,
+        scene: Any = None,
     ) -> None:
         self.server, self.wb, self.timeline = server, wb, timeline
         self.on_replaced = on_replaced
+        self.scene = scene
         g = server.gui
         self.program = g.add_markdown("")
+        self.editor = ProgramEditorPanel(server, wb, on_changed=self.refresh)
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
@@ -57,30 +66,16 @@ class MotionPanel:
 
     def remove(self) -> None:
         """Remove the widgets (before the project is replaced)."""
+        self.editor.remove()
         for h in self.handles:
             h.remove()
 
     def refresh(self) -> None:
-        """Describe the project's program."""
-        spec = self.wb.project.program
-        if spec is None:
-            self.program.content = (
-                "This project has no program. Add a `program` with moves to its JSON."
-            )
-            self.plan_button.disabled = True
-            return
-        rows = "\n".join(
-            f"| {i + 1} | {m.name or '-'} | {m.type} | {m.speed:g} {'%' if m.type == 'joint' else 'mm/s'}"
-            f" | {'fine' if m.zone == 0 else f'{m.zone:g} mm'} |"
-            if m.type in ("joint", "linear")
-            else f"| {i + 1} | - | {m.type} | {_action_text(m)} | |"
-            for i, m in enumerate(spec.moves)
-        )
-        self.program.content = (
-            f"**Program `{spec.name}`**\n\n| # | name | type | speed | zone |\n"
-            f"|---|---|---|---|---|\n{rows}"
-        )
-        self.plan_button.disabled = False
+        """Show the project's program with the last plan's durations (stale after an edit)."""
+        if not hasattr(self, "plan_button"):
+            return  # the editor's first refresh, before the panel is complete
+        self.program.content = table_markdown(self.wb, self.editor.selected)
+        self.plan_button.disabled = self.wb.project.program is None
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
         with busy(
@@ -89,6 +84,9 @@ class MotionPanel:
             plan = self.wb.plan_motion(progress=progress)
         self.result.content = ("**OK:** " if plan.ok else "**Problems:** ") + plan.summary()
         self.download.disabled = False
+        self.refresh()
+        if self.scene is not None:
+            self.scene.show_plan(plan.samples)  # the TCP path; the gizmo follows its playback
         self.timeline.load(
             plan.samples,
             robot=self.wb.robot,
@@ -100,7 +98,7 @@ class MotionPanel:
         if event.client is not None:
             name, data = download_of(exported, f"{self.wb.project.program.name}_{fmt}")  # type: ignore[union-attr]
             event.client.send_file_download(name, data, save_immediately=True)
-
+        self.refresh()  # a stale plan was planned again for the export
 
     def _on_import(self, event: viser.GuiEvent) -> None:
         up = self.upload.value
@@ -112,12 +110,6 @@ class MotionPanel:
             text = "\n".join(f"- {n}" for n in notes[:20])
             more = f"\n- … and {len(notes) - 20} more" if len(notes) > 20 else ""
             notify(self.server, event.client, "Import notes", text + more, color="yellow")
-
-
-def _action_text(item: object) -> str:
-    """Return a program action's fields as short text ("action close", "signal grip = True")."""
-    fields = {k: v for k, v in vars(item).items() if k != "type"}
-    return ", ".join(f"{k} {v}" for k, v in fields.items())
 
 
 def download_of(exported: ExportedProgram, stem: str) -> tuple[str, bytes]:

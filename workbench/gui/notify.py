@@ -15,6 +15,8 @@ from workbench.gui.jobs import callback_scope
 
 log = logging.getLogger("workbench.gui")
 F = TypeVar("F", bound=Callable[..., Any])
+INFORMING = ("green", "blue")  # notification colours that close by themselves
+AUTO_CLOSE_S = 6.0  # [s] how long an informing notification stays
 
 
 def notify(
@@ -33,7 +35,9 @@ def notify(
             body,
             color=color,
             with_close_button=True,  # type: ignore[call-overload]
-            auto_close_seconds=6.0 if color == "green" else None,  # warnings and errors stay
+            # what informs (green: done, blue: for your information) closes by itself;
+            # warnings and errors stay until closed
+            auto_close_seconds=AUTO_CLOSE_S if color in INFORMING else None,
         )
 
 

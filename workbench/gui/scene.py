@@ -1,8 +1,12 @@
-"""Scene nodes of the robot, its tool and the cell; moved by pose, recoloured on collision."""
+"""Scene nodes of the robot, its tool and the cell; moved by pose, recoloured on collision; the
+last motion plan's TCP path; the camera views (fit to the service's scene bounds, presets)."""
 
 from __future__ import annotations
 
+import logging
+import traceback
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 import trimesh
@@ -10,10 +14,39 @@ import viser
 from numpy.typing import NDArray
 
 from workbench.geometry.transforms import matrix_to_wxyz
-from workbench.service import Workbench
+from workbench.gui.notify import guarded
+from workbench.service import SampledMotion, Workbench
+from workbench.service.scene_bounds import scene_bounds
 
+log = logging.getLogger("workbench.gui")
 ROBOT_COLOR = (235, 235, 240)
 COLLISION_COLOR = (230, 40, 40)
+PATH_COLOR = (30, 110, 230)
+VIEWS: dict[str, tuple[float, float, float]] = {
+    "Front": (0.0, -1.0, 0.0),  # from -y, looking along +y
+    "Top": (0.0, -0.01, 1.0),  # from above (a hair off the pole: the orbit controls keep +z up)
+    "Side": (1.0, 0.0, 0.0),  # from +x, looking along -x
+    "Iso": (1.0, -1.0, 0.8),
+}
+"""The view presets: the direction from the framed box's centre to the camera (world)."""
+MIN_RADIUS = 0.15  # [m] the smallest sphere a view frames (a flat or tiny box)
+DEFAULT_FOV = np.pi * 50 / 180  # [rad] vertical field of view before the client reports its own
+
+
+def camera_pose(
+    lo: NDArray[np.float64],
+    hi: NDArray[np.float64],
+    direction: tuple[float, float, float],
+    fov: float,
+    aspect: float,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Return (position, look_at) [m] of a camera looking along -`direction` at the box
+    [`lo`, `hi`] so that its bounding sphere fits the narrower of the two fields of view."""
+    centre = (lo + hi) / 2
+    radius = max(float(np.linalg.norm(hi - lo)) / 2, MIN_RADIUS)
+    half = min(fov / 2, float(np.arctan(np.tan(fov / 2) * max(aspect, 1e-3))))
+    d = np.asarray(direction, float)
+    return centre + d / np.linalg.norm(d) * radius / np.sin(half) * 1.05, centre
 
 
 def place(handle: viser.SceneNodeHandle, T: NDArray[np.float64]) -> None:
@@ -51,6 +84,12 @@ class RobotScene:
         # Called with the joints (None: the workbench's own) after every pose, for what
         # follows the robot (e.g. the collision spheres).
         self.on_show: list[Callable[[NDArray[np.float64] | None], None]] = []
+        # The TCP gizmo (the Robot tab's) shows where it acts: on the robot's own joints and
+        # on the playback of the last motion plan, which it follows; hidden elsewhere.
+        self.gizmo: Any = None
+        self.timeline: Any = None
+        self.plan_samples: SampledMotion | None = None
+        self.path_node: Any = None
         self.build()
 
     def build(self) -> None:
@@ -81,6 +120,30 @@ class RobotScene:
             h.remove()
         self.nodes.clear()
         self.links.clear()
+        self.show_plan(None)
+        self.gizmo = None  # the jog panel's, removed with it
+
+    def show_plan(self, samples: SampledMotion | None) -> None:
+        """Draw the TCP path through a motion plan's samples, red where it collides (None:
+        remove it); the gizmo follows this motion's playback."""
+        if self.path_node is not None:
+            self.path_node.remove()
+            self.path_node = None
+        self.plan_samples = samples
+        if samples is None or samples.tcp is None or len(samples.times) < 2:
+            return
+        tcp = np.asarray(samples.tcp, float)
+        p = tcp[:, :3, 3] if tcp.ndim == 3 else tcp
+        segments = np.stack([p[:-1], p[1:]], axis=1).astype(np.float32)  # (N - 1, 2, 3)
+        hit = np.asarray(samples.colliding, bool)[:-1]
+        colors = np.where(hit[:, None, None], COLLISION_COLOR, PATH_COLOR)
+        self.path_node = self.server.scene.add_line_segments(
+            "/motion/tcp_path",
+            segments,
+            np.broadcast_to(colors, segments.shape).astype(np.uint8),
+            thickness=3.0,
+            thickness_units="screen",
+        )
 
     def update(self) -> None:
         """Move the robot to the workbench's joints and colour colliding bodies red."""
@@ -102,9 +165,94 @@ class RobotScene:
                 place(h, poses[-1])
                 h.color = COLLISION_COLOR if "tool" in hit else self._tool_color()
             place(self.tcp_frame, wb.tcp_pose(q))
+            self._place_gizmo(q)
         for listener in self.on_show:
             listener(q)
+
+    def _place_gizmo(self, q: NDArray[np.float64] | None) -> None:
+        g = self.gizmo
+        if g is None:
+            return
+        playing_plan = (
+            self.plan_samples is not None
+            and self.timeline is not None
+            and self.timeline.motion is self.plan_samples
+        )
+        visible = q is None or playing_plan
+        if q is not None and visible:
+            place(g, self.wb.tcp_pose(q))
+        if g.visible != visible:
+            g.visible = visible
 
     def _tool_color(self) -> tuple[int, int, int]:
         r, g, b = self.wb.project.tool.color
         return (r, g, b)
+
+
+class CameraViews:
+    """The "View" buttons (Fit, Front, Top, Side, Iso) and the camera fit of each page.
+
+    The box comes from the service (`service.scene_bounds`); only the camera placement, a
+    display matter, is computed here. Each page (client) has its own camera."""
+
+    def __init__(self, server: viser.ViserServer, wb: Workbench) -> None:
+        self.server, self.wb = server, wb
+        self.buttons = server.gui.add_button_group("View", options=("Fit", *VIEWS))
+        self.buttons.on_click(guarded(server, "View")(self._on_click))
+        server.on_client_connect(self._on_connect)
+
+    def _on_connect(self, client: viser.ClientHandle) -> None:
+        try:
+            self.frame(client)
+        except Exception:  # the default camera is still a view; say why in the log
+            log.warning("camera fit on connect failed:\n%s", traceback.format_exc())
+
+    def frame(
+        self,
+        client: viser.ClientHandle,
+        focus: str = "all",
+        direction: tuple[float, float, float] | None = None,
+    ) -> None:
+        """Point `client`'s camera at the scene's `focus` box (default: everything), from
+        `direction` (default: the camera's own, iso before it has one)."""
+        box = scene_bounds(self.wb, focus)
+        cam = client.camera
+        if direction is None:
+            try:  # keep the user's viewing direction when fitting
+                d = np.asarray(cam.position, float) - np.asarray(cam.look_at, float)
+                direction = tuple(d) if np.linalg.norm(d) > 1e-6 else VIEWS["Iso"]  # type: ignore[assignment]
+            except AssertionError:  # the client has not reported its camera yet
+                direction = VIEWS["Iso"]
+        try:
+            fov, aspect = float(cam.fov) or DEFAULT_FOV, float(cam.aspect) or 16 / 9
+        except (AssertionError, ZeroDivisionError):
+            fov, aspect = DEFAULT_FOV, 16 / 9
+        position, look_at = camera_pose(box.lo, box.hi, direction, fov, aspect)  # type: ignore[arg-type]
+        with client.atomic():
+            cam.up_direction = (0.0, 0.0, 1.0)
+            cam.look_at = look_at
+            cam.position = position
+
+    def frame_bending(self, client: viser.ClientHandle | None) -> None:
+        """Point `client`'s camera at the die and the part, from the robot's side and above
+        (the press brake's upper tool stands behind the bend line, not between)."""
+        if client is None:
+            return
+        R_world_die = self.wb.bending.si().die.T_world_die[:3, :3]
+        direction = R_world_die @ np.array([0.35, -1.0, 0.7])  # die frame: robot on -y
+        self.frame(client, "bending", tuple(direction))  # type: ignore[arg-type]
+
+    def frame_all(self, focus: str = "all") -> None:
+        """Frame `focus` on every page (after a project is loaded)."""
+        for client in list(self.server.get_clients().values()):
+            self.frame(client, focus, VIEWS["Iso"])
+
+    def _on_click(self, event: viser.GuiEvent) -> None:
+        if event.client is None:
+            return
+        choice = str(self.buttons.value)
+        self.frame(event.client, "all", None if choice == "Fit" else VIEWS[choice])
+
+    def remove(self) -> None:
+        """Remove the buttons."""
+        self.buttons.remove()
