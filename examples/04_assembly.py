@@ -50,12 +50,10 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
             f" placed at {task.t_place:6.2f} s ({route.planner}, {len(route.poses)} key points)"
         )
 
-    written: list[Path] = []
-    for robot in assembly.arms:
-        path = out / f"assembly_{robot}.mod"
-        path.write_text(assembly.export_program(robot, "rapid", plan))
-        written.append(path)
-        print(f"wrote {robot}'s program: {path}")
+    exported = wb.export_program("rapid", "assembly")  # one RAPID task per robot, synced
+    written = exported.write_to(out)
+    for path in written:
+        print(f"wrote a robot's program: {path}")
     return written
 
 

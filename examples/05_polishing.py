@@ -39,10 +39,10 @@ def main(out_dir: str | Path | None = None) -> Path:
     motion = polishing.plan_motion()
     print(f"robot:      {motion.summary()}")
 
-    program = out / "polishing.src"
-    program.write_text(polishing.export_program("krl"))
-    print(f"wrote the KRL program: {program} ({len(program.read_text().splitlines())} lines)")
-    return program
+    exported = wb.export_program("krl", "polishing")  # the .src and its .dat
+    src, dat = exported.write_to(out)
+    print(f"wrote the KRL program: {src} ({len(src.read_text().splitlines())} lines) and {dat.name}")
+    return src
 
 
 if __name__ == "__main__":

@@ -106,15 +106,12 @@ def check_04_assembly(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> Non
     assert [t[0] for t in tasks[:2]] == ["plate_a", "plate_b"] and len(tasks) == 7
     assert all(float(pick) < float(place) for _, _, pick, place in tasks)
     assert {t[1] for t in tasks} == {"MZ07", "MZ07_B"}
-    assert sorted(p.name for p in tmp_path.iterdir()) == [
-        "assembly_MZ07.mod",
-        "assembly_MZ07_B.mod",
-    ]
-    names = [p.name for p in written]  # type: ignore[attr-defined]
+    names = sorted(p.name for p in written)  # type: ignore[attr-defined]
     assert names == ["assembly_MZ07.mod", "assembly_MZ07_B.mod"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == names
     for robot in ("MZ07", "MZ07_B"):
         text = (tmp_path / f"assembly_{robot}.mod").read_text()
-        assert text.startswith(f"MODULE assembly_{robot}") and "MoveAbsJ" in text
+        assert text.startswith(f"MODULE assembly_{robot}") and "WaitSyncTask" in text
 
 
 def check_05_polishing(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
@@ -123,10 +120,11 @@ def check_05_polishing(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> No
     assert re.search(r"tool path:  spiral: \d+ points, .* coverage \d+\.\d %", out)
     assert re.search(r"control:    target 20 N at 40 mm/s .* force within ±\d+\.\d\d N", out)
     assert re.search(r"robot:      cycle time \d+\.\d{3} s, \d+ moves; within joint limits", out)
-    assert program == tmp_path / "polishing.src"
-    assert [p.name for p in tmp_path.iterdir()] == ["polishing.src"]
-    text = (tmp_path / "polishing.src").read_text()
-    assert text.startswith("DEF polish()") and text.rstrip().endswith("END")
+    assert program.suffix == ".src" and program.parent == tmp_path  # type: ignore[attr-defined]
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == [program.with_suffix(".dat").name, program.name]  # type: ignore[attr-defined]
+    text = program.read_text()  # type: ignore[attr-defined]
+    assert text.startswith("DEF ") and text.rstrip().endswith("END") and "LIN " in text
     assert f"({len(text.splitlines())} lines)" in out
 
 

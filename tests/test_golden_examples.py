@@ -28,7 +28,6 @@ from workbench.motion.programs import EXPORT_FORMATS, SAMPLE_FORMATS
 
 ROOT = Path(__file__).resolve().parents[1]
 GOLDEN = Path(__file__).parent / "golden_examples"
-LEGACY_FORMATS = ("rapid", "krl", "ls", "urscript", "csv", "json")
 
 pytestmark = pytest.mark.slow
 
@@ -57,22 +56,13 @@ def _bending() -> dict[str, str]:
     lines = [summary, f"sequence: {wb.bending.sequence}"]
     lines += [repr(np.round(p.q, 9).tolist()) for p in placements]
     out = {"summary.txt": "\n".join(lines)}
-    if hasattr(wb.bending, "robot_programs"):
-        out.update(_exports(wb, "bending"))
-    return out
+    return {**out, **_exports(wb, "bending")}
 
 
 def _assembly() -> dict[str, str]:
     wb = Workbench.open(ROOT / "projects" / "assembly_cell.json")
     plan = wb.assembly.plan_sequence()
-    out = {"summary.txt": plan.summary()}
-    if hasattr(wb.assembly, "robot_programs"):
-        out.update(_exports(wb, "assembly"))
-        return out
-    for robot in sorted(wb.assembly.arms):  # the first posts, until its robot programs land
-        for fmt in LEGACY_FORMATS:
-            out[f"{robot}.{fmt}"] = wb.assembly.export_program(robot, fmt)
-    return out
+    return {"summary.txt": plan.summary(), **_exports(wb, "assembly")}
 
 
 def _polishing() -> dict[str, str]:

@@ -19,7 +19,7 @@ from workbench.assembly.arm import AssemblyArm
 from workbench.assembly.part import AssemblyPart
 from workbench.assembly.part_moves import PartPlan
 from workbench.assembly.plan import PartPath
-from workbench.assembly.programs import key_points_text, robot_program
+from workbench.assembly.programs import key_points_text
 from workbench.assembly.tasks import TaskPlan, tcp_line, time_waypoints
 from workbench.assembly.timeline import arm_motion, colliding_samples, part_poses, sample_times
 from workbench.errors import InputError
@@ -90,17 +90,6 @@ def test_colliding_samples_join_every_index_set_and_the_contacts():
     c = [SimpleNamespace(index=4)]
     out = colliding_samples(6, [(0,), ()], [(2, 3)], contacts=c)  # type: ignore[arg-type]
     assert out.tolist() == [True, False, True, True, True, False]
-
-
-def test_robot_program_has_one_joint_move_per_waypoint_and_stops_at_pick_and_place():
-    tasks = [_task(0.0, HOME + 0.3), _task(5.0, HOME - 0.2)]
-    prog = robot_program("A", tasks, 0.5)
-    assert len(prog.moves) == sum(len(t.trajectory.waypoints) - 1 for t in tasks)
-    assert [m.name for m in prog.moves][:3] == ["t1_1", "t1_2", "t1_3"]
-    assert all(m.zone == 0.0 for m in prog.moves)  # every waypoint here is a stop
-    np.testing.assert_allclose(prog.moves[1].target, tasks[0].trajectory.waypoints[2])
-    with pytest.raises(InputError, match="carries no part"):
-        robot_program("B", tasks, 0.5)
 
 
 def test_key_points_export_in_mm_and_degrees_with_the_joints_at_each_key_point():

@@ -169,22 +169,6 @@ def test_key_points_export_to_csv_and_json_in_mm_and_degrees(wb):
         a.export_key_points("xml")
 
 
-def test_each_robot_exports_its_part_of_the_sequence_as_a_program(wb, plan):
-    a = wb.assembly
-    for robot in a.arms:
-        tasks = [t for t in plan.tasks if t.robot == robot]
-        text = a.export_program(robot, "rapid", plan)
-        assert text.count("MoveAbsJ") == sum(len(t.trajectory.waypoints) - 1 for t in tasks)
-        first = np.degrees(tasks[0].trajectory.waypoints[1])
-        decl = text.split("CONST jointtarget ")[1].split(":=[[")[1].split("]")[0]
-        np.testing.assert_allclose([float(v) for v in decl.split(",")], first, atol=1e-3)
-        rows = a.export_program(robot, "csv", plan).strip().splitlines()
-        assert len(rows) == len(plan.times) + 1
-    with pytest.raises(InputError, match="format"):
-        a.export_program("MZ07", "gcode", plan)
-
-
-# -- bad input, through the service API and through the project file --------------------------
 def test_goal_in_collision_is_named(wb):
     a = wb.assembly
     goal = a.part("screw_1").goal.copy()

@@ -232,14 +232,6 @@ def test_motion_runs_the_path_in_one_configuration(planned: Workbench) -> None:
     assert plan.cycle_time >= length / 0.040
 
 
-def test_export_writes_one_linear_move_per_point(planned: Workbench) -> None:
-    text = planned.polishing.export_program("rapid")
-    pp = planned.polishing.last_path
-    assert pp is not None
-    assert text.count("MoveL ") == len(pp.path.points) - 1
-    assert text.count("MoveAbsJ ") + text.count("MoveJ ") == 1
-
-
 def test_unreachable_point_is_named() -> None:
     wb = _wb(pose={"xyz": [900, 0, 340], "rpy": [0, 0, 90]})
     with pytest.raises(UnreachableError, match=r"lead-in 1 at \[.*\] mm is unreachable"):

@@ -19,7 +19,7 @@ from workbench.assembly.part import AssemblyPart, primitive_mesh
 from workbench.assembly.part_moves import PLANNER_CHOICES, PartPlan, plan_move
 from workbench.assembly.plan import PLANNERS, PartPath, plan_part_path
 from workbench.assembly.planners.joint_rrt import CarriedPath, CarrySpace, plan_carried_path
-from workbench.assembly.programs import KEY_POINT_FORMATS, key_points_text, robot_program
+from workbench.assembly.programs import KEY_POINT_FORMATS, assembly_programs, key_points_text
 from workbench.assembly.robot_pairs import cell_bodies, cross_contacts
 from workbench.assembly.tasks import TaskPlan, plan_tasks
 from workbench.assembly.timeline import AssemblyPlan
@@ -56,7 +56,7 @@ __all__ = [
     "plan_part_path",
     "plan_tasks",
     "primitive_mesh",
-    "robot_program",
+    "assembly_programs",
     "subdivide",
     "winding_number",
 ]

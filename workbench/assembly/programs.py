@@ -37,7 +37,6 @@ from workbench.assembly.tasks import TaskPlan
 from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_rpy
 from workbench.kinematics.arm_configuration import arm_configuration
-from workbench.motion import Move, Program
 from workbench.motion.programs.from_plan import fit_linear_speed
 from workbench.motion.programs.model import (
     Comment,
@@ -55,33 +54,6 @@ KEY_POINT_FORMATS = ("csv", "json")
 _MM = 1e-3  # m per mm
 _DEG = np.pi / 180.0  # rad per deg
 BLEND = 0.005  # zone [m] of the moves between exact stops
-
-
-def robot_program(robot: str, tasks: Sequence[TaskPlan], speed: float) -> Program:
-    """Return robot `robot`'s part of the sequence `tasks` as a `Program`; speed: fraction of its limits.
-
-    Moves are named t<task>_<waypoint> (task numbers count every task of the sequence).
-    InputError when the robot carries no part in `tasks`.
-    """
-    moves = []
-    for k, task in enumerate(tasks):
-        if task.robot != robot:
-            continue
-        wp = task.trajectory.waypoints
-        stops = {1, len(wp) - 2, len(wp) - 1} | {
-            int(np.argmin(np.abs(task.trajectory.waypoint_times - (t - task.t0))))
-            for t in (task.t_pick, task.t_place)
-        }
-        for i in range(1, len(wp)):
-            moves.append(
-                Move.joint(
-                    wp[i], speed=speed, zone=0.0 if i in stops else BLEND, name=f"t{k + 1}_{i}"
-                )
-            )
-    if not moves:
-        raise InputError(f"robot {robot!r} carries no part in the planned sequence")
-    name = "".join(c if c.isalnum() else "_" for c in f"assembly_{robot}")[:24]
-    return Program(name, tuple(moves))
 
 
 def program_name(robot: str) -> str:

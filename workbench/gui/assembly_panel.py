@@ -17,6 +17,7 @@ from workbench.geometry.transforms import (
 )
 from workbench.gui.fields import NumberField, schema_range
 from workbench.gui.handles import Removable
+from workbench.gui.motion_panel import download_of
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
 from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
@@ -119,14 +120,14 @@ class AssemblyPanel:
             "Key points format", options=KEY_POINT_FORMATS, initial_value="csv"
         )
         self.download = g.add_button("Download key points", icon=viser.Icon.DOWNLOAD, disabled=True)
-        self.prog_robot = g.add_dropdown(
-            "Program of", options=tuple(a.arms), initial_value=next(iter(a.arms))
-        )
         self.prog_format = g.add_dropdown(
             "Program format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
         )
         self.prog_download = g.add_button(
-            "Download robot program", icon=viser.Icon.DOWNLOAD, disabled=True
+            "Download robot programs",
+            icon=viser.Icon.DOWNLOAD,
+            disabled=True,
+            hint="One program per robot (a .zip), with the sync points the sequence needs",
         )
         self.handles += [
             self.info,
@@ -144,7 +145,6 @@ class AssemblyPanel:
             self.result,
             self.format,
             self.download,
-            self.prog_robot,
             self.prog_format,
             self.prog_download,
         ]
@@ -411,8 +411,8 @@ class AssemblyPanel:
             )
 
     def _on_program(self, event: viser.GuiEvent) -> None:
-        robot, fmt = str(self.prog_robot.value), str(self.prog_format.value)
-        text = self.wb.assembly.export_program(robot, fmt, self.plan)
+        fmt = str(self.prog_format.value)
+        exported = self.wb.export_program(fmt, "assembly")  # refused if the plan has problems
         if event.client is not None:
-            name = f"assembly_{robot}{EXPORT_FORMATS[fmt]}"
-            event.client.send_file_download(name, text.encode(), save_immediately=True)
+            name, data = download_of(exported, f"assembly_{fmt}")
+            event.client.send_file_download(name, data, save_immediately=True)

@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 from workbench.errors import InputError, WorkbenchError
 from workbench.gui.fields import NumberField, format_number, schema_range
 from workbench.gui.handles import Removable
+from workbench.gui.motion_panel import download_of
 from workbench.gui.notify import guarded
 from workbench.gui.progress import busy
 from workbench.gui.uploads import WORKPIECES, safe_name
@@ -362,11 +363,10 @@ class PolishingPanel:
 
     def _on_download(self, event: viser.GuiEvent) -> None:
         fmt = str(self.format.value)
-        text = self.svc.export_program(fmt)
+        exported = self.app.wb.export_program(fmt, "polishing")  # refused if the plan has problems
         if event.client is not None:
-            event.client.send_file_download(
-                "polish" + EXPORT_FORMATS[fmt], text.encode(), save_immediately=True
-            )
+            name, data = download_of(exported, f"polishing_{fmt}")
+            event.client.send_file_download(name, data, save_immediately=True)
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""

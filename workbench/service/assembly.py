@@ -20,7 +20,7 @@ from workbench.assembly.arm_check import check_arm
 from workbench.assembly.contacts import Contact
 from workbench.assembly.part import AssemblyPart, primitive_mesh
 from workbench.assembly.part_moves import PLANNER_CHOICES, PartPlan, Progress, plan_move
-from workbench.assembly.programs import KEY_POINT_FORMATS, key_points_text, robot_program
+from workbench.assembly.programs import KEY_POINT_FORMATS, key_points_text
 from workbench.assembly.robot_pairs import cross_contacts
 from workbench.assembly.tasks import TaskPlan, plan_tasks
 from workbench.assembly.timed_plan import timed_plan
@@ -29,8 +29,6 @@ from workbench.assembly.workcell import Workcell
 from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, ProjectError, WorkbenchError
 from workbench.geometry import check_transform
-from workbench.motion import Program
-from workbench.motion.programs import EXPORT_FORMATS, export
 from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec, AssemblyTaskSI
 from workbench.project.program_io import program_settings
 from workbench.service.mesh_files import load_mesh_file
@@ -263,32 +261,10 @@ class AssemblyService(SectionService[AssemblySpec]):
         return cross_contacts(c.bodies(), c.arms, c.parts, tasks, times, joints, part_poses)
 
     # -- export --------------------------------------------------------------------------
-    def robot_program(self, robot: str, plan: AssemblyPlan | None = None) -> Program:
-        """Return robot `robot`'s part of the sequence (default: the last plan) as a `Program`."""
-        plan = plan or self.last_plan
-        if plan is None:
-            raise WorkbenchError("no sequence has been planned yet; plan the sequence first")
-        if robot not in self.arms:
-            raise InputError(f"robot {robot!r} does not exist; the robots are {list(self.arms)}")
-        return robot_program(robot, plan.tasks, self.si.speed)
-
     def robot_programs(self, plan: AssemblyPlan | None = None) -> list[ap.RobotProgram]:
         """Return each robot's program of the sequence (default: the last plan; `assembly.programs`)."""
         plan, s = plan or self.last_plan or self.plan_sequence(), program_settings(self.wb.project)
         return ap.assembly_programs(plan.tasks, self.arms, s, self.spec.tools())
-
-    def export_program(self, robot: str, fmt: str, plan: AssemblyPlan | None = None) -> str:
-        """Return robot `robot`'s motion of the last sequence as rapid, krl, ls, urscript, csv or json.
-
-        csv and json hold the timed joint samples (t [s], joints [rad] and [deg]); the others
-        a robot program.
-        """
-        if fmt not in EXPORT_FORMATS:
-            raise InputError(f"format: {fmt!r} is not one of {', '.join(EXPORT_FORMATS)}")
-        program = self.robot_program(robot, plan)
-        plan = plan or self.last_plan
-        assert plan is not None
-        return export(fmt, program, plan.times, plan.joints[robot])
 
     def export_key_points(self, fmt: str, plan: PartPlan | None = None) -> str:
         """Return the key points of a part plan (default: the last one) as CSV or JSON text (mm, deg)."""

@@ -22,7 +22,6 @@ from workbench.motion import (
     time_program,
     validate_trajectory,
 )
-from workbench.motion.programs import export
 from workbench.motion.programs.from_plan import motion_program
 from workbench.motion.programs.from_plan import robot_program as _robot_program
 from workbench.motion.programs.model import MotionLimits, RobotProgram, ToolData, WorkObject
@@ -225,11 +224,6 @@ def plan_from_trajectory(
     colliding[list(path_report.between_indices)] = True
     samples = SampledMotion(times, q, qd, qdd, tcp, colliding, name=program.name)
     return MotionPlan(program, trajectory, samples, limits, path_report)
-
-
-def export_text(plan: MotionPlan, fmt: str) -> str:
-    """Return the plan exported as `fmt` (rapid, krl, ls, urscript, csv or json)."""
-    return export(fmt, plan.program, plan.times, plan.positions)
 
 
 def robot_program(

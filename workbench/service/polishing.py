@@ -37,7 +37,7 @@ from workbench.polishing.process_path import check_path_lengths, point_labels
 from workbench.polishing.program import RobotProgram, polishing_program
 from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
-from workbench.service.motion_plan import MotionPlan, export_text, plan_from_trajectory
+from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
 from workbench.service.section import SectionService
 
 if TYPE_CHECKING:
@@ -266,10 +266,6 @@ class PolishingService(SectionService[PolishingSpec]):
         self.last_motion = plan
         report(1.0, "done")
         return plan
-
-    def export_program(self, fmt: str) -> str:
-        """Return the polishing motion as a robot program or samples (rapid, krl, ls, urscript, csv, json)."""
-        return export_text(self.last_motion or self.plan_motion(), fmt)
 
     def robot_programs(self, plan: MotionPlan | None = None) -> list[RobotProgram]:
         """Return the motion (default: the last) as a robot program (`polishing.program`)."""

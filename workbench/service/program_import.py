@@ -35,8 +35,6 @@ def import_program(wb: Workbench, files: dict[str, str], fmt: str | None = None)
             )
     fmt = fmt or format_of(list(files))
     read_fn = reader(fmt)
-    if read_fn is None:
-        raise InputError(f"format {fmt!r}: this build has no reader for it")
     source = ", ".join(files)
     read = read_fn(files)
     joints = solve_moves(read, wb.robot)

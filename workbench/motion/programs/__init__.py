@@ -10,19 +10,16 @@ from workbench.motion.programs.exported import (
     ReadTarget,
     merge_exports,
 )
-from workbench.motion.programs.fanuc import to_ls
 from workbench.motion.programs.formats import (
     EXPORT_FORMATS,
     PROGRAM_FORMATS,
     SAMPLE_FORMATS,
-    export,
     post,
     reader,
     write_programs,
     write_samples,
 )
 from workbench.motion.programs.from_plan import motion_program, robot_program
-from workbench.motion.programs.krl import to_krl
 from workbench.motion.programs.model import (
     Comment,
     Gripper,
@@ -40,7 +37,6 @@ from workbench.motion.programs.model import (
     WorkObject,
     check_program,
 )
-from workbench.motion.programs.rapid import to_rapid
 from workbench.motion.programs.readback import to_robot_program
 from workbench.motion.programs.samples import (
     csv_text,
@@ -50,7 +46,6 @@ from workbench.motion.programs.samples import (
     save_csv,
     save_json,
 )
-from workbench.motion.programs.urscript import to_urscript
 
 __all__ = [
     "EXPORT_FORMATS",
@@ -76,7 +71,6 @@ __all__ = [
     "WorkObject",
     "check_program",
     "csv_text",
-    "export",
     "json_text",
     "load_csv",
     "load_json",
@@ -87,11 +81,7 @@ __all__ = [
     "robot_program",
     "save_csv",
     "save_json",
-    "to_krl",
-    "to_ls",
-    "to_rapid",
     "to_robot_program",
-    "to_urscript",
     "write_programs",
     "write_samples",
 ]

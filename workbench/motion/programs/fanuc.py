@@ -60,9 +60,6 @@ Names. The program name is upper case, letters, digits and _ (at most 36 charact
 R-30iB limit); position comments (the target names) at most 16 characters; names that clash
 with FANUC TP words (`RESERVED`) are renamed. Every rename and rounding is in
 `ExportedProgram.notes` and in comment lines at the top of /MN.
-
-`to_ls(program)` is the former post of `motion.program.Program` (kept until the export
-registry switches to `write_ls`).
 """
 
 from __future__ import annotations
@@ -74,7 +71,6 @@ import numpy as np
 
 from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.program import JOINT, Program
 from workbench.motion.programs.angles import wpr_deg
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.model import (
@@ -452,52 +448,3 @@ def write_ls(
         mn += rest
     text = "\n".join([*_attr(name, len(body), date), "/MN", *mn, "/POS", *w.pos, "/END", ""])
     return ExportedProgram({f"{name}.ls": text}, tuple(notes))
-
-
-# --- the former post of motion.program.Program (kept until the registry uses write_ls) ---
-
-
-def cnt_value(zone_m: float) -> str:
-    """Return FANUC termination for a blend radius [m]: FINE, or CNT = radius in mm (1..100)."""
-    mm = zone_m * 1000.0
-    return "FINE" if mm <= 0 else f"CNT{max(1, min(100, round(mm)))}"
-
-
-def _f(x: float) -> str:
-    s = f"{x:9.3f}"
-    return s.replace("-0.000", " 0.000")
-
-
-def to_ls(program: Program, *, date: str = "26-01-01") -> str:
-    """Return a FANUC .LS program: /PROG, /ATTR, /MN with J/L lines, /POS, /END.
-
-    Joint positions are J1..J6 [deg]; Cartesian positions X, Y, Z [mm], W, P, R [deg]
-    (fixed-axis x, y, z). J speeds are % of maximum; L speeds mm/sec.
-    """
-    mn, pos = [], []
-    for i, mv in enumerate(program.moves, start=1):
-        term = cnt_value(mv.zone)
-        note = f" ;  ! {mv.name}" if mv.name else " ;"
-        if mv.kind == JOINT:
-            pct = max(1, min(100, round(mv.speed * 100)))
-            mn.append(f"{i:4d}:J P[{i}] {pct}% {term}{note}")
-            j = np.degrees(mv.q)
-            body = [
-                f"\tJ1={_f(j[0])} deg,\tJ2={_f(j[1])} deg,\tJ3={_f(j[2])} deg,",
-                f"\tJ4={_f(j[3])} deg,\tJ5={_f(j[4])} deg,\tJ6={_f(j[5])} deg",
-            ]
-            cfg = ""
-        else:
-            mn.append(f"{i:4d}:L P[{i}] {round(mv.speed * 1000.0)}mm/sec {term}{note}")
-            T = mv.T
-            x, y, z = T[:3, 3] * 1000.0
-            w, p, r = wpr_deg(T[:3, :3])
-            body = [
-                f"\tX ={_f(x)}  mm,\tY ={_f(y)}  mm,\tZ ={_f(z)}  mm,",
-                f"\tW ={_f(w)} deg,\tP ={_f(p)} deg,\tR ={_f(r)} deg",
-            ]
-            cfg = "\t\tCONFIG : 'N U T, 0, 0, 0',"
-        comment = f' : "{mv.name[:16]}"' if mv.name else ""
-        pos += [f"P[{i}{comment}]{{", "   GP1:", f"\tUF : 0, UT : 1,{cfg}", *body, "};"]
-    lines = _attr(program.name.upper(), len(mn), date)
-    return "\n".join([*lines, "/MN", *mn, "/POS", *pos, "/END", ""])

@@ -4,22 +4,30 @@ samples (CSV, JSON), and the readers that parse programs back (`read_<fmt>(files
 `write_programs(fmt, programs)` is the one dispatch every workflow uses: one `RobotProgram`
 per robot in, one `ExportedProgram` (every robot's files and the posts' notes) out.
 `write_samples` writes timed joint samples. `post(fmt)` and `reader(fmt)` return a format's
-functions, or None while that post or reader does not exist in this build.
+functions.
 """
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Callable, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.motion.program import Move, Program
 from workbench.motion.programs.exported import ExportedProgram, ReadProgram, merge_exports
+from workbench.motion.programs.fanuc import write_ls
+from workbench.motion.programs.fanuc_read import read_ls
+from workbench.motion.programs.krl import write_krl
+from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.model import RobotProgram
+from workbench.motion.programs.nachi import write_nachi
+from workbench.motion.programs.nachi_read import read_nachi
+from workbench.motion.programs.rapid import write_rapid
+from workbench.motion.programs.rapid_read import read_rapid
 from workbench.motion.programs.samples import csv_text, json_text
+from workbench.motion.programs.urscript import write_urscript
+from workbench.motion.programs.urscript_read import read_urscript
 
 FloatArray = NDArray[np.float64]
 
@@ -36,38 +44,20 @@ SAMPLE_FORMATS = {"csv": ".csv", "json": ".json"}
 #: Every export format and the file extension it is written with.
 EXPORT_FORMATS = {**PROGRAM_FORMATS, **SAMPLE_FORMATS}
 
-# Where each format's post and reader live: (module in this package, function), first found wins.
-_POSTS: dict[str, tuple[tuple[str, str], ...]] = {
-    "rapid": (("rapid", "write_rapid"),),
-    "krl": (("krl", "write_krl"),),
-    "ls": (("fanuc", "write_ls"), ("ls", "write_ls"), ("fanuc", "write_fanuc")),
-    "urscript": (("urscript", "write_urscript"),),
-    "nachi": (("nachi", "write_nachi"),),
+_POSTS: dict[str, Callable[[RobotProgram], ExportedProgram]] = {
+    "rapid": write_rapid,
+    "krl": write_krl,
+    "ls": write_ls,
+    "urscript": write_urscript,
+    "nachi": write_nachi,
 }
-_READERS: dict[str, tuple[tuple[str, str], ...]] = {
-    "rapid": (("rapid_read", "read_rapid"),),
-    "krl": (("krl_read", "read_krl"),),
-    "ls": (("fanuc_read", "read_ls"), ("ls_read", "read_ls"), ("fanuc_read", "read_fanuc")),
-    "urscript": (("urscript_read", "read_urscript"),),
-    "nachi": (("nachi_read", "read_nachi"),),
+_READERS: dict[str, Callable[[dict[str, str]], ReadProgram]] = {
+    "rapid": read_rapid,
+    "krl": read_krl,
+    "ls": read_ls,
+    "urscript": read_urscript,
+    "nachi": read_nachi,
 }
-# The first posts (motion.Program in, text out): used where a format's new post is missing.
-_LEGACY = {"rapid": "to_rapid", "krl": "to_krl", "ls": "to_ls", "urscript": "to_urscript"}
-_LEGACY_MODULE = {"rapid": "rapid", "krl": "krl", "ls": "fanuc", "urscript": "urscript"}
-
-
-def _find(table: dict[str, tuple[tuple[str, str], ...]], fmt: str) -> Callable | None:
-    for module, name in table.get(fmt, ()):
-        try:
-            mod = importlib.import_module(f"workbench.motion.programs.{module}")
-        except ModuleNotFoundError as exc:
-            if exc.name != f"workbench.motion.programs.{module}":
-                raise
-            continue
-        fn = getattr(mod, name, None)
-        if fn is not None:
-            return fn  # type: ignore[no-any-return]
-    return None
 
 
 def check_format(fmt: str, formats: dict[str, str] = EXPORT_FORMATS) -> str:
@@ -77,43 +67,14 @@ def check_format(fmt: str, formats: dict[str, str] = EXPORT_FORMATS) -> str:
     return fmt
 
 
-def post(fmt: str) -> Callable[[RobotProgram], ExportedProgram] | None:
-    """Return the post `write_<fmt>(RobotProgram) -> ExportedProgram` of a robot-program
-    format, or None while this build has none."""
-    return _find(_POSTS, check_format(fmt, PROGRAM_FORMATS))
+def post(fmt: str) -> Callable[[RobotProgram], ExportedProgram]:
+    """Return the post `write_<fmt>(RobotProgram) -> ExportedProgram` of a robot-program format."""
+    return _POSTS[check_format(fmt, PROGRAM_FORMATS)]
 
 
-def reader(fmt: str) -> Callable[[dict[str, str]], ReadProgram] | None:
-    """Return the reader `read_<fmt>(files) -> ReadProgram` of a robot-program format, or None."""
-    return _find(_READERS, check_format(fmt, PROGRAM_FORMATS))
-
-
-def _legacy_program(program: RobotProgram) -> Program:
-    moves = []
-    for mv in program.moves:
-        if mv.kind == "joint":
-            moves.append(Move.joint(mv.target.q, speed=mv.speed, zone=mv.zone, name=mv.name))
-        else:
-            T = program.work_object(mv.wobj).T_base_wobj @ np.asarray(mv.target.T_wobj_tcp)
-            moves.append(Move.linear(T, speed=mv.speed, zone=mv.zone, name=mv.name))
-    return Program(program.name, tuple(moves))
-
-
-def _write_one(fmt: str, program: RobotProgram) -> ExportedProgram:
-    fn = post(fmt)
-    if fn is not None:
-        return fn(program)
-    if fmt not in _LEGACY:
-        raise InputError(f"format {fmt!r}: this build has no post for it yet")
-    legacy = getattr(
-        importlib.import_module(f"workbench.motion.programs.{_LEGACY_MODULE[fmt]}"), _LEGACY[fmt]
-    )
-    note = (
-        f"{fmt}: the first post (no tool, work object or I/O); the full post is not in this build"
-    )
-    return ExportedProgram(
-        {program.name + PROGRAM_FORMATS[fmt]: str(legacy(_legacy_program(program)))}, (note,)
-    )
+def reader(fmt: str) -> Callable[[dict[str, str]], ReadProgram]:
+    """Return the reader `read_<fmt>(files) -> ReadProgram` of a robot-program format."""
+    return _READERS[check_format(fmt, PROGRAM_FORMATS)]
 
 
 def write_programs(fmt: str, programs: Sequence[RobotProgram]) -> ExportedProgram:
@@ -123,7 +84,8 @@ def write_programs(fmt: str, programs: Sequence[RobotProgram]) -> ExportedProgra
     check_format(fmt, PROGRAM_FORMATS)
     if not programs:
         raise InputError("there is no robot program to write")
-    return merge_exports([_write_one(fmt, p) for p in programs])
+    write = post(fmt)
+    return merge_exports([write(p) for p in programs])
 
 
 def write_samples(
@@ -136,22 +98,6 @@ def write_samples(
     return merge_exports(
         [ExportedProgram({name + SAMPLE_FORMATS[fmt]: text(t, q)}) for name, t, q in samples]
     )
-
-
-def export(fmt: str, program: Program, times: FloatArray, joints: FloatArray) -> str:
-    """Return a motion `Program` as `fmt` text through the first posts (rapid, krl, ls,
-    urscript), or its timed joint samples `times` (N,) [s], `joints` (N, dof) [rad] as csv or
-    json: the workflows that do not build a `RobotProgram` yet use it.
-
-    Raises InputError naming the format and the formats there are.
-    """
-    check_format(fmt, {k: v for k, v in EXPORT_FORMATS.items() if k != "nachi"})
-    if fmt == "csv":
-        return csv_text(times, joints)
-    if fmt == "json":
-        return json_text(times, joints)
-    module = importlib.import_module(f"workbench.motion.programs.{_LEGACY_MODULE[fmt]}")
-    return str(getattr(module, _LEGACY[fmt])(program))
 
 
 # File endings of each robot-program format's files, for telling a file's format by its name.

@@ -60,9 +60,6 @@ a target gives the planned joints within 1e-6 rad even near the shoulder singula
 decimals a target 0.2 m from axis 1 moved the joints by 1e-6 rad). The controller's num is
 single precision (about 7 significant digits, ~0.0001 mm at 1 m): it rounds further, so a
 controller's joints near a singularity can differ from the plan by more than the file's.
-
-`to_rapid(program: motion.program.Program)` is the previous post (kept until the export
-registry switches to `write_rapid`).
 """
 
 from __future__ import annotations
@@ -73,7 +70,6 @@ from dataclasses import replace
 import numpy as np
 
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.program import JOINT, Program
 from workbench.motion.programs.angles import quaternion_wxyz
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.model import (
@@ -422,58 +418,3 @@ def write_rapid(program: RobotProgram) -> ExportedProgram:
     w = _Writer(program)
     text, notes = w.text()
     return ExportedProgram({f"{w.module}.mod": text}, notes)
-
-
-def _f(x: float, nd: int = 3) -> str:
-    s = f"{x:.{nd}f}"
-    return "0." + "0" * nd if s == "-0." + "0" * nd else s
-
-
-def zone_name(zone_m: float) -> str:
-    """Return the RAPID zonedata for a blend radius [m]: fine, z10, ... or a literal."""
-    mm = zone_m * 1000.0
-    if mm <= 0.0:
-        return "fine"
-    for z in _ZONES:
-        if abs(mm - z) < 1e-6:
-            return f"z{z}"
-    return f"[FALSE,{_f(mm, 1)},{_f(1.5 * mm, 1)},{_f(1.5 * mm, 1)},{_f(0.15 * mm, 2)},{_f(1.5 * mm, 1)},{_f(0.15 * mm, 2)}]"
-
-
-def to_rapid(program: Program, *, tool: str = "tool0") -> str:
-    """Return a RAPID module (text): jointtargets in degrees, robtargets in mm and quaternions.
-
-    The previous post, kept until the export registry uses `write_rapid`. Speeds are
-    speeddata literals [v_tcp mm/s, v_ori deg/s, v_leax, v_reax]; a joint move's fraction
-    scales ABB's vmax (7000 mm/s). Robot configuration data is [0,0,0,0].
-    """
-    decl, body = [], []
-    for i, mv in enumerate(program.moves, start=1):
-        label = mv.name if mv.name.isidentifier() else f"p{i}"
-        zone = zone_name(mv.zone)
-        if mv.kind == JOINT:
-            deg = ", ".join(_f(x, 4) for x in np.degrees(mv.q))
-            decl.append(f"    CONST jointtarget {label}:=[[{deg}],[9E9,9E9,9E9,9E9,9E9,9E9]];")
-            speed = f"[{_f(mv.speed * _VMAX_TCP, 1)},500,5000,1000]"
-            body.append(f"        MoveAbsJ {label}, {speed}, {zone}, {tool};")
-        else:
-            T = mv.T
-            xyz = ",".join(_f(x) for x in T[:3, 3] * 1000.0)
-            quat = ",".join(_f(x, 6) for x in quaternion_wxyz(T[:3, :3]))
-            decl.append(
-                f"    CONST robtarget {label}:=[[{xyz}],[{quat}],[0,0,0,0],"
-                "[9E9,9E9,9E9,9E9,9E9,9E9]];"
-            )
-            speed = f"[{_f(mv.speed * 1000.0, 1)},500,5000,1000]"
-            body.append(f"        MoveL {label}, {speed}, {zone}, {tool};")
-    lines = [
-        f"MODULE {program.name}",
-        *decl,
-        "",
-        "    PROC main()",
-        *body,
-        "    ENDPROC",
-        "ENDMODULE",
-        "",
-    ]
-    return "\n".join(lines)

@@ -43,9 +43,6 @@ Names are legal URScript identifiers (NameTable, case-sensitive, `RESERVED`: key
 the built-ins this post uses); every rename is a note in `ExportedProgram.notes` and a
 comment at the top. Numbers: joints and rotation vectors 9 decimals [rad], positions 9
 decimals [m].
-
-`to_urscript(program)` is the former post of `motion.program.Program` (kept until the
-export registry switches to `write_urscript`).
 """
 
 from __future__ import annotations
@@ -53,7 +50,6 @@ from __future__ import annotations
 import numpy as np
 
 from workbench.errors import InputError
-from workbench.motion.program import JOINT, Program
 from workbench.motion.programs.angles import rotation_vector
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.model import (
@@ -275,36 +271,3 @@ def write_urscript(program: RobotProgram) -> ExportedProgram:
     head += [_comment(f"note: {n}") for n in notes]
     text = "\n".join([*head, f"def {w.name}():", *w.out, "end", f"{w.name}()", ""])
     return ExportedProgram({f"{w.name}.script": text}, notes)
-
-
-# --- the former post of motion.program.Program (kept until the registry uses write_urscript) ---
-
-
-def _f_old(x: float, nd: int = 6) -> str:
-    s = f"{x:.{nd}f}"
-    return "0." + "0" * nd if s == "-0." + "0" * nd else s
-
-
-def to_urscript(
-    program: Program, *, joint_speed: float = 3.14, joint_accel: float = 1.4, tcp_accel: float = 1.2
-) -> str:
-    """Return a URScript program: joints in rad, poses p[x, y, z, rx, ry, rz] in m and rad.
-
-    A joint move's speed fraction scales `joint_speed` [rad/s]; linear speeds are [m/s];
-    accelerations `joint_accel` [rad/s^2], `tcp_accel` [m/s^2]; zones become r [m].
-    """
-    out = [f"def {program.name}():"]
-    for mv in program.moves:
-        if mv.name:
-            out.append(f"  # {mv.name}")
-        r = _f_old(mv.zone, 4)
-        if mv.kind == JOINT:
-            q = ", ".join(_f_old(x) for x in mv.q)
-            v = _f_old(mv.speed * joint_speed, 4)
-            out.append(f"  movej([{q}], a={_f_old(joint_accel, 4)}, v={v}, r={r})")
-        else:
-            T = mv.T
-            p = ", ".join(_f_old(x) for x in [*T[:3, 3], *rotation_vector(T[:3, :3])])
-            out.append(f"  movel(p[{p}], a={_f_old(tcp_accel, 4)}, v={_f_old(mv.speed, 4)}, r={r})")
-    out += ["end", f"{program.name}()", ""]
-    return "\n".join(out)
