@@ -51,7 +51,9 @@ def _path(folder: Path, mesh: trimesh.Trimesh, c: float) -> Path:
     return cache_path(folder, "cells", [v, f], {"cell_size": float(c), "format": _FORMAT})
 
 
-def load_grid(mesh: trimesh.Trimesh, cell_size: float, folder: Path | None = None) -> CellGrid | None:
+def load_grid(
+    mesh: trimesh.Trimesh, cell_size: float, folder: Path | None = None
+) -> CellGrid | None:
     """Return the cached grid of `mesh` at `cell_size` [m] if one is stored and passes the
     checks of the module docstring, else None."""
     folder = folder if folder is not None else cell_cache_dir()
@@ -67,13 +69,13 @@ def store_grid(mesh: trimesh.Trimesh, grid: CellGrid, folder: Path | None = None
     folder = folder if folder is not None else cell_cache_dir()
     if folder is None:
         return
-    arrays = {
+    arrays: dict[str, NDArray] = {
         "origin": grid.origin,
-        "cell_size": np.float64(grid.cell_size),
+        "cell_size": np.asarray(grid.cell_size, np.float64),
         "shape": np.asarray(grid.occupied.shape, np.int64),
         "occupied": np.packbits(grid.occupied, axis=None),
         "boundary": np.packbits(grid.boundary, axis=None),
-        "closed": np.bool_(grid.closed),
+        "closed": np.asarray(grid.closed, np.bool_),
     }
     try:
         store_entry(_path(folder, mesh, grid.cell_size), arrays)
@@ -96,7 +98,12 @@ def _checked(mesh: trimesh.Trimesh, c: float, d: dict[str, NDArray]) -> CellGrid
     size = int(np.prod(n))
     bits = (size + 7) // 8
     occ_b, bnd_b = np.asarray(d["occupied"]), np.asarray(d["boundary"])
-    if occ_b.dtype != np.uint8 or bnd_b.dtype != np.uint8 or occ_b.shape != (bits,) or bnd_b.shape != (bits,):
+    if (
+        occ_b.dtype != np.uint8
+        or bnd_b.dtype != np.uint8
+        or occ_b.shape != (bits,)
+        or bnd_b.shape != (bits,)
+    ):
         return None
     occupied = np.unpackbits(occ_b, count=size).astype(bool).reshape(tuple(n))
     boundary = np.unpackbits(bnd_b, count=size).astype(bool).reshape(tuple(n))
