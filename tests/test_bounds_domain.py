@@ -169,3 +169,14 @@ def test_a_simulation_over_its_budget_is_refused_with_the_estimate() -> None:
         simulate_hybrid_force_control(pts, nrm, 10.0, 1e-4)  # 1e4 s at 250 Hz
     assert time.perf_counter() - t0 < 1.0
     assert "2,500,001 control steps" in str(info.value) and f"{MAX_STEPS:,}" in str(info.value)
+
+
+def test_urdf_errors_name_the_callers_field(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from workbench.kinematics.urdf_robot import URDFRobot
+
+    with pytest.raises(InputError, match=r"^robot\.urdf: URDF file .* does not exist"):
+        URDFRobot.from_file(tmp_path / "missing.urdf", field="robot.urdf")
+    bad = tmp_path / "bad.urdf"
+    bad.write_text("<robot name='x'><link name='a'/><joint name='j' type='nonsense'/></robot>")
+    with pytest.raises(InputError, match=r"^robot\.urdf: cannot read URDF"):
+        URDFRobot.from_file(bad, field="robot.urdf")

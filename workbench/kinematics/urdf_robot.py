@@ -77,15 +77,17 @@ class URDFRobot:
         tip_link: str | None = None,
         name: str | None = None,
         package_dirs: list[str] | None = None,
+        field: str = "path",
     ) -> URDFRobot:
-        """Return the robot of a URDF file; raise InputError/MeshError naming what is wrong."""
+        """Return the robot of a URDF file; raise InputError/MeshError naming what is wrong,
+        prefixed with `field` (the caller's name for the file, e.g. "robot.urdf")."""
         p = Path(path)
         if not p.is_file():
-            raise InputError(f"path: URDF file {str(p)!r} does not exist")
+            raise InputError(f"{field}: URDF file {str(p)!r} does not exist")
         try:
             model = pin.buildModelFromUrdf(str(p))
         except Exception as exc:  # pinocchio raises plain RuntimeError/ValueError
-            raise InputError(f"path: cannot read URDF {str(p)!r}: {exc}") from exc
+            raise InputError(f"{field}: cannot read URDF {str(p)!r}: {exc}") from exc
         dirs = [str(p.parent)] + list(package_dirs or [])
         geometry = None
         for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL):
@@ -93,7 +95,7 @@ class URDFRobot:
                 geom = pin.buildGeomFromUrdf(model, str(p), kind, package_dirs=dirs)
             except Exception as exc:
                 raise MeshError(
-                    f"path: URDF {str(p)!r} refers to a mesh that cannot be loaded: {exc}"
+                    f"{field}: URDF {str(p)!r} refers to a mesh that cannot be loaded: {exc}"
                 ) from exc
             if geom.ngeoms:
                 geometry = geom

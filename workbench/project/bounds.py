@@ -22,13 +22,13 @@ from pydantic_core import CoreSchema, core_schema
 
 # -- the cell -------------------------------------------------------------------------------------
 CELL_HALF_EXTENT_MM = 100_000.0
-"""Largest |x|, |y|, |z| of any position in the world or a local frame [mm] (a 200 m cube)."""
+"""Largest absolute x, y or z of any position, in the world or a local frame [mm] (a 200 m cube)."""
 SIZE_MM = (0.1, 200_000.0)
 """Edge lengths, radii and heights of cell objects, tools and parts [mm]: > 0.1 mm, at most the cell."""
 ANGLE_DEG = 3600.0
-"""Largest |angle| of an orientation (rpy), a DH offset or twist, a grasp yaw [deg] (ten turns)."""
+"""Largest absolute angle of an orientation (rpy), a DH offset or twist, a grasp yaw [deg] (ten turns)."""
 JOINT_DEG = 720.0
-"""Largest |joint value| and |joint limit| [deg] (two turns each way: at most 5 turns per joint)."""
+"""Largest absolute joint value or joint limit [deg] (two turns each way: at most 5 turns per joint)."""
 MESH_SCALE = (1e-6, 10.0)
 """Mesh file units to metres (0.001 for mm, 1 for m)."""
 MAX_DOF = 16
@@ -69,7 +69,7 @@ DIE_LENGTH_MM = (1.0, 200_000.0)
 # -- assembly -----------------------------------------------------------------------------------------
 PLANNER_CELL_MM = (0.1, 200_000.0)
 """Assembly planner: the part subdivision cell, the ant's grid spacing `dis` and the
-carrying robot's resolution [mm] (see also ASSEMBLY_MAX_CELLS)."""
+carrying robot's resolution [mm] (see also assembly.cells.MAX_CELLS)."""
 PLANNER_STEPS = (1, 1_000)
 """Assembly planner: the ant's segments along the dominant axis."""
 PLANNER_TIME_S_OPEN = (0.0, 3_600.0)
@@ -83,7 +83,7 @@ SPEED_PERCENT_OPEN = (0.0, 100.0)
 PATH_STEP_MM = (0.1, 1_000.0)
 """Polishing: chord between consecutive path points [mm]."""
 PASS_SPACING_MM = (0.5, 10_000.0)
-"""Polishing: distance between neighbouring passes [mm] (see also POLISH_MAX_POINTS)."""
+"""Polishing: distance between neighbouring passes [mm] (see also polishing.process_path.MAX_PASSES)."""
 TOOL_RADIUS_MM = (0.5, 1_000.0)
 """Polishing: the pad's radius [mm]."""
 LEAD_HEIGHT_MM = (0.1, 1_000.0)

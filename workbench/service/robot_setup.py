@@ -55,7 +55,9 @@ def build_robot_model(spec: Robot | RobotSI, base_dir: Path | ProjectFolders) ->
     from workbench.kinematics import URDFRobot
 
     assert spec.urdf is not None
-    return URDFRobot.from_file(ProjectFolders.of(base_dir).check_urdf(spec.urdf, "robot.urdf"))
+    return URDFRobot.from_file(
+        ProjectFolders.of(base_dir).check_urdf(spec.urdf, "robot.urdf"), field="robot.urdf"
+    )
 
 
 def build_tool_mesh(tool: ToolSI, base_dir: Path | ProjectFolders) -> trimesh.Trimesh | None:
