@@ -9,8 +9,8 @@ derive their rows from it on first use.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -20,6 +20,8 @@ from workbench.geometry.obb import OBB, SAT_EPS, sat_overlap_rt
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.obbtree import OBBTree
+
+FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -186,9 +188,38 @@ class TreeCheck:
     nodes: NodeArrays
     start: NDArray[np.int64]
     levels: list[tuple[NDArray[np.int64], NDArray[np.int64]]]  # empty: no descent
+    _cache: dict[str, Any] = field(default_factory=dict, repr=False)  # the last obstacles
+
+    def _obstacles(self, obstacles: OBB) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Return obstacles components-first (obs (3, 6, M), oe (5, M), world AABB half (3, M)).
+
+        obs[k, j, m] is the k-th coordinate of axis j (x y z x y, cyclic) for j < 5, of the
+        centre for j = 5; oe the half extents, cyclic too. Kept for the last obstacles object
+        (OBBs are immutable; a cell's obstacles are checked over and over).
+        """
+        last = self._cache.get("obstacles")
+        if last is not None and last[0] is obstacles:
+            return last[1]  # type: ignore[no-any-return]
+        o_c = obstacles.center.reshape(-1, 3)
+        M = len(o_c)
+        obs = np.empty((3, 6, M))
+        obs[:, :5] = obstacles.rotation.reshape(-1, 3, 3)[:, :, _CYC].transpose(1, 2, 0)
+        obs[:, 5] = o_c.T
+        oe = np.ascontiguousarray(obstacles.half_extents.reshape(-1, 3)[:, _CYC].T)
+        # World AABB half extents: sum_j |B_kj| b_j, widened (see _AABB_SLACK).
+        o_box = _aabb_half(obs[:, :3], oe[:3] * _AABB_SLACK)  # (3, M)
+        out = (obs, oe, o_box)
+        self._cache["obstacles"] = (obstacles, out)
+        return out
 
     def run(self, obstacles: OBB, T_world_grasp: ArrayLike) -> FramesReport:
-        """Return the check of F poses: start nodes x obstacles, then descend level by level."""
+        """Return the check of F poses: start nodes x obstacles, then descend level by level.
+
+        A fixed few dozen numpy calls per call whatever F is: obstacles laid out once per
+        obstacles object, one product puts every node box in the world for every frame,
+        the start nodes' AABBs against every obstacle by broadcasting, then per level one
+        gather of the candidate pairs and one 15-axis test (`sat_overlap_rt`) of them all.
+        """
         if not isinstance(obstacles, OBB):
             raise InputError(
                 f"obstacles: expected an OBB (batch (M,)), got {type(obstacles).__name__}"
@@ -198,40 +229,46 @@ class TreeCheck:
             raise InputError(f"T_world_grasp: expected finite shape (F, 4, 4), got {T.shape}")
         nodes = self.nodes
         F, N = len(T), nodes.count
-        o_c = obstacles.center.reshape(-1, 3)
-        M = len(o_c)
-        # Obstacles components-first: obs[k, j, m] is the k-th coordinate of axis j (x y z x y,
-        # cyclic) for j < 5, of the centre for j = 5; oe (5, M) half extents, cyclic too.
-        obs = np.empty((3, 6, M))
-        obs[:, :5] = obstacles.rotation.reshape(-1, 3, 3)[:, :, _CYC].transpose(1, 2, 0)
-        obs[:, 5] = o_c.T
-        oe = np.ascontiguousarray(obstacles.half_extents.reshape(-1, 3)[:, _CYC].T)
-        # World AABB half extents: sum_j |B_kj| b_j, widened (see _AABB_SLACK).
-        o_box = _aabb_half(obs[:, :3], oe[:3] * _AABB_SLACK)  # (3, M)
+        obs, oe, o_box = self._obstacles(obstacles)
+        M = obs.shape[2]
         # Every node box in the world for every frame in one product: W[k, j, f * N + n] as
         # obs, for node n in frame f.
         prod = (T[:, :3, :3].reshape(3 * F, 3) @ nodes.axes_center).reshape(F, 3, N, 6)
         W4 = np.ascontiguousarray(prod.transpose(1, 3, 0, 2))  # (3, 6, F, N)
         W4[:, 5] += T[:, :3, 3].T[:, :, None]
         W = W4.reshape(3, 6, F * N)
-        n_box = _aabb_half(W4[:, :3], nodes.slack_half[:, None]).reshape(3, F * N)
         hit = np.zeros((F, N, M), dtype=bool)
         flat_hit = hit.reshape(-1)
-        # Start nodes against every obstacle: the AABB filter by broadcasting, then the exact
-        # test on the pairs whose AABBs meet.
+        # Start nodes against every obstacle: the AABB filter by broadcasting (the start
+        # nodes' world AABBs only), then the exact test on the pairs whose AABBs meet.
         S = len(self.start)
+        tests = np.full(F, S * M, dtype=np.int64)
+        if self.levels and S == 1:  # the DFS from one root: its AABB by slicing
+            r = int(self.start[0])
+            n_box = _aabb_half(W4[:, :3, :, r], nodes.slack_half[:, r, None])  # (3, F)
+            d = obs[:, 5, None, :] - W4[:, 5, :, r, None]  # (3, F, M)
+            np.abs(d, out=d)
+            lim = n_box[:, :, None] + o_box[:, None, :]  # the same sums as the exact test's
+            near = np.flatnonzero(np.logical_and.reduce(d <= lim, axis=0))
+            if not near.size:  # the common case on a free path: no root pair's AABBs meet
+                return FramesReport(np.zeros(F, bool), tests, hit_mask=hit, dfs=self)
+            f, m = np.divmod(near, M)
+            return self._descend(W, obs, oe, o_box, hit, tests, f, m)
         fn0 = np.arange(F)[:, None] * N + self.start  # (F, S)
+        start_axes = W4[:, :3].take(self.start, axis=-1)  # (3, 3, F, S)
+        n_box = _aabb_half(start_axes, nodes.slack_half[:, None].take(self.start, axis=-1))
         d = obs[:, 5, None, None, :] - W[:, 5].take(fn0, axis=-1)[..., None]  # (3, F, S, M)
-        lim = n_box.take(fn0, axis=-1)[..., None] + o_box[:, None, None, :]
+        lim = n_box[..., None] + o_box[:, None, None, :]
         near = np.flatnonzero(np.logical_and.reduce(np.abs(d) <= lim, axis=0))
+        if not near.size:  # no start pair's AABBs meet
+            return FramesReport(np.zeros(F, bool), tests, hit_mask=hit, dfs=self)
         fs, m = np.divmod(near, M)
         fn = fn0.reshape(-1)[fs]
         n: NDArray[np.int64] | slice = slice(self.start[0], self.start[0] + 1) if S == 1 else fn % N
         found = _test(
             W, obs, oe, nodes.half, d.reshape(3, -1).take(near, axis=-1), fn, n, m, flat_hit, M
         )
-        tests = np.full(F, S * M, dtype=np.int64)
-        for lvl_nodes, parents in self.levels:
+        for lvl_nodes, parents in self.levels:  # (several start nodes with levels: not built)
             if not found:
                 break
             # Children of every node-obstacle pair that hit (DFS: only those are tested).
@@ -245,12 +282,59 @@ class TreeCheck:
             fn = f * N + n
             d = obs[:, 5].take(m, axis=-1) - W[:, 5].take(fn, axis=-1)
             if len(idx) >= AABB_FILTER_MIN:
-                lim = n_box.take(fn, axis=-1) + o_box.take(m, axis=-1)
+                axes = W[:, :3].take(fn, axis=-1)
+                lim = _aabb_half(axes, nodes.slack_half.take(n, axis=-1)) + o_box.take(m, axis=-1)
                 near = np.flatnonzero(np.logical_and.reduce(np.abs(d) <= lim, axis=0))
                 d, fn, n, m = d.take(near, axis=-1), fn[near], n[near], m[near]
             found = _test(W, obs, oe, nodes.half, d, fn, n, m, flat_hit, M)
-        leaf_hit = hit[:, nodes.leaves].reshape(F, len(nodes.leaves) * M)
-        collides = np.logical_or.reduce(leaf_hit, axis=1)
+        collides = np.logical_or.reduce(hit[:, nodes.leaves].reshape(F, -1), axis=1)
+        return FramesReport(collides, tests, hit_mask=hit, dfs=self)
+
+    def _descend(
+        self,
+        W: FloatArray,
+        obs: FloatArray,
+        oe: FloatArray,
+        o_box: FloatArray,
+        hit: NDArray[np.bool_],
+        tests: NDArray[np.int64],
+        f: NDArray[np.int64],
+        m: NDArray[np.int64],
+    ) -> FramesReport:
+        """Return the report of the DFS below the root pairs (frame f, obstacle m) whose AABBs meet.
+
+        The same verdicts, hits and test counts as descending level by level, in one 15-axis
+        test: every node of the tree against the obstacle of each such root pair (the
+        root's own exact test among them), the AABB filter first where there are enough
+        pairs; then level by level a node hits only if its own test and its parent's did
+        (which is what the DFS tests), and each hit pair's children count as tests.
+        """
+        nodes = self.nodes
+        F, N, M = hit.shape
+        H = len(f)
+        every = self._cache.get("every")
+        if every is None or len(every) != N:
+            every = self._cache["every"] = np.arange(N)
+        fn = (f[:, None] * N + every).reshape(-1)  # (H * N,): every node per pair
+        n: NDArray[np.int64] | slice = slice(None) if H == 1 else np.tile(every, H)
+        mm = np.repeat(m, N)
+        d = obs[:, 5].take(mm, axis=-1) - W[:, 5].take(fn, axis=-1)
+        if H * N >= AABB_FILTER_MIN:
+            n = np.tile(every, H)
+            axes = W[:, :3].take(fn, axis=-1)
+            lim = _aabb_half(axes, nodes.slack_half.take(n, axis=-1)) + o_box.take(mm, axis=-1)
+            keep = np.flatnonzero(np.logical_and.reduce(np.abs(d) <= lim, axis=0))
+            d, fn, n, mm = d.take(keep, axis=-1), fn[keep], n[keep], mm[keep]
+            sat = np.zeros(H * N, dtype=bool)
+            sat[keep] = _sat(W, obs, oe, nodes.half, d, fn, n, mm)
+            sat = sat.reshape(H, N)
+        else:
+            sat = _sat(W, obs, oe, nodes.half, d, fn, n, mm).reshape(H, N)
+        for lvl_nodes, parents in self.levels:  # DFS: tested only below a hit
+            sat[:, lvl_nodes] &= sat[:, parents]
+        hit[f[:, None], every, m[:, None]] = sat
+        np.add.at(tests, f, sat @ nodes.child_count)  # each hit pair's children were tested
+        collides = np.logical_or.reduce(hit[:, nodes.leaves].reshape(F, -1), axis=1)
         return FramesReport(collides, tests, hit_mask=hit, dfs=self)
 
     def tested_counts(self, hit: NDArray[np.bool_]) -> NDArray[np.int64]:
@@ -300,12 +384,30 @@ def _test(
     """Mark the pairs (frame * N + node fn, obstacle m; offsets d (3, P)) that overlap; any?"""
     if not len(m):
         return False
+    ok = _sat(W, obs, oe, half, d, fn, n, m)
+    flat_hit[(fn * M + m)[ok]] = True
+    return bool(ok.any())
+
+
+def _sat(
+    W: NDArray[np.float64],
+    obs: NDArray[np.float64],
+    oe: NDArray[np.float64],
+    half: NDArray[np.float64],
+    d: NDArray[np.float64],
+    fn: NDArray[np.int64],
+    n: NDArray[np.int64] | slice,
+    m: NDArray[np.int64],
+) -> NDArray[np.bool_]:
+    """Return the exact 15-axis verdicts (P,) of pairs (frame * N + node fn, obstacle m)."""
+    if not len(m):
+        return np.zeros(0, dtype=bool)
     # Gathers with `take`: it returns components-first contiguous arrays (fancy indexing of
     # the last axis lays the result out pair-major, which makes every later step strided).
     Bd = obs.take(m, axis=-1)
     Bd[:, 5] = d  # [B | cb - ca]
-    Rt = np.einsum("ki...,kj...->ij...", W.take(fn, axis=-1)[:, :5], Bd)  # A^T [B | d]
+    # A^T [B | d] per pair: one stacked matmul (P, 5, 3) @ (P, 3, 6), read as (5, 6, P).
+    A = W.take(fn, axis=-1)[:, :5]
+    Rt = np.einsum("ki...,kj...->ij...", A, Bd)
     a = half[:, n] if isinstance(n, slice) else half.take(n, axis=-1)
-    ok = sat_overlap_rt(Rt, a, oe.take(m, axis=-1))
-    flat_hit[(fn * M + m)[ok]] = True
-    return bool(ok.any())
+    return sat_overlap_rt(Rt, a, oe.take(m, axis=-1))
