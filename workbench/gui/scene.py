@@ -40,13 +40,26 @@ def camera_pose(
     fov: float,
     aspect: float,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Return (position, look_at) [m] of a camera looking along -`direction` at the box
-    [`lo`, `hi`] so that its bounding sphere fits the narrower of the two fields of view."""
+    """Return (position, look_at) [m] of a camera (up +z) looking along -`direction` at the
+    box [`lo`, `hi`]'s centre from the nearest distance at which every corner is in view."""
     centre = (lo + hi) / 2
-    radius = max(float(np.linalg.norm(hi - lo)) / 2, MIN_RADIUS)
-    half = min(fov / 2, float(np.arctan(np.tan(fov / 2) * max(aspect, 1e-3))))
-    d = np.asarray(direction, float)
-    return centre + d / np.linalg.norm(d) * radius / np.sin(half) * 1.05, centre
+    half = np.maximum((hi - lo) / 2, MIN_RADIUS / 2)
+    back = np.asarray(direction, float)
+    back = back / np.linalg.norm(back)  # from the centre towards the camera
+    right = np.cross(-back, (0.0, 0.0, 1.0))
+    right = right / np.linalg.norm(right) if np.linalg.norm(right) > 1e-9 else np.array([1.0, 0, 0])
+    up = np.cross(right, -back)
+    signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+    corners = signs * half  # relative to the centre
+    tan_v = np.tan(fov / 2)
+    tan_h = tan_v * max(aspect, 1e-3)
+    # a corner at height u and depth d - w (w: its offset towards the camera) is in view when
+    # |u| <= (d - w) tan: the distance is the largest such d over corners and both axes
+    w = corners @ back
+    d = np.max(
+        np.concatenate([np.abs(corners @ up) / tan_v + w, np.abs(corners @ right) / tan_h + w])
+    )
+    return centre + back * d * 1.08, centre
 
 
 def place(handle: viser.SceneNodeHandle, T: NDArray[np.float64]) -> None:
@@ -141,7 +154,7 @@ class RobotScene:
             "/motion/tcp_path",
             segments,
             np.broadcast_to(colors, segments.shape).astype(np.uint8),
-            thickness=3.0,
+            thickness=4.0,
             thickness_units="screen",
         )
 
