@@ -312,6 +312,8 @@ class TreeCheck:
         nodes = self.nodes
         F, N, M = hit.shape
         H = len(f)
+        if H == 1 and N < AABB_FILTER_MIN:
+            return self._descend_one(W, obs, oe, hit, tests, int(f[0]), int(m[0]))
         every = self._cache.get("every")
         if every is None or len(every) != N:
             every = self._cache["every"] = np.arange(N)
@@ -335,6 +337,33 @@ class TreeCheck:
         hit[f[:, None], every, m[:, None]] = sat
         np.add.at(tests, f, sat @ nodes.child_count)  # each hit pair's children were tested
         collides = np.logical_or.reduce(hit[:, nodes.leaves].reshape(F, -1), axis=1)
+        return FramesReport(collides, tests, hit_mask=hit, dfs=self)
+
+    def _descend_one(
+        self,
+        W: FloatArray,
+        obs: FloatArray,
+        oe: FloatArray,
+        hit: NDArray[np.bool_],
+        tests: NDArray[np.int64],
+        f: int,
+        m: int,
+    ) -> FramesReport:
+        """Return `_descend` for one root pair (frame f, obstacle m): slices, no gathers."""
+        nodes = self.nodes
+        F, N, M = hit.shape
+        Wf = W[:, :, f * N : (f + 1) * N]  # (3, 6, N): every node in frame f
+        Bd = np.empty((3, 6, N))
+        Bd[:, :5] = obs[:, :5, m, None]
+        np.subtract(obs[:, 5, m, None], Wf[:, 5], out=Bd[:, 5])  # [B | cb - ca]
+        Rt = np.einsum("ki...,kj...->ij...", Wf[:, :5], Bd)  # A^T [B | d], as in _sat
+        sat = sat_overlap_rt(Rt, nodes.half, oe[:, m, None])
+        for lvl_nodes, parents in self.levels:  # DFS: tested only below a hit
+            sat[lvl_nodes] &= sat[parents]
+        hit[f, :, m] = sat
+        tests[f] += int(sat @ nodes.child_count)  # each hit pair's children were tested
+        collides = np.zeros(F, dtype=bool)
+        collides[f] = sat[nodes.leaves].any()
         return FramesReport(collides, tests, hit_mask=hit, dfs=self)
 
     def tested_counts(self, hit: NDArray[np.bool_]) -> NDArray[np.int64]:
