@@ -266,3 +266,21 @@ def test_frames_the_program_does_not_set_read_as_identity_with_a_note() -> None:
     assert np.allclose(
         next(w for w in read.work_objects if w.name == "fixture").T_base_wobj, np.eye(4)
     )
+
+
+def test_a_joint_on_a_turn_boundary_is_found_in_one_turn_only() -> None:
+    """J6 at exactly 180 deg (turn 1) and -180 deg (turn -1): the other turn is not taken too."""
+    from workbench.kinematics import DHRobot
+    from workbench.kinematics.arm_configuration import arm_configuration, select_solution
+    from workbench.motion.programs.fanuc import turn_number
+    from workbench.motion.programs.fanuc_read import controller_ranges
+
+    robot = DHRobot.mz07()
+    for j6 in (180.0, -180.0, 0.0):
+        q_ctrl = np.radians([10.0, 80.0, 20.0, 30.0, -40.0, j6])
+        q = robot.convention.to_model(q_ctrl)
+        turns = tuple(turn_number(np.degrees(q_ctrl[j])) for j in (0, 3, 5))
+        got = select_solution(
+            robot, robot.fk(q), arm_configuration(robot, q), controller_ranges(turns)
+        )
+        assert np.max(np.abs(got - q)) < 1e-9, j6

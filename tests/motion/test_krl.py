@@ -235,7 +235,7 @@ ENDDAT
         lin.target.T_wobj_tcp[:3, :3], [[0, 0, 1], [0, 1, 0], [-1, 0, 0]], atol=1e-12
     )  # Ry(90)
     assert (
-        lin.target.controller_ranges[4, 0] == pytest.approx(-2 * np.pi, abs=1e-5)
+        lin.target.controller_ranges[4, 0] == pytest.approx(-2 * np.pi)
         and lin.target.controller_ranges[0, 0] == 0.0
     )
     assert mv[3].target.name == "P1" and np.allclose(

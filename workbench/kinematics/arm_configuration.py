@@ -32,6 +32,11 @@ from workbench.kinematics.model import RobotModel
 
 FloatArray = NDArray[np.float64]
 
+RANGE_TOL = 1e-6
+"""How far [rad] a joint may lie outside a stored range and still be taken, when no solution
+lies inside one (rounding of a joint written on a range's boundary: programs hold about
+1e-7 rad)."""
+
 
 @dataclass(frozen=True)
 class ArmConfiguration:
@@ -92,13 +97,18 @@ def select_solution(
     configuration: ArmConfiguration,
     controller_ranges: ArrayLike | None = None,
     *,
+    q_near: ArrayLike | None = None,
     where: str = "target",
 ) -> FloatArray:
     """Return the joints (dof,) [rad, model] that a stored configuration selects for a pose.
 
     `controller_ranges` (dof, 2) [rad, controller convention] are the half-open intervals
     [lo, hi) the vendor's turn data put each joint in (ABB's quadrants, KUKA's Turn signs,
-    FANUC's turn numbers); None or +-inf rows leave a joint free. Raises UnreachableError
+    FANUC's turn numbers); None or +-inf rows leave a joint free. Solutions inside the ranges
+    win; where none is, those within `RANGE_TOL` of them count (a joint written on a boundary).
+    `q_near` (the previous target's joints) is for linear and circular moves, which controllers
+    run continuously from where the arm is (KUKA ignores Status/Turn there, ABB checks
+    confdata only): the solutions within `RANGE_TOL` of the ranges count, the nearest wins. Raises UnreachableError
     naming `where` when no solution has that configuration, or when several remain (the
     configuration data does not pin the joints down).
     """
@@ -110,9 +120,16 @@ def select_solution(
     if controller_ranges is not None:
         rng = np.asarray(controller_ranges, float).reshape(model.dof, 2)
         qc = model.convention.to_controller(sols)
-        eps = 1e-9
-        keep &= np.all((qc >= rng[:, 0] - eps) & (qc < rng[:, 1] + eps), axis=1)
+        # half-open [lo, hi): the solutions inside win; only where none is (a joint on a
+        # boundary, moved across it by rounding) do those within RANGE_TOL of a range count
+        inside = keep & np.all((qc >= rng[:, 0]) & (qc < rng[:, 1]), axis=1)
+        near = keep & np.all((qc >= rng[:, 0] - RANGE_TOL) & (qc <= rng[:, 1] + RANGE_TOL), axis=1)
+        keep = near if q_near is not None or not inside.any() else inside
     found = sols[keep]
+    if q_near is not None and len(found) > 1:
+        # a linear move: the controller follows the path from the previous joints
+        d = np.linalg.norm(found - np.asarray(q_near, float), axis=1)
+        return np.asarray(found[int(np.argmin(d))], float)
     if len(found) == 0:
         have = sorted({c.label() for c in confs})
         raise UnreachableError(

@@ -16,8 +16,8 @@ Returned: tools UTOOL0 (the faceplate) and UFRAME0 (the world), both identity, p
 frame the program sets or uses (a number the program uses but does not set is read as
 identity, with a note: its value lives in the controller); Cartesian targets with their
 `ArmConfiguration` (F/N, U/D, T/B) and controller joint ranges from the turn numbers of J1,
-J4, J6 (`fanuc.turn_range_deg`, widened by 1e-6 rad so a joint written at a boundary is
-found); zones CNTn -> n mm (`fanuc.zone_of_cnt`). Lines it does not understand are in
+J4, J6 (`fanuc.turn_range_deg`; `select_solution` takes them half-open, so a joint on a
+boundary is found in one turn only); zones CNTn -> n mm (`fanuc.zone_of_cnt`). Lines it does not understand are in
 `unknown`; a malformed line raises InputError naming it.
 """
 
@@ -46,7 +46,6 @@ from workbench.motion.programs.model import (
 )
 
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-TURN_SLACK = 1e-6  # rad each side of a turn interval
 DEFAULT_WAITTMOUT = 3000  # 1/100 s, FANUC's default $WAITTMOUT
 
 _IO = r"\[\s*(\d+)\s*(?::([^\]]*))?\]"
@@ -131,8 +130,9 @@ def controller_ranges(turns: tuple[int, ...], dof: int = 6) -> np.ndarray:
     """Return the controller joint ranges (dof, 2) [rad] of the turn numbers of J1, J4, J6."""
     rng = np.tile([-np.inf, np.inf], (dof, 1))
     for j, t in zip(TURN_JOINTS, turns, strict=True):
-        lo, hi = turn_range_deg(t)
-        rng[j] = [np.radians(lo) - TURN_SLACK, np.radians(hi) + TURN_SLACK]
+        # half-open, as select_solution reads ranges: a joint on a boundary (J6 at 180 deg) is
+        # found in one turn, not also one turn over
+        rng[j] = np.radians(turn_range_deg(t))
     return rng
 
 

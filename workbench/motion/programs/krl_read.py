@@ -24,8 +24,8 @@
 
 Cartesian targets come back with their `ArmConfiguration` from Status (bit 0 set: overhead,
 not front; bit 1: elbow up; bit 2: A5 < 0, wrist flip) and controller joint ranges from Turn
-(bit i set: axis i+1 in (-360, 0) deg, else [0, 360): an axis at exactly 0 is not also taken
-at +-360, where its range allows both); see `krl.py` for the definitions and
+(bit i set: axis i+1 in [-360, 0) deg, else [0, 360), half-open: an axis at exactly 0 is not
+also taken at 360, where its range allows both); see `krl.py` for the definitions and
 sources. Every other line (BAS/ILF calls, other declarations, relative moves, subroutines)
 is listed in `unknown` as (line, text), lines of the `.dat` as (line, "name.dat: text").
 A `.src` that uses a target its `.dat` would declare, without that `.dat`, is an InputError
@@ -93,9 +93,9 @@ _AXIS_TYPES = {"E6AXIS", "AXIS"}
 _AXES = tuple(f"A{k}" for k in range(1, 7))
 _FRAME_KEYS = ("X", "Y", "Z", "A", "B", "C")
 
-_TURN = (
-    2.0 * np.pi
-)  # Turn bits give (-360, 0) or [0, 360) deg: an axis at 0 is not also taken at +-360
+# Turn bits give [-360, 0) or [0, 360) deg (select_solution takes the half-open ranges, so an
+# axis at 0 on a +-360 deg joint is not also taken at 360)
+_TURN = 2.0 * np.pi
 
 
 def _split_comment(line: str) -> tuple[str, str]:
@@ -543,7 +543,7 @@ class _Reader:
         if "T" in agg:
             t = int(_float(agg, "T", where))
             ranges = np.array(
-                [[1e-6 - _TURN, 0.0] if t & (1 << i) else [0.0, _TURN - 1e-6] for i in range(6)],
+                [[-_TURN, 0.0] if t & (1 << i) else [0.0, _TURN] for i in range(6)],
                 float,
             )
             if cfg is not None and bool(t & 16) != cfg.wrist_flip:

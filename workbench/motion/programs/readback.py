@@ -34,7 +34,13 @@ def _find(items: tuple, name: str, what: str, line: int) -> object:
 
 
 def target_joints(
-    target: ReadTarget, tool: ToolData, wobj: WorkObject, model: RobotModel, *, where: str
+    target: ReadTarget,
+    tool: ToolData,
+    wobj: WorkObject,
+    model: RobotModel,
+    *,
+    where: str,
+    q_near: FloatArray | None = None,
 ) -> FloatArray:
     """Return the joints (dof,) [rad, model] a controller reaches for a read target.
 
@@ -45,18 +51,26 @@ def target_joints(
     if target.joints is not None:
         return np.asarray(model.convention.to_model(target.joints), float)
     if target.T_wobj_tcp is None or target.configuration is None:
-        raise InputError(f"{where}: target {target.name!r} has neither joints nor a pose with its configuration")
+        raise InputError(
+            f"{where}: target {target.name!r} has neither joints nor a pose with its configuration"
+        )
     T = wobj.T_base_wobj @ target.T_wobj_tcp @ invert_transform(tool.T_flange_tcp)
-    return select_solution(model, T, target.configuration, target.controller_ranges, where=where)
+    return select_solution(
+        model, T, target.configuration, target.controller_ranges, q_near=q_near, where=where
+    )
 
 
 def solve_moves(read: ReadProgram, model: RobotModel) -> list[FloatArray]:
-    """Return the controller's joints (dof,) [rad, model] at every move's target, in order."""
-    out = []
+    """Return the controller's joints (dof,) [rad, model] at every move's target, in order
+    (a linear or circular move's from its configuration data and the previous target's joints)."""
+    out: list[FloatArray] = []
     for mv in read.moves:
         tool = _find(read.tools, mv.tool, "tool", mv.line)
         wobj = _find(read.work_objects, mv.wobj, "work object", mv.line)
-        out.append(target_joints(mv.target, tool, wobj, model, where=f"line {mv.line} ({mv.name})"))  # type: ignore[arg-type]
+        # a linear or circular move runs on from the previous target's joints
+        near = out[-1] if out and mv.kind != "joint" else None
+        where = f"line {mv.line} ({mv.name})"
+        out.append(target_joints(mv.target, tool, wobj, model, where=where, q_near=near))  # type: ignore[arg-type]
     return out
 
 
