@@ -98,7 +98,7 @@ def test_a_waypoint_a_hundredth_of_a_micrometre_away_is_merged() -> None:
 def test_sampling_over_the_budget_is_refused_with_the_estimate() -> None:
     traj = smooth_joint_path(np.array([[0.0, 0.0], [1.0, 0.0]]), V, A, J)
     dt = traj.duration / (MAX_SAMPLES + 10)
-    with pytest.raises(PlanningError, match=r"samples every .* above the budget of 30,000"):
+    with pytest.raises(PlanningError, match=rf"samples every .* above the budget of {MAX_SAMPLES:,}"):
         traj.sample(dt)
     times = traj.sample(traj.duration / (MAX_SAMPLES - 10))[0]
     assert len(times) <= MAX_SAMPLES

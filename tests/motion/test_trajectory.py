@@ -9,6 +9,7 @@ import ruckig
 from workbench.errors import InputError
 from workbench.motion.speed_bounds import max_speed_change, rest_to_rest_time
 from workbench.motion.trajectory import smooth_joint_path
+from workbench.motion.validation import validate_trajectory
 
 V, A, J = np.full(6, 2.0), np.full(6, 8.0), np.full(6, 60.0)
 
@@ -194,3 +195,27 @@ def test_failed_segment_falls_back_to_a_stop_then_raises_naming_it(monkeypatch):
     monkeypatch.setattr(trajectory._SegmentSolver, "solve", never)
     with pytest.raises(PlanningError, match=r"segment 1 \(waypoint 1 -> 2\).*test: refused"):
         smooth_joint_path(q, V, A, J)
+
+
+def test_holds_wait_at_exact_stops_and_shift_the_rest() -> None:
+    """A program's waits: the robot stands still at the stop, then runs the rest unchanged."""
+    q = np.array([[0, 0, 0, 0, 0, 0], [0.5, 0.2, 0, 0, 0, 0], [0.6, -0.3, 0.2, 0, 0, 0]], float)
+    V, A, J = np.full(6, 2.0), np.full(6, 8.0), np.full(6, 60.0)
+    traj = smooth_joint_path(q, V, A, J, exact_stop=(0, 1, 2))
+    held = traj.with_holds([(1, 0.7), (0, 0.25)])
+    assert held.duration == pytest.approx(traj.duration + 0.95)
+    t1 = traj.waypoint_times[1]
+    assert held.waypoint_times[1] == pytest.approx(t1 + 0.25)
+    assert held.waypoint_times[2] == pytest.approx(traj.waypoint_times[2] + 0.95)
+    # twin: the held trajectory is the original with its clock stopped twice
+    t = np.linspace(0.0, traj.duration, 500)
+    shifted = t + np.where(t > 0.0, 0.25, 0.0) + np.where(t > t1, 0.7, 0.0)
+    np.testing.assert_allclose(held.at(shifted)[0], traj.at(t)[0], atol=1e-12)
+    still = held.at(np.linspace(t1 + 0.25, t1 + 0.95, 30))
+    np.testing.assert_allclose(still[0], np.broadcast_to(q[1], still[0].shape), atol=1e-12)
+    assert np.abs(still[1]).max() == 0.0 and np.abs(still[2]).max() == 0.0
+    assert validate_trajectory(held, max_velocity=V, max_acceleration=A, max_jerk=J).ok
+    moving = smooth_joint_path(q, V, A, J)  # flows through waypoint 1
+    if 1 not in moving.stop_indices:
+        with pytest.raises(InputError, match="waypoint 1: a wait needs an exact stop"):
+            moving.with_holds([(1, 0.5)])

@@ -42,8 +42,9 @@ the segment time the slowest one sets). At 1 the speeds sit on the edge of reach
 so joints moving a little must dip their speed and ruckig's synchronised profile
 overshoots; 0.45 was the fastest on benchmarks/motion.py's sets (0.3-0.5 within 5 %).
 """
-MAX_SAMPLES = 30_000
-"""Most samples of one trajectory (`Trajectory.sample`): its duration / dt. A longer one is
+MAX_SAMPLES = 1_000_000
+"""Most samples of one trajectory (`Trajectory.sample`): its duration / dt (about 200 MB of
+positions, velocities and accelerations for 6 joints; 2.7 hours at 0.01 s). A longer one is
 refused before it is sampled, with the estimate."""
 
 # Why ruckig refused a segment, by its result code (the Python binding knows only some of
@@ -167,6 +168,60 @@ class Trajectory:
             k = np.clip(np.searchsorted(self.piece_start[j], t, side="right") - 1, 0, None)
             out[:, j] = self.piece_j[j, k]
         return out
+
+    def with_holds(self, holds: Sequence[tuple[int, float]]) -> Trajectory:
+        """Return the trajectory holding still `seconds` [s] at each (waypoint index, seconds)
+        of `holds`: the program's waits at an exact stop (a dwell, a gripper's settle time).
+
+        The waypoint must be a stop (`stop_indices`): InputError naming it otherwise. Later
+        waypoints, segments and pieces move later by the holds before them.
+        """
+        out = self
+        for idx, seconds in sorted(holds, key=lambda h: -self.waypoint_times[h[0]]):
+            if seconds <= 0.0:
+                continue
+            if idx not in self.stop_indices:
+                raise InputError(
+                    f"waypoint {idx}: a wait needs an exact stop there (the robot is moving)"
+                )
+            out = out._hold(float(self.waypoint_times[idx]), idx, float(seconds))
+        return out
+
+    def _hold(self, t: float, idx: int, seconds: float) -> Trajectory:
+        pos = self.at([t])[0][0]
+        dof = self.dof
+        # (dof, P): pieces that start at or after the stop move later (the stop is a boundary)
+        later = self.piece_start >= t - 1e-12
+        start = np.where(later, self.piece_start + seconds, self.piece_start)
+        # the still piece goes in front of each joint's first later piece
+        cols = [np.searchsorted(start[j], t + seconds * 0.5) for j in range(dof)]
+
+        def insert(a: NDArray[np.float64], value: NDArray[np.float64]) -> NDArray[np.float64]:
+            rows = [np.insert(a[j], cols[j], value[j]) for j in range(dof)]
+            return np.stack(rows)
+
+        zero = np.zeros(dof)
+        wp_t = self.waypoint_times.copy()
+        wp_t[np.arange(len(wp_t)) > idx] += seconds
+        seg_t = np.where(
+            self.segment_start_times >= t - 1e-12,
+            self.segment_start_times + seconds,
+            self.segment_start_times,
+        )
+        return Trajectory(
+            duration=self.duration + seconds,
+            waypoint_times=wp_t,
+            waypoints=self.waypoints,
+            segments=self.segments,
+            segment_start_times=seg_t,
+            stop_indices=self.stop_indices,
+            dt=self.dt,
+            piece_start=insert(start, np.full(dof, t)),
+            piece_p=insert(self.piece_p, pos),
+            piece_v=insert(self.piece_v, zero),
+            piece_a=insert(self.piece_a, zero),
+            piece_j=insert(self.piece_j, zero),
+        )
 
 
 def _flow_velocities(

@@ -22,7 +22,7 @@ from workbench.motion import (
     time_program,
     validate_trajectory,
 )
-from workbench.motion.programs.from_plan import motion_program
+from workbench.motion.programs.from_plan import motion_program, wait_holds, wait_summary
 from workbench.motion.programs.from_plan import robot_program as _robot_program
 from workbench.motion.programs.model import MotionLimits, RobotProgram, ToolData, WorkObject
 from workbench.project.models import ProgramSI, Project
@@ -97,7 +97,9 @@ class MotionPlan:
 
     def summary(self) -> str:
         """Return a one-paragraph human summary."""
-        lines = [f"cycle time {self.cycle_time:.3f} s, {len(self.program.moves)} moves"]
+        head = f"cycle time {self.cycle_time:.3f} s"
+        waits = wait_summary(self.items, self.path) if self.path is not None else ""
+        lines = [head + (f" ({waits})" if waits else "") + f", {len(self.program.moves)} moves"]
         lines.append(
             "within joint limits"
             if self.limits_report.ok
@@ -171,7 +173,7 @@ def plan_motion(
     report(0.2, "jerk-limited timing")
     traj = time_program(
         path, model.max_acceleration, model.max_jerk, position_limits=model.limits, program=program
-    )
+    ).with_holds(wait_holds(items, path))  # the program's waits, held at their stops
     plan = plan_from_trajectory(
         program,
         traj,

@@ -36,12 +36,15 @@ from workbench.motion.program import JOINT, Move, Program
 from workbench.motion.programs.model import (
     Action,
     Comment,
+    Gripper,
     Instruction,
     MotionLimits,
     MoveInstr,
     RobotProgram,
     Target,
     ToolData,
+    WaitInput,
+    WaitTime,
     WorkObject,
 )
 from workbench.motion.trajectory import Trajectory
@@ -167,11 +170,58 @@ def arrival_indices(path: JointPath, n_moves: int) -> NDArray[np.int64]:
     return out
 
 
-def move_durations(path: JointPath, trajectory: Trajectory, n_moves: int) -> FloatArray:
+def wait_holds(items: Sequence[Item], path: JointPath) -> list[tuple[int, float]]:
+    """Return the program's waits as (waypoint index, seconds) of `path`: the wait times
+    (WaitTime, a gripper's settle time) of the actions after each move, held at its target's
+    last waypoint (before the first move: at the start, waypoint 0). Waits for an input have
+    no known length and count 0 s (`MotionPlan.summary` says so)."""
+    n = len(_moves(items))
+    arrive = arrival_indices(path, n) if n else np.zeros(0, np.int64)
+    holds: dict[int, float] = {}
+    done = 0
+    for item in items:
+        if not _is_action(item):
+            done += 1
+            continue
+        acts = item.expand() if isinstance(item, Gripper) else (item,)
+        secs = sum(a.seconds for a in acts if isinstance(a, WaitTime))
+        if secs > 0.0:
+            wp = 0 if done == 0 else int(arrive[done - 1])
+            holds[wp] = holds.get(wp, 0.0) + float(secs)
+    return sorted(holds.items())
+
+
+def wait_summary(items: Sequence[Item], path: JointPath) -> str:
+    """Return what the plan's time holds of the program's waits ("0.40 s of waits; waits for
+    inputs count 0 s"), or "" when it has none."""
+    held = sum(s for _, s in wait_holds(items, path))
+    inputs = any(
+        isinstance(a, WaitInput)
+        for it in items
+        if _is_action(it)
+        for a in (it.expand() if isinstance(it, Gripper) else (it,))
+    )
+    parts = [f"{held:.2f} s of waits"] if held > 0 else []
+    if inputs:
+        parts.append("waits for inputs count 0 s")
+    return "; ".join(parts)
+
+
+def move_durations(
+    path: JointPath,
+    trajectory: Trajectory,
+    n_moves: int,
+    holds: Sequence[tuple[int, float]] = (),
+) -> FloatArray:
     """Return each move's planned duration (n_moves,) [s]: the time between the arrivals at the
-    previous target (the start for the first) and at its own; they add up to the duration."""
-    arrive = np.asarray(trajectory.waypoint_times, float)[arrival_indices(path, n_moves)]
-    arrive[-1] = trajectory.duration
+    previous target (the start for the first) and at its own, less the waits held between them
+    (`holds`, as `Trajectory.with_holds` took them: the program states those as actions); with
+    the waits they add up to the duration."""
+    idx = arrival_indices(path, n_moves)
+    arrive = np.asarray(trajectory.waypoint_times, float)[idx].copy()
+    arrive[-1] = trajectory.duration - sum(s for w, s in holds if w >= idx[-1])
+    for w, secs in holds:  # a hold at waypoint w delays every waypoint after it
+        arrive[idx > w] -= secs
     return np.diff(np.concatenate([[0.0], arrive]))
 
 
@@ -231,6 +281,7 @@ def fit_linear_speed(
             hi = v
     return hi
 
+
 def _unique_names(names: list[str]) -> list[str]:
     seen: dict[str, int] = {}
     out = []
@@ -271,7 +322,7 @@ def robot_program(
     )
     wobjs = {w.name: w for w in work_objects}
     idx = arrival_indices(path, n)
-    durations = move_durations(path, trajectory, n)
+    durations = move_durations(path, trajectory, n, wait_holds(items, path))
     names = _unique_names([mv.name for _, mv in moves_in])
     T_tcp_flange = invert_transform(tool.T_flange_tcp)
     planned = iter(range(n))
