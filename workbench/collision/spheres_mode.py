@@ -193,7 +193,9 @@ class SpheresMode:
             nc = len(self.cell_spheres) if cell else 0
             np_ = len(self.pair_a)
             # One gather: the cell spheres' slots, then both ends of every sphere pair.
-            rows = np.concatenate([slot[self.cell_spheres][:nc], slot[self.pair_a], slot[self.pair_b]])
+            rows = np.concatenate(
+                [slot[self.cell_spheres][:nc], slot[self.pair_a], slot[self.pair_b]]
+            )
             radius = np.concatenate(
                 [
                     self.radii[self.cell_spheres][:nc] + err + self.margin,

@@ -263,7 +263,6 @@ class SparseSDF:
             out[near] = acc
         return out
 
-
     def query_fast(self, points: FloatArray) -> FloatArray:
         """Return `query` at points (M, 3) [m] that the caller guarantees finite float64.
 
