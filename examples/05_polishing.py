@@ -41,7 +41,9 @@ def main(out_dir: str | Path | None = None) -> Path:
 
     exported = wb.export_program("krl", "polishing")  # the .src and its .dat
     src, dat = exported.write_to(out)
-    print(f"wrote the KRL program: {src} ({len(src.read_text().splitlines())} lines) and {dat.name}")
+    print(
+        f"wrote the KRL program: {src} ({len(src.read_text().splitlines())} lines) and {dat.name}"
+    )
     return src
 
 

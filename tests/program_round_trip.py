@@ -58,7 +58,9 @@ def sample_wobj() -> WorkObject:
     return WorkObject("fixture", T)
 
 
-def sample_program(model: RobotModel | None = None, name: str = "demo") -> tuple[RobotProgram, RobotModel]:
+def sample_program(
+    model: RobotModel | None = None, name: str = "demo"
+) -> tuple[RobotProgram, RobotModel]:
     """Return (program, model): every move kind, every action, two tools, two work objects."""
     model = model or DHRobot.mz07()
     tool = sample_tool()
@@ -82,7 +84,9 @@ def sample_program(model: RobotModel | None = None, name: str = "demo") -> tuple
         MoveInstr("joint", cart("p_pick"), 0.5, 0.02, "gripper", "fixture", 0.9),
         MoveInstr("linear", cart("p_place"), 0.25, 0.0, "gripper", "fixture", 2.0),
         Gripper(True, out, True, closed, 2.0, 0.2),
-        MoveInstr("circular", cart("p_far"), 0.1, 0.0, "gripper", "fixture", 3.5, via=cart("p_via")),
+        MoveInstr(
+            "circular", cart("p_far"), 0.1, 0.0, "gripper", "fixture", 3.5, via=cart("p_via")
+        ),
         SetOutput(Signal("do_blow", 5), True),
         WaitTime(0.5),
         PulseOutput(Signal("do_blow", 5), 0.3),
@@ -162,7 +166,9 @@ def check_read_back(
         assert _angle(rwobj.T_base_wobj[:3, :3], wobj.T_base_wobj[:3, :3]) < 0.01, where
         assert np.max(np.abs(q - mv.target.q)) < joint_tol, (where, np.degrees(q - mv.target.q))
         if mv.target.cartesian:
-            T_planned = invert_transform(wobj.T_base_wobj) @ model.fk(mv.target.q) @ tool.T_flange_tcp
+            T_planned = (
+                invert_transform(wobj.T_base_wobj) @ model.fk(mv.target.q) @ tool.T_flange_tcp
+            )
             T_read = rm.target.T_wobj_tcp
             assert T_read is not None, where
             assert np.linalg.norm(T_read[:3, 3] - T_planned[:3, 3]) < 1e-5, where

@@ -65,9 +65,13 @@ def _parser() -> argparse.ArgumentParser:
         "import", help="read a robot program written elsewhere into the project's program"
     )
     imp.add_argument("project", help="project JSON (the robot, tool and cell the program runs in)")
-    imp.add_argument("program", nargs="+", help="program file(s): .mod, .src with its .dat, .ls, ...")
     imp.add_argument(
-        "--format", choices=["rapid", "krl", "ls", "urscript", "nachi"], help="default: by file name"
+        "program", nargs="+", help="program file(s): .mod, .src with its .dat, .ls, ..."
+    )
+    imp.add_argument(
+        "--format",
+        choices=["rapid", "krl", "ls", "urscript", "nachi"],
+        help="default: by file name",
     )
     imp.add_argument("--out", help="project JSON to write (default: overwrite PROJECT)")
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")

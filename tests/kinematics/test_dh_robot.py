@@ -281,7 +281,7 @@ def test_labelled_solutions_are_every_configuration_and_turn_stable_across_picks
             assert "elbow A" not in name and "elbow B" not in name
         assert np.abs(found[0][1] - q).max() < 1e-7, "nearest first"
         before = {name: qs for name, qs in found}
-        for name, qs in found[1:3]:
+        for _name, qs in found[1:3]:
             again = dict(labelled_solutions(robot, T, qs))
             assert again.keys() == before.keys(), "labels do not depend on where the arm is"
             for k in before:

@@ -17,7 +17,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from pydantic import Field, model_validator
 
+from workbench.kinematics.joint_convention import JointConvention
+from workbench.kinematics.presets import MZ07_CONVENTION
 from workbench.project import bounds as B
+from workbench.project import program_io as io_
 from workbench.project.assembly import AssemblySpec
 from workbench.project.bending import BendingSpec
 from workbench.project.collision import CollisionSpec
@@ -34,9 +37,6 @@ from workbench.project.common import (
     StrictModel,
 )
 from workbench.project.polishing import PolishingSpec
-from workbench.project import program_io as io_
-from workbench.kinematics.joint_convention import JointConvention
-from workbench.kinematics.presets import MZ07_CONVENTION
 from workbench.project.units import DEG, MM, pose_to_matrix
 
 FloatArray = NDArray[np.float64]

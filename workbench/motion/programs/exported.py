@@ -65,7 +65,9 @@ def merge_exports(parts: list[ExportedProgram]) -> ExportedProgram:
     for p in parts:
         for name, text in p.files.items():
             if name in files:
-                raise InputError(f"two programs write the file {name!r}; give the robots distinct names")
+                raise InputError(
+                    f"two programs write the file {name!r}; give the robots distinct names"
+                )
             files[name] = text
         notes.extend(p.notes)
     return ExportedProgram(files, tuple(notes))

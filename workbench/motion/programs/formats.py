@@ -126,5 +126,7 @@ def format_of(names: Sequence[str]) -> str:
             )
         found.update(kinds)
     if len(found) != 1:
-        raise InputError(f"files {list(names)}: they are of {len(found)} formats; import one program at a time")
+        raise InputError(
+            f"files {list(names)}: they are of {len(found)} formats; import one program at a time"
+        )
     return found.pop()

@@ -18,7 +18,7 @@ SI inside: m, rad, s, kg. Posts convert to each controller's units.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal, Union
+from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -176,8 +176,8 @@ class SyncPoint:
     input: Signal | None = None
 
 
-Action = Union[SetOutput, PulseOutput, WaitInput, WaitTime, Gripper, Comment, SyncPoint]
-Instruction = Union[MoveInstr, Action]
+Action = SetOutput | PulseOutput | WaitInput | WaitTime | Gripper | Comment | SyncPoint
+Instruction = MoveInstr | Action
 
 
 @dataclass(frozen=True)
@@ -213,7 +213,9 @@ class RobotProgram:
         for t in self.tools:
             if t.name == name:
                 return t
-        raise InputError(f"program {self.name}: no tool {name!r}; tools: {[t.name for t in self.tools]}")
+        raise InputError(
+            f"program {self.name}: no tool {name!r}; tools: {[t.name for t in self.tools]}"
+        )
 
     def work_object(self, name: str) -> WorkObject:
         """Return the work object called `name` (InputError when there is none)."""
@@ -295,7 +297,9 @@ def check_program(program: RobotProgram, *, needs_mass: bool = False) -> None:
                 raise InputError(f"{where}: target {tgt.name!r} needs {program.dof} finite joints")
             if tgt.T_wobj_tcp is not None and tgt.configuration is None:
                 raise InputError(f"{where}: Cartesian target {tgt.name!r} has no arm configuration")
-        if mv.kind == "circular" and (mv.via is None or not mv.via.cartesian or not mv.target.cartesian):
+        if mv.kind == "circular" and (
+            mv.via is None or not mv.via.cartesian or not mv.target.cartesian
+        ):
             raise InputError(f"{where}: a circular move needs Cartesian via and end targets")
         if mv.kind != "joint" and not mv.target.cartesian:
             raise InputError(f"{where}: a {mv.kind} move needs a Cartesian target")
