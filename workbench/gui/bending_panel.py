@@ -85,8 +85,8 @@ class BendingPanel:
             NumberField(
                 s,
                 f"Grasp {axis} [mm]",
-                get=lambda i=i: float(self.app.wb.bending.grasp_offset()[i] * MM_PER_M),
-                put=lambda v, i=i: self._set_offset(i, v),
+                get=lambda i=i: float(self.app.wb.bending.grasp_offset()[i] * MM_PER_M),  # type: ignore[misc]
+                put=lambda v, i=i: self._set_offset(i, v),  # type: ignore[misc]
                 allowed=lambda: (
                     f"a point on flange '{self.app.wb.bending.grasp_flange}'"
                     " (its polygon frame) [mm]"

@@ -51,9 +51,9 @@ class JogPanel:
                 NumberField(
                     s,
                     f"J{j + 1} [deg]",
-                    get=lambda j=j: float(self._controller_deg()[j]),
-                    put=lambda v, j=j: self._set_joint(j, v),
-                    allowed=lambda lo=lo, hi=hi: f"[{format_number(lo)}, {format_number(hi)}] deg",
+                    get=lambda j=j: float(self._controller_deg()[j]),  # type: ignore[misc]
+                    put=lambda v, j=j: self._set_joint(j, v),  # type: ignore[misc]
+                    allowed=lambda lo=lo, hi=hi: f"[{format_number(lo)}, {format_number(hi)}] deg",  # type: ignore[misc]
                     changed=self.refresh,
                     slider=(float(np.floor(lo * 10) / 10), float(np.ceil(hi * 10) / 10), 0.1),
                     hint=f"controller joint value [deg], {format_number(lo)} to {format_number(hi)}",

@@ -217,11 +217,11 @@ class ProgramEditorPanel:
             self._syncing = True
             try:
                 self.item.options = tuple(labels)
-                self.item.value = labels[self.selected] if self.selected is not None else labels[0]
-                self.name.value = it.name if is_move else ""
-                self.type.value = it.type if is_move else "joint"
+                self.item.value = labels[self.selected] if self.selected is not None else labels[0]  # type: ignore[misc]
+                self.name.value = it.name if is_move else ""  # type: ignore[misc]
+                self.type.value = it.type if is_move else "joint"  # type: ignore[misc]
                 self.wobj.options = tuple(self.editor.work_objects())
-                self.wobj.value = (it.wobj or "base") if is_move else "base"
+                self.wobj.value = (it.wobj or "base") if is_move else "base"  # type: ignore[misc]
             finally:
                 self._syncing = False
             for w in (self.name, self.type, self.wobj, self.speed.text, self.zone.text):

@@ -11,7 +11,7 @@ project file is reported with its JSON path instead of being ignored.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Annotated, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -273,7 +273,9 @@ class CellObject(StrictModel):
 class Cell(StrictModel):
     """Everything around the robot."""
 
-    objects: Annotated[list[CellObject], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
+    objects: Annotated[list[CellObject], Field(max_length=B.MAX_ITEMS)] = Field(
+        default_factory=list
+    )
 
     @model_validator(mode="after")
     def _unique_names(self) -> Cell:
@@ -355,7 +357,10 @@ class MoveSpec(StrictModel):
         )
 
 
-ProgramItem = io_.program_item(MoveSpec)
+if TYPE_CHECKING:
+    ProgramItem = Any  # a MoveSpec or one of program_io's actions, told apart by "type"
+else:
+    ProgramItem = io_.program_item(MoveSpec)
 
 
 class ProgramSpec(StrictModel):

@@ -12,7 +12,7 @@ work objects, the gripper) and names the field that uses an unknown one.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union, cast
 
 import numpy as np
 from pydantic import Discriminator, Field, StringConstraints, Tag, model_validator
@@ -331,7 +331,7 @@ def check_references(project: Project) -> None:
     for k, item in enumerate(project.program.moves):
         field = f"program.moves[{k}]"
         if isinstance(item, tuple(ACTION_ITEMS.values())):
-            item.to_si(project.io, field)
+            cast(Any, item).to_si(project.io, field)
         elif getattr(item, "wobj", None) not in (None, *names):
             raise ValueError(
                 f"{field}.wobj: {item.wobj!r} is not a work object; work objects: {names}"
@@ -346,7 +346,7 @@ def program_items(project: Project, convention: Any = None) -> tuple[Any, ...]:
     out: list[Any] = []
     for k, item in enumerate(project.program.moves):
         if isinstance(item, tuple(ACTION_ITEMS.values())):
-            out.append(item.to_si(project.io, f"program.moves[{k}]"))
+            out.append(cast(Any, item).to_si(project.io, f"program.moves[{k}]"))
         else:
             out.append(item.to_si(convention))
     return tuple(out)

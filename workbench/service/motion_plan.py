@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -110,12 +111,13 @@ class MotionPlan:
 
 
 def build_program(
-    spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float64], items: tuple = ()
+    spec: ProgramSI, setup: RobotSetup, q_start: NDArray[np.float64], items: tuple[Any, ...] = ()
 ) -> Program:
     """Return the motion `Program` of a project program (`from_plan.motion_program`): `items`
     are its moves and actions (default: the moves of `spec`)."""
+    seq: tuple[Any, ...] = items or tuple(spec.moves)
     return motion_program(
-        spec.name, items or spec.moves, setup.model, setup.T_world_base, setup.T_flange_tcp, q_start
+        spec.name, seq, setup.model, setup.T_world_base, setup.T_flange_tcp, q_start
     )
 
 
@@ -158,14 +160,14 @@ def plan_motion(
     policy: CollisionPolicy,
     dt: float = 0.01,
     progress: Progress | None = None,
-    items: tuple = (),
+    items: tuple[Any, ...] = (),
 ) -> MotionPlan:
     """Return the `MotionPlan` of `spec`: IK through the moves, ruckig timing, then the checks
     (collisions under `policy`). `items`: the program's moves and actions (default: its moves)."""
     report = progress or (lambda f, msg: None)
     model = setup.model
     report(0.0, "moves through IK")
-    items = items or spec.moves
+    items = items or tuple(spec.moves)
     program = build_program(spec, setup, q_start, items)
     path = plan_program(
         model, program, q_start, model.max_velocity, T_flange_tcp=setup.T_flange_tcp

@@ -12,6 +12,7 @@ from workbench.kinematics.arm_configuration import arm_configuration, select_sol
 from workbench.kinematics.model import RobotModel
 from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
 from workbench.motion.programs.model import (
+    Instruction,
     MotionLimits,
     MoveInstr,
     RobotProgram,
@@ -84,7 +85,7 @@ def to_robot_program(
     """Return the `RobotProgram` of a read program: targets re-solved (`solve_moves`), joint
     speeds as read (a move given only a time gets speed 1 and that duration), actions kept."""
     joints = iter(solve_moves(read, model))
-    instructions = []
+    instructions: list[Instruction] = []
     for ins in read.instructions:
         if not isinstance(ins, ReadMove):
             instructions.append(ins)
