@@ -214,7 +214,17 @@ def main() -> None:
     ap.add_argument("--example-only", action="store_true", help="only the example scene")
     ap.add_argument("--repeat", type=int, default=5, help="example scene runs (median over all)")
     ap.add_argument("--seeds", type=int, default=8, help="seeds per generated scene")
+    ap.add_argument("--windows-only", action="store_true", help="only RRT-Connect vs OMPL, windows")
     args = ap.parse_args()
+    if args.windows_only:
+        _rrt_vs_ompl(
+            "window scenes (window side / cube edge)",
+            window_scene,
+            (3.0, 2.0, 1.5),
+            args.seeds,
+            10.0,
+        )
+        return
     use_ompl = HAVE_OMPL and not args.no_ompl
     if not HAVE_OMPL:
         print(f"OMPL not importable: {OMPL_WHY}")

@@ -51,8 +51,10 @@ def main() -> None:
     rows = [
         ("CollisionEngine.check(q)", eng.check),
         ("wb.collision.check(q)", wb.collision.check),
-        ("  FK: bodies' poses", lambda q: eng.bodies.poses(q[None] + 0.0)),
-        ("  spheres' items (FK included)", lambda q: eng.items(q[None] + 0.0)),
+        ("  FK: poses (batched code)", lambda q: eng.bodies.poses(q[None] + 0.0)),
+        ("  items (batched, FK included)", lambda q: eng.items(q[None] + 0.0)),
+        ("  FK: bodies.poses_one(q)", eng.bodies.poses_one),
+        ("  items_one (FK included)", lambda q: eng.checker.items_one(eng.bodies.poses_one(q))),
         (
             "  containment (poses given)",
             lambda q: eng.containment.contained_one(eng.poses(q[None])[0]),
