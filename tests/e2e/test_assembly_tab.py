@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import io
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +14,7 @@ from browser_helpers import (
     save_screenshot,
     set_slider,
     steady_picture,
+    type_number,
     wait_for,
     wait_for_new_picture,
     wait_for_timeline,
@@ -20,20 +23,6 @@ from browser_helpers import (
 pytestmark = pytest.mark.e2e
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _type_vector(page, label: str, index: int, value: float) -> None:  # type: ignore[no-untyped-def]
-    """Type `value` into box `index` (0 x, 1 y, 2 z) of the viser vector input labelled `label`."""
-    row = (
-        page.locator(".mantine-Flex-root, div")
-        .filter(has=page.get_by_text(label, exact=True))
-        .filter(has=page.locator("input"))
-        .last
-    )
-    box = row.locator("input").nth(index)
-    box.click()
-    box.fill(f"{value}")
-    box.press("Enter")
 
 
 def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> None:  # type: ignore[no-untyped-def]
@@ -83,13 +72,13 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
 
     # Interference shown as found: a typed goal inside the table is reported and refused.
     z_goal = round(float(a.part("plate_a").goal[2, 3]) * 1000, 3)
-    _type_vector(page, "Goal xyz [mm]", 2, 690.0)
+    type_number(page, "Goal z [mm]", "690")
     wait_for(lambda: abs(a.part("plate_a").goal[2, 3] - 0.690) < 1e-9, what="the typed goal")
     page.get_by_text("Goal interferes with table").first.wait_for()
     assert a.interference("plate_a", a.part("plate_a").goal) == ["table"]
     page.get_by_role("button", name="Plan part").click()
     page.get_by_text("interferes with ['table']").first.wait_for()
-    _type_vector(page, "Goal xyz [mm]", 2, z_goal)
+    type_number(page, "Goal z [mm]", f"{z_goal}")
     wait_for(lambda: a.interference("plate_a", a.part("plate_a").goal) == [], what="goal clear")
 
     # The whole sequence (plates first, then screws) on the timeline, with both arms.
@@ -119,15 +108,16 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "assembly.png")
 
-    # The second arm's share of the sequence, as a RAPID module.
-    page.get_by_role("combobox", name="Program of").click()
-    page.get_by_role("option", name="MZ07_B").click()
-    wait_for(lambda: app.assembly.prog_robot.value == "MZ07_B", what="the program's robot")
+    # Every robot's share of the sequence, as RAPID modules in one zip: the server's export.
+    assert app.assembly.prog_format.value == "rapid"
     with page.expect_download() as dl:
-        page.get_by_role("button", name="Download robot program").click()
-    text = Path(dl.value.path()).read_text()
-    assert text == a.export_program("MZ07_B", "rapid", seq)
-    assert text.startswith("MODULE assembly_MZ07_B") and "MoveAbsJ" in text
+        page.get_by_role("button", name="Download robot programs").click()
+    with zipfile.ZipFile(io.BytesIO(Path(dl.value.path()).read_bytes())) as z:
+        files = {name: z.read(name).decode() for name in z.namelist()}
+    exported = app.wb.export_program("rapid", "assembly")
+    assert files == exported.files and len(files) == len(a.arms) >= 2
+    b_module = next(text for text in files.values() if text.startswith("MODULE assembly_MZ07_B"))
+    assert "MoveAbsJ" in b_module
 
     # The joint-space planner: the carrying robot's joints, robot and part checked together.
     page.get_by_role("combobox", name="Planner").click()

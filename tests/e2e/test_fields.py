@@ -20,8 +20,11 @@ from browser_helpers import (
     wait_for,
 )
 
+from workbench.geometry.transforms import wxyz_to_matrix
 from workbench.gui.app import WorkbenchApp
 from workbench.gui.fields import format_number
+from workbench.gui.program_editor import item_label
+from workbench.service.program_edit import editor
 
 pytestmark = pytest.mark.e2e
 ROOT = Path(__file__).resolve().parents[2]
@@ -262,3 +265,158 @@ def test_polishing_tab_parameters_clear_the_stale_path(launch) -> None:  # type:
     assert panel.path_info.content == "" and panel.sim_button.disabled
     _reload(page, "Polishing")
     _agree(page, "Force [N]", lambda: float(spec().force))
+
+
+def _placed_at(node, T: np.ndarray) -> bool:  # type: ignore[no-untyped-def]
+    """Return True when scene `node` stands at the transform `T` (position and rotation)."""
+    R = wxyz_to_matrix(np.asarray(node.wxyz, float))
+    return bool(
+        np.allclose(node.position, T[:3, 3], atol=1e-9) and np.allclose(R, T[:3, :3], atol=1e-6)
+    )
+
+
+def test_assembly_tab_start_and_goal_poses(launch) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(PROJECTS / "assembly_cell.json")
+    _open_tab(page, "Assembly")
+    a = app.wb.assembly
+    panel = app.assembly
+    name = str(panel.part.value)
+    k = a.part_names.index(name)
+
+    def pose(which: str):  # type: ignore[no-untyped-def]  # as the project holds it (mm, deg)
+        return getattr(a.spec.parts[k], which)
+
+    def scene_at_poses() -> bool:
+        part = a.part(name)
+        return (
+            _placed_at(panel.part_nodes[name], part.start)
+            and _placed_at(panel.start_gizmo, part.start)
+            and _placed_at(panel.goal_ghost, part.goal)
+            and _placed_at(panel.goal_gizmo, part.goal)
+        )
+
+    start_before = pose("start").model_copy(deep=True)
+    x0 = float(start_before.xyz[0])
+    drive(
+        page,
+        "Start x [mm]",
+        good=format_number(x0 + 25.0, 2),
+        bad="1e9",
+        server=lambda: float(pose("start").xyz[0]),
+        scene_ok=scene_at_poses,
+        unit="mm",
+        decimals=2,
+        extra_bad=("12.5, 3",),
+    )
+    # Only x moved: the other coordinates and the rotation stay as they were.
+    np.testing.assert_allclose(pose("start").xyz[1:], start_before.xyz[1:], atol=1e-9)
+    np.testing.assert_allclose(pose("start").rpy, start_before.rpy, atol=1e-9)
+
+    yaw0 = float(pose("goal").rpy[2])
+    drive(
+        page,
+        "Goal yaw [deg]",
+        good=format_number(yaw0 + 10.0 if yaw0 < 150 else yaw0 - 10.0, 2),
+        bad="99999",
+        server=lambda: float(pose("goal").rpy[2]),
+        scene_ok=scene_at_poses,
+        unit="deg",
+        decimals=2,
+    )
+    _reload(page, "Assembly")
+    _agree(page, "Start x [mm]", lambda: float(pose("start").xyz[0]), 2)
+    _agree(page, "Goal yaw [deg]", lambda: float(pose("goal").rpy[2]), 2)
+    assert scene_at_poses()
+
+
+def test_motion_tab_program_editor_speed_and_zone(launch) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(PROJECTS / "mz07_cell.json")
+    _open_tab(page, "Motion")
+    ed = editor(app.wb)
+    panel = app.motion.editor
+
+    def field(name: str) -> Callable[[], float]:
+        return lambda: float(getattr(ed.item(panel.selected), name))
+
+    def table_shows(unit: str) -> Callable[[], bool]:
+        def ok() -> bool:  # the program table (what the Motion tab shows) has the value in use
+            it = ed.item(panel.selected)
+            zone = "fine" if it.zone == 0 else f"{format_number(it.zone)} mm"
+            rows = app.motion.program.content.splitlines()
+            line = next(r for r in rows if r.startswith("| ▶ "))  # the selected item's row
+            assert f"{it.name or '-'} | {it.type}" in line, line
+            return f"{format_number(it.speed)} {unit} | {zone} |" in line
+
+        return ok
+
+    # The selected item at start is the last one: a joint move (speed in % of the joints').
+    assert ed.item(panel.selected).type == "joint"
+    drive(
+        page,
+        "Move speed",
+        good="55",
+        bad="150",
+        server=field("speed"),
+        scene_ok=table_shows("%"),
+        unit="%",
+    )
+    drive(
+        page,
+        "Zone [mm]",
+        good="12.5",
+        bad="5000",
+        server=field("zone"),
+        scene_ok=table_shows("%"),
+        unit="mm",
+    )
+    # A linear move's speed is in mm/s, with its own range.
+    i = next(i for i, it in enumerate(ed.items) if it.type == "linear")
+    label = item_label(i, ed.item(i))
+    page.get_by_role("combobox", name="Item", exact=True).click()
+    page.get_by_role("option", name=label, exact=True).click()
+    wait_for(lambda: panel.selected == i, what=f"item {label!r} selected")
+    _agree(page, "Move speed", field("speed"))
+    drive(
+        page,
+        "Move speed",
+        good="333",
+        bad="20000",
+        server=field("speed"),
+        scene_ok=table_shows("mm/s"),
+        unit="mm/s",
+        extra_bad=("0",),
+    )
+    _reload(page, "Motion")
+    _agree(page, "Move speed", field("speed"))
+    _agree(page, "Zone [mm]", field("zone"))
+
+
+def test_robot_tab_distance_field_slice_height(launch) -> None:  # type: ignore[no-untyped-def]
+    app, page = launch(PROJECTS / "mz07_cell.json")
+    panel = app.collision
+    page.get_by_label("Show distance field").check()
+    wait_for(lambda: panel.field_node is not None, timeout=120, what="the distance-field slice")
+
+    def slice_at_height() -> bool:  # the slice node and its legend at the height in use
+        node = panel.field_node
+        z = panel._z_mm / 1000.0
+        return (
+            node is not None
+            and abs(float(node.position[2]) - z) < 1e-9
+            and f"z = {panel._z_mm:.0f} mm" in panel.legend.content
+        )
+
+    drive(
+        page,
+        "Slice height [mm]",
+        good="650",
+        bad="5000",
+        server=lambda: panel._z_mm,
+        scene_ok=slice_at_height,
+        unit="mm",
+        decimals=1,
+        extra_bad=("-10",),
+    )
+    assert abs(float(panel.height.slider.value) - 650.0) < 1e-9, "the slider follows the box"
+    _reload(page, "Robot")
+    _agree(page, "Slice height [mm]", lambda: panel._z_mm, 1)

@@ -79,7 +79,7 @@ def test_upload_bad_project_shows_field_and_keeps_state(
     )
     name_before = app.wb.project.name
     with page.expect_file_chooser() as fc:
-        page.get_by_role("button", name="Load project JSON", exact=True).click()
+        page.get_by_role("button", name="Upload project or its files", exact=True).click()
     fc.value.set_files(str(bad))
     page.get_by_text("cell.objects[0].size").first.wait_for()
     assert app.wb.project.name == name_before

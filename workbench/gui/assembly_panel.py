@@ -11,7 +11,6 @@ import viser
 from workbench.errors import InputError
 from workbench.geometry.transforms import (
     make_transform,
-    matrix_to_rpy,
     wxyz_to_matrix,
     xyz_rpy_to_transform,
 )
@@ -31,6 +30,25 @@ MM = 1e-3
 DEG = np.pi / 180.0
 PATH_COLOR = (230, 120, 20)
 KEY_COLOR = (200, 30, 120)
+POSE_COORDINATES = (
+    ("x", "mm", "xyz"),
+    ("y", "mm", "xyz"),
+    ("z", "mm", "xyz"),
+    ("roll", "deg", "rpy"),
+    ("pitch", "deg", "rpy"),
+    ("yaw", "deg", "rpy"),
+)
+"""The start and goal boxes: coordinate, unit, and the project pose's list that holds it."""
+
+
+def _validation_text(path: str, exc: ValueError) -> str:
+    """Return a pydantic error as the project file's loader says it: '<path>.<loc>: <msg>'."""
+    errors = getattr(exc, "errors", list)()
+    parts = []
+    for e in errors:
+        loc = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in e.get("loc", ()))
+        parts.append(f"{path}{loc}: {e.get('msg', e)}".replace("Value error, ", ""))
+    return "; ".join(parts) or f"{path}: {exc}"
 
 
 class AssemblyPanel:
@@ -42,7 +60,6 @@ class AssemblyPanel:
         self.handles: list[Removable] = []
         self.nodes: list[Removable] = []
         self.plan: AssemblyPlan | None = None
-        self._syncing = False
         g = app.server.gui
         if not self.wb.assembly.available:
             self.handles.append(g.add_markdown("This project has no `assembly` section."))
@@ -63,10 +80,27 @@ class AssemblyPanel:
             + " → ".join(t.part for t in a.sequence())
         )
         self.part = g.add_dropdown("Part", options=tuple(self.names), initial_value=self.names[0])
-        self.start_xyz = g.add_vector3("Start xyz [mm]", (0.0, 0.0, 0.0), step=1.0)
-        self.start_rpy = g.add_vector3("Start rpy [deg]", (0.0, 0.0, 0.0), step=1.0)
-        self.goal_xyz = g.add_vector3("Goal xyz [mm]", (0.0, 0.0, 0.0), step=1.0)
-        self.goal_rpy = g.add_vector3("Goal rpy [deg]", (0.0, 0.0, 0.0), step=1.0)
+        # The selected part's start and goal: one strict text box per coordinate, showing and
+        # setting the project's pose (mm, deg); a refused value reverts to the pose in use.
+        self.pose_folders: list[Removable] = []
+        self.pose_fields: dict[tuple[str, str], NumberField] = {}
+        for which in ("start", "goal"):
+            folder = g.add_folder(f"{which.capitalize()} pose", expand_by_default=True)
+            self.pose_folders.append(folder)
+            with folder:
+                for k, (axis, unit, key) in enumerate(POSE_COORDINATES):
+                    label = f"{which.capitalize()} {axis} [{unit}]"
+                    self.pose_fields[(which, axis)] = NumberField(
+                        s,
+                        label,
+                        get=lambda w=which, c=key, i=k % 3: self._pose_value(w, c, i),
+                        put=lambda v, w=which, c=key, i=k % 3: self._set_coordinate(w, c, i, v),
+                        allowed=lambda w=which, c=key, u=unit: schema_range(
+                            self._pose_spec(w), c, u
+                        ),
+                        changed=lambda: self._show_poses(str(self.part.value)),
+                        decimals=2,
+                    )
         self.status = g.add_markdown("")
         self.planner = g.add_dropdown(
             "Planner",
@@ -132,10 +166,8 @@ class AssemblyPanel:
         self.handles += [
             self.info,
             self.part,
-            self.start_xyz,
-            self.start_rpy,
-            self.goal_xyz,
-            self.goal_rpy,
+            *(h for f in self.pose_fields.values() for h in f.handles),
+            *self.pose_folders,
             self.status,
             self.planner,
             *(h for f in self.planner_fields for h in f.handles),
@@ -149,13 +181,6 @@ class AssemblyPanel:
             self.prog_download,
         ]
         self.part.on_update(guarded(s, "Part")(lambda _: self._select(str(self.part.value))))
-        for h, which in (
-            (self.start_xyz, "start"),
-            (self.start_rpy, "start"),
-            (self.goal_xyz, "goal"),
-            (self.goal_rpy, "goal"),
-        ):
-            h.on_update(guarded(s, f"Part {which}")(lambda _, w=which: self._on_typed(w)))
         self.plan_button.on_click(guarded(s, "Plan part")(lambda e: self._on_plan(e, one=True)))
         self.sequence_button.on_click(
             guarded(s, "Plan sequence")(lambda e: self._on_plan(e, one=False))
@@ -207,9 +232,11 @@ class AssemblyPanel:
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
-        for f in getattr(self, "planner_fields", ()):
+        fields = [*getattr(self, "planner_fields", ()), *getattr(self, "pose_fields", {}).values()]
+        for f in fields:
             f.remove()
-        for h in (*self.handles, *self.nodes):
+        done = {id(h) for f in fields for h in f.handles}
+        for h in (*(h for h in self.handles if id(h) not in done), *self.nodes):
             h.remove()
         for extra in (getattr(self, "curve", None), getattr(self, "keys", None)):
             if extra is not None:
@@ -239,18 +266,8 @@ class AssemblyPanel:
     def _show_poses(self, name: str) -> None:
         a = self.wb.assembly
         part = a.part(name)
-        self._syncing = True
-        try:
-            for T, xyz, rpy in (
-                (part.start, self.start_xyz, self.start_rpy),
-                (part.goal, self.goal_xyz, self.goal_rpy),
-            ):
-                x, y, z = (round(float(v), 2) for v in T[:3, 3] / MM)
-                r, p, w = (round(float(v), 2) for v in matrix_to_rpy(T[:3, :3]) / DEG)
-                xyz.value = (x, y, z)  # type: ignore[misc]
-                rpy.value = (r, p, w)  # type: ignore[misc]
-        finally:
-            self._syncing = False
+        for f in self.pose_fields.values():
+            f.refresh()
         place(self.start_gizmo, part.start)
         place(self.goal_gizmo, part.goal)
         place(self.part_nodes[name], part.start)
@@ -279,9 +296,43 @@ class AssemblyPanel:
     # -- callbacks --------------------------------------------------------------------------------
     def _set_pose(self, name: str, which: str, T: np.ndarray) -> None:
         try:
-            self.wb.assembly.set_pose(name, which, T)
+            self._put_pose(name, which, T)
         finally:
             self._show_poses(name)  # the pose in use, also when refused
+
+    def _put_pose(self, name: str, which: str, T: np.ndarray) -> None:
+        """Set part `name`'s `which` pose [m]; the project's bounds refuse it otherwise."""
+        try:
+            self.wb.assembly.set_pose(name, which, T)
+        except ValueError as exc:  # pydantic's ValidationError: say it as the file would
+            i = self.wb.assembly.part_names.index(name)
+            raise InputError(_validation_text(f"assembly.parts[{i}].{which}", exc)) from None
+
+    def _pose_spec(self, which: str) -> Any:
+        """Return the selected part's `which` pose as the project holds it (mm, deg)."""
+        a = self.wb.assembly
+        return getattr(a.spec.parts[a.part_names.index(str(self.part.value))], which)
+
+    def _pose_value(self, which: str, key: str, i: int) -> float:
+        return float(getattr(self._pose_spec(which), key)[i])
+
+    def _set_coordinate(self, which: str, key: str, i: int, v: float) -> None:
+        """Set one coordinate of the selected part's pose (`key` "xyz" [mm] or "rpy" [deg])."""
+        name = str(self.part.value)
+        held = self._pose_spec(which)
+        values = {"xyz": list(held.xyz), "rpy": list(held.rpy)}
+        values[key][i] = v
+        try:  # the typed pose as the file would hold it: its bounds (an angle wraps otherwise)
+            type(held).model_validate(values)
+        except ValueError as exc:
+            k = self.wb.assembly.part_names.index(name)
+            raise InputError(_validation_text(f"assembly.parts[{k}].{which}", exc)) from None
+        T = np.array(getattr(self.wb.assembly.part(name), which), dtype=float)
+        if key == "xyz":  # the rotation stays exactly as it is
+            T[i, 3] = v * MM
+        else:
+            T = xyz_rpy_to_transform(T[:3, 3], np.asarray(values["rpy"], float) * DEG)
+        self._put_pose(name, which, T)
 
     def _set_planner(self, field: str, value: float | None) -> None:
         """Set assembly.planner.`field` [mm or count]; the section's bounds refuse it otherwise."""
@@ -289,19 +340,7 @@ class AssemblyPanel:
         try:
             setattr(planner, field, value)  # validated on assignment (the project's bounds)
         except ValueError as exc:  # pydantic's ValidationError: say it as the file would
-            detail = "; ".join(str(e.get("msg", e)) for e in getattr(exc, "errors", list)())
-            raise InputError(
-                f"assembly.planner.{field}: {detail or exc}".replace("Value error, ", "")
-            ) from None
-
-    def _on_typed(self, which: str) -> None:
-        if self._syncing:
-            return
-        xyz, rpy = (
-            (self.start_xyz, self.start_rpy) if which == "start" else (self.goal_xyz, self.goal_rpy)
-        )
-        T = xyz_rpy_to_transform(np.asarray(xyz.value) * MM, np.asarray(rpy.value) * DEG)
-        self._set_pose(str(self.part.value), which, T)
+            raise InputError(_validation_text("assembly.planner", exc)) from None
 
     def _on_gizmo(self, event: viser.TransformControlsEvent, which: str) -> None:
         if event.phase != "end":

@@ -9,7 +9,8 @@ import numpy as np
 import trimesh
 import viser
 
-from workbench.errors import WorkbenchError
+from workbench.errors import InputError, WorkbenchError
+from workbench.gui.fields import NumberField, format_number
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 
@@ -26,6 +27,8 @@ def _colormap(values: np.ndarray, scale: float) -> np.ndarray:
 
 
 FIELD_SCALE = 0.2  # [m] the distance at which the slice's colours saturate
+SLICE_RANGE_MM = (0.0, 2000.0)  # the slice heights offered (a view setting, not the project's)
+SLICE_START_MM = 400.0
 MM_PER_M = 1000.0  # display only
 
 
@@ -64,7 +67,19 @@ class CollisionPanel:
             )
             self.show_spheres = g.add_checkbox("Show spheres", initial_value=False)
             self.show_field = g.add_checkbox("Show distance field", initial_value=False)
-            self.height = g.add_slider("Slice height [mm]", 0.0, 2000.0, 10.0, 400.0)
+            self._z_mm = SLICE_START_MM  # the slice height in use (the view's own state)
+            lo, hi = SLICE_RANGE_MM
+            self.height = NumberField(
+                app.server,
+                "Slice height [mm]",
+                get=lambda: self._z_mm,
+                put=self._set_height,
+                allowed=lambda: f"[{format_number(lo)}, {format_number(hi)}] mm",
+                changed=lambda: self._on_field(None),
+                decimals=1,
+                slider=(lo, hi, 10.0),
+                hint="Height of the distance-field slice above the world's floor",
+            )
             self.legend_bar = g.add_image(colour_bar(), label="Distance [mm]", visible=False)
             self.legend = g.add_markdown("", visible=False)
             self.check_button = g.add_button("Check", icon=viser.Icon.SHIELD_CHECK)
@@ -76,7 +91,6 @@ class CollisionPanel:
         self.mode.on_update(guarded(app.server, "Plan collision mode")(self._on_mode))
         self.show_spheres.on_update(guarded(app.server, "Show spheres")(self._on_spheres))
         self.show_field.on_update(guarded(app.server, "Show distance field")(self._on_field))
-        self.height.on_update(guarded(app.server, "Slice height")(self._on_field))
         self.check_button.on_click(guarded(app.server, "Check")(self._on_check))
         # Spheres follow the robot whenever it is posed (jog, timeline).
         app.scene.on_show.append(self.update_spheres)
@@ -91,6 +105,12 @@ class CollisionPanel:
         except WorkbenchError as exc:
             self.mode.value = svc.mode  # type: ignore[misc]
             notify(self.app.server, getattr(event, "client", None), "Plan collision mode", str(exc))
+
+    def _set_height(self, z_mm: float) -> None:
+        lo, hi = SLICE_RANGE_MM
+        if not lo <= z_mm <= hi:
+            raise InputError(f"Slice height: {format_number(z_mm)} mm is outside the slice range")
+        self._z_mm = float(z_mm)
 
     def _engine(self) -> Any:
         svc = self.app.wb.collision
@@ -138,7 +158,7 @@ class CollisionPanel:
         if not self.show_field.value:
             return
         self._engine()
-        z = float(self.height.value) / 1000.0
+        z = self._z_mm / MM_PER_M
         values, corners = self.app.wb.collision.sdf_slice("z", z, size=96)
         size = corners[1] - corners[0]
         # Image rows run along -y, columns along +x.
@@ -177,6 +197,7 @@ class CollisionPanel:
             if node is not None:
                 node.remove()
         self.sphere_node = self.field_node = None
+        self.height.remove()
         for h in self.handles:
             h.remove()
         self.handles.clear()

@@ -127,7 +127,7 @@ class NumberField:
         with self._lock:
             text = self._text()
             if self.text.value != text:
-                self.text.value = text  # event.client None: ignored by _on_text
+                self.text.value = text  # type: ignore[misc]  # event.client None: ignored by _on_text
             if self.slider is not None:
                 v = min(max(float(self.get()), self.slider.min), self.slider.max)
                 if abs(float(self.slider.value) - v) > 1e-12:
@@ -206,9 +206,11 @@ class NumberField:
 def schema_range(model: Any, field: str, unit: str) -> str:
     """Return the range the project file allows for `field` of a pydantic section ('[0.1, 1000] mm').
 
-    Read from the model's JSON schema, which publishes the project's bounds (`Range`).
+    Read from the model's JSON schema, which publishes the project's bounds (`Range`). For a
+    list field (a pose's `xyz`), the range of its items.
     """
     prop = type(model).model_json_schema()["properties"][field]
+    prop = prop.get("items", prop) if prop.get("type") == "array" else prop
     for option in prop.get("anyOf", [prop]):
         if "maximum" in option:
             lo = option.get("minimum", option.get("exclusiveMinimum"))

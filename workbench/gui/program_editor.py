@@ -140,7 +140,7 @@ class ProgramEditorPanel:
                 "Move speed",
                 get=lambda: self._move_field("speed", 0.0),
                 put=lambda v: self._update(speed=v),
-                allowed=self._speed_allowed,
+                allowed=lambda: self._allowed("speed"),
                 changed=self._changed,
                 hint="A joint move's % of the joints' maximum speed; a linear move's mm/s",
             )
@@ -149,7 +149,7 @@ class ProgramEditorPanel:
                 "Zone [mm]",
                 get=lambda: self._move_field("zone", 0.0),
                 put=lambda v: self._update(zone=v),
-                allowed=lambda: "[0, 500] mm, 0 = fine (an exact stop)",
+                allowed=lambda: self._allowed("zone") + ", 0 = fine (an exact stop)",
                 changed=self._changed,
             )
             self.wobj = g.add_dropdown("Work object", options=("base",), initial_value="base")
@@ -195,11 +195,13 @@ class ProgramEditorPanel:
         it = self._current()
         return float(getattr(it, field)) if it is not None and hasattr(it, field) else default
 
-    def _speed_allowed(self) -> str:
+    def _allowed(self, field: str) -> str:
+        """Return the selected move's range of `field` as the editor checks it."""
         it = self._current()
-        if it is not None and getattr(it, "type", "") == "linear":
-            return "(0, 2000] mm/s (the robot's max TCP speed)"
-        return "(0, 100] % of the joints' maximum speed"
+        if it is None or getattr(it, "type", "") not in ("joint", "linear"):
+            return "a move's value (select a move first)"
+        assert self.selected is not None
+        return self.editor.allowed(self.selected, field)
 
     def refresh(self) -> None:
         """Show the program's items and the selected one's fields as the service has them."""

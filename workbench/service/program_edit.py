@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from workbench.errors import InputError, ProjectError
+from workbench.project import bounds as B
 from workbench.project.io import project_from_dict
 from workbench.project.program_io import ACTION_ITEMS, wobj_names
 from workbench.project.units import matrix_to_pose
@@ -86,6 +87,20 @@ class ProgramEditor:
     def can_redo(self) -> bool:
         """Return True when there is an undone edit to redo."""
         return bool(self._redo)
+
+    def allowed(self, i: int, field: str) -> str:
+        """Return the range move `i`'s `field` ("speed" or "zone") may take, with its unit: the
+        project's bounds, as an edit checks them ("(0, 100] %" for a joint move's speed)."""
+        item = self.item(i)
+        if field == "zone":
+            (lo, hi), unit, left = B.ZONE_MM, "mm", "["
+        elif field == "speed" and getattr(item, "type", None) == "joint":
+            (lo, hi), unit, left = B.JOINT_MOVE_PERCENT_OPEN, "% of the joints' maximum speed", "("
+        elif field == "speed" and getattr(item, "type", None) == "linear":
+            (lo, hi), unit, left = B.LINEAR_SPEED_MM_S, "mm/s", "["
+        else:
+            raise InputError(f"program.moves[{i}]: {field!r} is not a number of this item")
+        return f"{left}{lo:g}, {hi:g}] {unit}"
 
     def work_objects(self) -> list[str]:
         """Return the names a move's `wobj` may take ("base" first)."""
