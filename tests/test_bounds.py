@@ -99,6 +99,7 @@ CASES = [
     ("mz07_cell", ["cell", "objects", 1, "size", 0], 1e308, "cell.objects[1].size[0]", "out of range"),
     ("mz07_cell", ["tool", "size", 2], 0, "tool.size[2]", "0 mm is out of range"),
     ("mz07_cell", ["tool", "size", 2], -5, "tool.size[2]", "-5 mm is out of range"),
+    ("bending_cell", ["tool", "size", 2], 1e5, "tool.size[2]", "[0.1, 5000] mm"),
     ("mz07_cell", ["robot", "joints", 0], 1e16, "robot.joints[0]", "[-720, 720] deg"),
     ("mz07_cell", ["robot", "max_acceleration"], [0.001] * 6, "robot.max_acceleration[0]", "deg/s²"),
     ("polishing_cell", ["polishing", "controller", "latency"], 1e9, "polishing.controller.latency", "ms"),

@@ -27,6 +27,7 @@ from workbench.project.common import (
     Size3mm,
     SizeMM,
     StrictModel,
+    ToolSize3mm,
 )
 from workbench.project.units import MM, matrix_to_pose, pose_to_matrix
 
@@ -126,7 +127,7 @@ class AssemblyRobotSpec(StrictModel):
     base: Pose = Field(default_factory=Pose)
     joints: Joints | None = None  # home configuration [deg]; default all zero
     tcp: Pose = Field(default_factory=lambda: Pose(xyz=[0.0, 0.0, 150.0]))  # flange -> TCP
-    tool_size: Size3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
+    tool_size: ToolSize3mm | None = Field(default_factory=lambda: [60.0, 80.0, 120.0])  # box [mm]
     color: Color = Field(default_factory=lambda: [200, 215, 235])
     mass: io_.Mass | None = None  # tool mass [kg] (RAPID's tooldata needs it)
     cog: io_.Cog | None = None  # tool centre of gravity [mm] in the flange frame

@@ -25,6 +25,8 @@ CELL_HALF_EXTENT_MM = 100_000.0
 """Largest absolute x, y or z of any position, in the world or a local frame [mm] (a 200 m cube)."""
 SIZE_MM = (0.1, 200_000.0)
 """Edge lengths, radii and heights of cell objects, tools and parts [mm]: > 0.1 mm, at most the cell."""
+TOOL_SIZE_MM = (0.1, 5_000.0)
+"""Edge lengths of a tool's box [mm] (the robot's and the assembly arms' tools)."""
 ANGLE_DEG = 3600.0
 """Largest absolute angle of an orientation (rpy), a DH offset or twist, a grasp yaw [deg] (ten turns)."""
 JOINT_DEG = 720.0

@@ -34,6 +34,8 @@ MeshScale = Annotated[float, B.span(B.MESH_SCALE)]  # mesh units -> m
 Seed = Annotated[int, B.span((0, B.MAX_SEED))]  # a random seed
 Vec3mm = Annotated[list[Coordinate], _vector(3, "[mm, mm, mm]")]  # a position
 Size3mm = Annotated[list[SizeMM], _vector(3, "[mm, mm, mm] edge lengths")]  # a box
+ToolSizeMM = Annotated[float, B.span(B.TOOL_SIZE_MM, "mm")]
+ToolSize3mm = Annotated[list[ToolSizeMM], _vector(3, "[mm, mm, mm] edge lengths")]  # a tool box
 Vec3deg = Annotated[list[Angle], _vector(3, "[roll, pitch, yaw] in degrees")]
 Joints = Annotated[list[JointAngle], Field(max_length=B.MAX_DOF)]  # per joint [deg]
 Positive = Annotated[float, Field(gt=0)]

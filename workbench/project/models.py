@@ -35,6 +35,7 @@ from workbench.project.common import (
     Size3mm,
     SizeMM,
     StrictModel,
+    ToolSize3mm,
 )
 from workbench.project.polishing import PolishingSpec
 from workbench.project.units import DEG, MM, pose_to_matrix
@@ -192,7 +193,7 @@ class Tool(StrictModel):
     tcp: Pose = Field(default_factory=Pose)
     mesh: str | None = None  # path relative to the project file, in the flange frame
     mesh_scale: MeshScale = 0.001  # mesh units -> m (files are usually in mm)
-    size: Size3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
+    size: ToolSize3mm | None = None  # a box [mm] from the flange to the TCP when no mesh is given
     color: Color = Field(default_factory=lambda: [200, 200, 210])
     mass: io_.Mass | None = None  # kg (RAPID's tooldata needs it)
     cog: io_.Cog | None = None  # mm, centre of gravity in the flange frame
