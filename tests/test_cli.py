@@ -41,7 +41,7 @@ def test_check_bad_project_gives_one_line_reason(tmp_path: Path) -> None:
 
 def test_check_colliding_configuration_exits_1(tmp_path: Path) -> None:
     data = json.loads((ROOT / "projects" / "mz07_cell.json").read_text())
-    data["robot"]["joints"] = [0, -60, 0, 0, 0, 0]
+    data["robot"]["joints"] = [0, 30, 0, 0, -90, 0]  # controller degrees: leaning onto the table
     path = tmp_path / "hit.json"
     path.write_text(json.dumps(data))
     res = run("check", str(path))

@@ -65,7 +65,11 @@ def check_01_jog_and_ik(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> N
 def check_02_plan_and_export(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     written, out = _run("02_plan_and_export", capsys, tmp_path)
     assert "100.0 %  done" in out
-    assert re.search(r"cycle time \d+\.\d{3} s, 7 moves; within joint limits; collision-free", out)
+    assert re.search(
+        r"cycle time \d+\.\d{3} s \(0\.40 s of waits; waits for inputs count 0 s\), 7 moves;"
+        r" within joint limits; collision-free",
+        out,
+    )
     assert "ready to run" in out
     names = sorted(p.name for p in tmp_path.iterdir())
     assert names == sorted(p.name for p in written)  # type: ignore[attr-defined]

@@ -24,6 +24,7 @@ from workbench.motion.programs import (
     motion_program,
     robot_program,
 )
+from workbench.motion.programs.from_plan import arrival_indices, wait_holds
 
 DEG = np.pi / 180
 
@@ -69,7 +70,9 @@ def planned():  # noqa: ANN201
     ]
     prog = motion_program("pp", items, model, T_world_base, tool.T_flange_tcp, q0)
     path = plan_program(model, prog, q0, model.max_velocity, T_flange_tcp=tool.T_flange_tcp)
-    traj = time_program(path, model.max_acceleration, model.max_jerk, position_limits=model.limits)
+    traj = time_program(
+        path, model.max_acceleration, model.max_jerk, position_limits=model.limits
+    ).with_holds(wait_holds(items, path))  # as the service plans: the 0.25 s wait held
     rp = robot_program(
         items, prog, path, traj, model, tool=tool, work_objects=wobjs, T_world_base=T_world_base
     )
@@ -90,16 +93,21 @@ def test_zones_stop_before_actions_and_pose_joint_moves_take_the_nearest_ik(plan
 def test_durations_are_the_times_between_arrivals_and_add_up(planned) -> None:  # noqa: ANN001
     model, items, prog, path, traj, rp, *_ = planned
     durations = [m.duration for m in rp.moves]
-    assert sum(durations) == pytest.approx(traj.duration, abs=1e-12)
+    pick = int(arrival_indices(path, len(rp.moves))[1])
+    assert wait_holds(items, path) == [(pick, 0.25)]  # held where "pick" arrives
+    assert sum(durations) == pytest.approx(traj.duration - 0.25, abs=1e-12)
     assert all(d >= 0 for d in durations)
-    # twin: the trajectory itself is at each exact-stop target when its duration has elapsed
-    t = np.cumsum(durations)
+    # twin: the trajectory itself is at each exact-stop target when its duration (and the
+    # wait after "pick", the second move) has elapsed, and still during the wait
+    t = np.cumsum(durations) + np.where(np.arange(len(durations)) >= 2, 0.25, 0.0)
     for k, mv in enumerate(rp.moves):
         if mv.zone == 0.0:
             q_at, qd_at, _ = traj.at([t[k]])
             assert np.allclose(q_at[0], mv.target.q, atol=1e-7), mv.name
             assert np.allclose(qd_at[0], 0.0, atol=1e-6), mv.name
-    assert rp.cycle_time == pytest.approx(traj.duration + 0.25)
+    q_wait, qd_wait, _ = traj.at(np.linspace(t[1], t[1] + 0.25, 7))
+    assert np.allclose(q_wait, rp.moves[1].target.q, atol=1e-7) and np.abs(qd_wait).max() < 1e-9
+    assert rp.cycle_time == pytest.approx(traj.duration)
 
 
 def test_targets_are_the_given_poses_in_their_work_objects(planned) -> None:  # noqa: ANN001
