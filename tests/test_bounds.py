@@ -51,7 +51,11 @@ def _constants(module: Any, names: list[str] | None = None) -> list[tuple[str, A
         if not name.isupper() or name == "BUDGETS" or (names is not None and name not in names):
             continue
         nxt = body[i + 1] if i + 1 < len(body) else None
-        doc = nxt.value.value if isinstance(nxt, ast.Expr) and isinstance(nxt.value, ast.Constant) else ""
+        doc = (
+            nxt.value.value
+            if isinstance(nxt, ast.Expr) and isinstance(nxt.value, ast.Constant)
+            else ""
+        )
         out.append((name, getattr(module, name), " ".join(str(doc).split())))
     return out
 
@@ -94,21 +98,69 @@ def test_examples_load_within_the_bounds(name: str) -> None:
 
 
 CASES = [
-    ("mz07_cell", ["robot", "base", "xyz", 0], 1e9, "robot.base.xyz[0]", "1e+09 mm is out of range"),
-    ("mz07_cell", ["cell", "objects", 3, "radius"], 1e-9, "cell.objects[3].radius", "[0.1, 200000] mm"),
-    ("mz07_cell", ["cell", "objects", 1, "size", 0], 1e308, "cell.objects[1].size[0]", "out of range"),
+    (
+        "mz07_cell",
+        ["robot", "base", "xyz", 0],
+        1e9,
+        "robot.base.xyz[0]",
+        "1e+09 mm is out of range",
+    ),
+    (
+        "mz07_cell",
+        ["cell", "objects", 3, "radius"],
+        1e-9,
+        "cell.objects[3].radius",
+        "[0.1, 200000] mm",
+    ),
+    (
+        "mz07_cell",
+        ["cell", "objects", 1, "size", 0],
+        1e308,
+        "cell.objects[1].size[0]",
+        "out of range",
+    ),
     ("mz07_cell", ["tool", "size", 2], 0, "tool.size[2]", "0 mm is out of range"),
     ("mz07_cell", ["tool", "size", 2], -5, "tool.size[2]", "-5 mm is out of range"),
     ("bending_cell", ["tool", "size", 2], 1e5, "tool.size[2]", "[0.1, 5000] mm"),
     ("mz07_cell", ["robot", "joints", 0], 1e16, "robot.joints[0]", "[-720, 720] deg"),
-    ("mz07_cell", ["robot", "max_acceleration"], [0.001] * 6, "robot.max_acceleration[0]", "deg/s²"),
-    ("polishing_cell", ["polishing", "controller", "latency"], 1e9, "polishing.controller.latency", "ms"),
+    (
+        "mz07_cell",
+        ["robot", "max_acceleration"],
+        [0.001] * 6,
+        "robot.max_acceleration[0]",
+        "deg/s²",
+    ),
+    (
+        "polishing_cell",
+        ["polishing", "controller", "latency"],
+        1e9,
+        "polishing.controller.latency",
+        "ms",
+    ),
     ("polishing_cell", ["polishing", "dwell"], 1e9, "polishing.dwell", "[0, 60] s"),
     ("polishing_cell", ["polishing", "spacing"], 1e-9, "polishing.spacing", "[0.5, 10000] mm"),
     ("polishing_cell", ["polishing", "tool_radius"], 1e-9, "polishing.tool_radius", "mm"),
-    ("assembly_cell", ["assembly", "planner", "step"], 1_000_000, "assembly.planner.step", "[1, 1000]"),
-    ("assembly_cell", ["assembly", "planner", "cell_size"], 0.05, "assembly.planner.cell_size", "mm"),
-    ("assembly_cell", ["assembly", "parts", 0, "goal", "xyz", 2], 1e9, "assembly.parts[0].goal.xyz[2]", "mm"),
+    (
+        "assembly_cell",
+        ["assembly", "planner", "step"],
+        1_000_000,
+        "assembly.planner.step",
+        "[1, 1000]",
+    ),
+    (
+        "assembly_cell",
+        ["assembly", "planner", "cell_size"],
+        0.05,
+        "assembly.planner.cell_size",
+        "mm",
+    ),
+    (
+        "assembly_cell",
+        ["assembly", "parts", 0, "goal", "xyz", 2],
+        1e9,
+        "assembly.parts[0].goal.xyz[2]",
+        "mm",
+    ),
     ("bending_cell", ["bending", "die", "length"], 0, "bending.die.length", "[1, 200000] mm"),
 ]
 

@@ -98,7 +98,9 @@ def test_a_waypoint_a_hundredth_of_a_micrometre_away_is_merged() -> None:
 def test_sampling_over_the_budget_is_refused_with_the_estimate() -> None:
     traj = smooth_joint_path(np.array([[0.0, 0.0], [1.0, 0.0]]), V, A, J)
     dt = traj.duration / (MAX_SAMPLES + 10)
-    with pytest.raises(PlanningError, match=rf"samples every .* above the budget of {MAX_SAMPLES:,}"):
+    with pytest.raises(
+        PlanningError, match=rf"samples every .* above the budget of {MAX_SAMPLES:,}"
+    ):
         traj.sample(dt)
     times = traj.sample(traj.duration / (MAX_SAMPLES - 10))[0]
     assert len(times) <= MAX_SAMPLES
@@ -152,7 +154,8 @@ def test_a_polishing_path_over_its_budget_is_refused_before_planning() -> None:
     from workbench.polishing.process_path import MAX_PASSES, check_path_budget
 
     panel = trimesh.creation.box(extents=(0.3, 0.2, 0.03))
-    check_path_budget(panel, "spiral", 0.003, 0.2 / 2 / MAX_PASSES["spiral"] * 1.01)
+    check_path_budget(panel, "spiral", 0.003, 0.003)  # 33 passes, ~16,700 points
+    check_path_budget(panel, "raster", 0.2, 0.2 / MAX_PASSES["raster"] * 1.01)  # 990 passes
     with pytest.raises(InputError, match=r"spacing: 0.5 mm lays about 200 spiral passes"):
         check_path_budget(panel, "spiral", 0.003, 0.0005)
     with pytest.raises(InputError, match=r"step: 0.1 mm .* path points"):

@@ -24,8 +24,9 @@ _PLANNERS = {"spiral": spiral_toolpath, "raster": raster_toolpath}
 MAX_PASSES = {"spiral": 150, "raster": 1_000}
 """Most passes a pattern may lay on the workpiece (its width / spacing, halved for the
 spiral's rings): the spiral's offset curves cost steeply more with each ring."""
-MAX_PATH_POINTS = 200_000
-"""Most path points (the workpiece's area / (spacing x step))."""
+MAX_PATH_POINTS = 20_000
+"""Most path points (the workpiece's area / (spacing x step)): each gets IK and a ruckig
+segment in the motion plan (36,000 points took over 30 s on two cores)."""
 
 
 def check_path_budget(mesh: trimesh.Trimesh, pattern: str, step: float, spacing: float) -> None:

@@ -147,7 +147,9 @@ class PolishingSpec(StrictModel):
     def _force_in_range(cls, v: float, info: ValidationInfo) -> float:
         limit = info.data.get("max_force")
         if not v >= B.FORCE_N[0]:
-            raise ValueError(f"must be >= {B.FORCE_N[0]:g} N (the target contact force), got {v:g}")
+            raise ValueError(
+                f"must be > 0 N (at least {B.FORCE_N[0]:g} N, the target contact force), got {v:g}"
+            )
         if limit is not None and v > limit:
             raise ValueError(
                 f"{v:g} N is above the tool's limit max_force = {limit:g} N; give a force in "
