@@ -3,7 +3,6 @@ MODULE bending
     ! units: mm, deg, kg, s; orientations as quaternions [q1,q2,q3,q4] = [w,x,y,z]
     ! robtargets: TCP in the move's work object; confdata [cf1,cf4,cf6,cfx] by ABB's rules
     ! joint moves run in the planned time (\T); their v1000 is nominal
-    ! note: renamed 'suction gripper' to 'suction_gripper': not a valid RAPID identifier
 
     PERS tooldata suction_gripper:=[TRUE,[[0,0,120],[1,0,0,0]],[2.5,[0,0,55],[1,0,0,0],0,0,0]];
     CONST robtarget b1_approach:=[[405.405421,0,411.5],[0,0.707106781,-0.707106781,0],[0,0,1,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -24,58 +23,62 @@ MODULE bending
     CONST robtarget b6_approach:=[[397.172567,0,411.5],[0,0,-1,0],[0,0,2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget b6_bend:=[[547.172567,0,351.5],[0,0,1,0],[0,0,2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget b6_retreat:=[[397.172567,0,411.5],[0,0,-1,0],[0,0,2,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST robtarget transfer1:=[[420,-400,355],[0,1,0,0],[-1,0,3,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST robtarget transfer1:=[[420,-400,440],[0,1,0,0],[-1,0,3,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget transfer2:=[[150,-560,480],[0,1,0,0],[-1,0,3,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST robtarget pallet:=[[0,-650,140.75],[0,1,0,0],[-1,0,3,1],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget home:=[[0,90,0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
 
     PROC main()
-        ! bending: 6 bends (front/elbow A/no flip)
-        ! note: the project's io has no output 'bend start' and no input 'bend done': the press handshake is comments only
+        ! bending: 6 bends (front/elbow up/flip)
         ! load: the plan has no blank station; the blank is put into the gripper here
-        ! gripper close: the project has no io.gripper; add one
+        ! gripper close
+        SetDO vacuum, 1;
+        WaitDI vacuum_ok, 1\MaxTime:=2;
+        WaitTime 0.3;
         ! bend 'b23' (step 1)
-        MoveJ b1_approach, v1000\T:=0.5725, fine, suction_gripper\WObj:=wobj0;
-        MoveL b1_bend, [370.229,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b1_retreat, [370.229,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b1_approach, v1000\T:=0.4455, fine, suction_gripper\WObj:=wobj0;
+        MoveL b1_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b1_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b45' (step 2)
-        MoveJ b2_approach, v1000\T:=0.66, fine, suction_gripper\WObj:=wobj0;
-        MoveL b2_bend, [370.229,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b2_retreat, [370.229,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b2_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
+        MoveL b2_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b2_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b12' (step 3)
-        MoveJ b3_approach, v1000\T:=0.66, fine, suction_gripper\WObj:=wobj0;
-        MoveL b3_bend, [365.3291,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b3_retreat, [365.3291,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b3_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
+        MoveL b3_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b3_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b14' (step 4)
-        MoveJ b4_approach, v1000\T:=0.66, fine, suction_gripper\WObj:=wobj0;
-        MoveL b4_bend, [365.3291,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b4_retreat, [365.3291,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b4_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
+        MoveL b4_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b4_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b16' (step 5)
-        MoveJ b5_approach, v1000\T:=0.4772, fine, suction_gripper\WObj:=wobj0;
-        MoveL b5_bend, [370.588,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b5_retreat, [370.588,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b5_approach, v1000\T:=0.355, fine, suction_gripper\WObj:=wobj0;
+        MoveL b5_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b5_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b17' (step 6)
-        MoveJ b6_approach, v1000\T:=0.66, fine, suction_gripper\WObj:=wobj0;
-        MoveL b6_bend, [370.588,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        ! press: pulse output 'bend start' (missing in io.outputs)
-        ! press: wait for input 'bend done' (missing in io.inputs)
-        MoveL b6_retreat, [370.588,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        MoveJ b6_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
+        MoveL b6_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
+        PulseDO \High\PLength:=0.2, press_start;
+        WaitDI press_done, 1\MaxTime:=30;
+        MoveL b6_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! transfer to the pallet as planned (checked)
         MoveJ transfer1, v1000\T:=0.4227, z5, suction_gripper\WObj:=wobj0;
         MoveJ transfer2, v1000\T:=0.3189, z5, suction_gripper\WObj:=wobj0;
         MoveJ pallet, v1000\T:=0.3236, fine, suction_gripper\WObj:=wobj0;
         ! unload
-        ! gripper open: the project has no io.gripper; add one
-        MoveAbsJ home, v1000\T:=0.84, fine, suction_gripper\WObj:=wobj0;
+        ! gripper open
+        SetDO vacuum, 0;
+        WaitTime 0.3;
+        MoveAbsJ home, v1000\T:=0.715, fine, suction_gripper\WObj:=wobj0;
     ENDPROC
 ENDMODULE
