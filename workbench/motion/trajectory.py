@@ -42,10 +42,10 @@ the segment time the slowest one sets). At 1 the speeds sit on the edge of reach
 so joints moving a little must dip their speed and ruckig's synchronised profile
 overshoots; 0.45 was the fastest on benchmarks/motion.py's sets (0.3-0.5 within 5 %).
 """
-MAX_SAMPLES = 1_000_000
-"""Most samples of one trajectory (`Trajectory.sample`): its duration / dt (about 200 MB of
-positions, velocities and accelerations for 6 joints; 2.7 hours at 0.01 s). A longer one is
-refused before it is sampled, with the estimate."""
+MAX_SAMPLES = 200_000
+"""Most samples of one trajectory (`Trajectory.sample`): its duration / dt (33 minutes at the
+plans' 0.01 s; about 40 MB of joints, rates and accelerations, and some 30 s of collision
+checks on this 2-core machine). A longer one is refused before it is sampled, with the estimate."""
 
 # Why ruckig refused a segment, by its result code (the Python binding knows only some of
 # them by name: the others arrive as "ValueError: -101 is not a valid Result").
