@@ -115,7 +115,15 @@ class ProjectPanel:
                 return
             staged = self.staged
         elif name.endswith(".zip"):
-            staged = self._restage(project_upload.stage_zip(file.name, file.content))
+            staged = project_upload.stage_zip(file.name, file.content)
+            if not staged.ready:  # a zip is the whole project: refused, not half-loaded
+                project_upload.remove_folder(staged.root)
+                lacking = ", ".join(staged.missing)
+                raise InputError(
+                    f"upload: {file.name} lacks files its project names ({lacking}); add them"
+                    " to the zip at those paths, relative to the project file"
+                )
+            self._drop_staged()
         elif name.endswith(".json"):
             staged = self._restage(project_upload.stage_json(file.name, file.content))
         elif self.staged is not None:
@@ -186,7 +194,7 @@ class ProjectPanel:
                 overwrite=bool(self.overwrite.value),
                 temporary=self.app.upload_root,
             )
-        self.overwrite.value = False
+        self.overwrite.value = False  # type: ignore[misc]
         self.refresh()
         body = str(target) + "".join(f"\n- {n}" for n in notes)
         notify(self.server, event.client, "Saved", body, color="yellow" if notes else "green")
