@@ -8,6 +8,7 @@ from typing import Any
 
 import viser
 
+from workbench.gui import jobs
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 from workbench.gui.program_editor import ProgramEditorPanel, table_markdown
@@ -102,8 +103,10 @@ class MotionPanel:
 
     def _on_import(self, event: viser.GuiEvent) -> None:
         up = self.upload.value
-        notes = self.wb.import_program(program_files(up.name, up.content))
-        self.on_replaced()  # the program, tool and work objects changed: rebuild the tabs
+        # a job like a plan: refused (Busy) while another runs, nothing changed then
+        with jobs.of(self.server).job("importing a program"):
+            notes = self.wb.import_program(program_files(up.name, up.content))
+            self.on_replaced()  # the program, tool and work objects changed: rebuild the tabs
         body = f"{up.name}: {len(self.wb.project.program.moves)} items"  # type: ignore[union-attr]
         notify(self.server, event.client, "Program imported", body, color="green")
         if notes:  # lines the reader did not understand, values taken differently: stay open
