@@ -43,7 +43,7 @@ POSE_COORDINATES = (
 
 def _validation_text(path: str, exc: ValueError) -> str:
     """Return a pydantic error as the project file's loader says it: '<path>.<loc>: <msg>'."""
-    errors = getattr(exc, "errors", list)()
+    errors: list[Any] = getattr(exc, "errors", list)()
     parts = []
     for e in errors:
         loc = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in e.get("loc", ()))
@@ -93,9 +93,9 @@ class AssemblyPanel:
                     self.pose_fields[(which, axis)] = NumberField(
                         s,
                         label,
-                        get=lambda w=which, c=key, i=k % 3: self._pose_value(w, c, i),
-                        put=lambda v, w=which, c=key, i=k % 3: self._set_coordinate(w, c, i, v),
-                        allowed=lambda w=which, c=key, u=unit: schema_range(
+                        get=lambda w=which, c=key, i=k % 3: self._pose_value(w, c, i),  # type: ignore[misc]
+                        put=lambda v, w=which, c=key, i=k % 3: self._set_coordinate(w, c, i, v),  # type: ignore[misc]
+                        allowed=lambda w=which, c=key, u=unit: schema_range(  # type: ignore[misc]
                             self._pose_spec(w), c, u
                         ),
                         changed=lambda: self._show_poses(str(self.part.value)),
