@@ -509,3 +509,11 @@ def test_a_box_in_a_robot_path_is_found_at_the_same_sample_as_the_dense_check(wb
     # The other robot does not pass there.
     other = next(n for n in wb2.assembly.arms if n != robot)
     assert wb2.assembly.check_robot(plan.tasks, plan.times, other).colliding_indices == ()
+
+
+def test_a_pose_outside_the_bounds_is_an_input_error_naming_the_part(wb):  # noqa: ANN001
+    name = wb.assembly.part_names[0]
+    far = np.eye(4)
+    far[0, 3] = 1e6  # 1,000 km
+    with pytest.raises(InputError, match=rf"'{name}': goal\.xyz\.0: .*out of range"):
+        wb.assembly.set_pose(name, "goal", far)

@@ -14,8 +14,9 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationError, model_validator
 
+from workbench.errors import InputError
 from workbench.project import bounds as B
 from workbench.project import program_io as io_
 from workbench.project.common import (
@@ -197,8 +198,17 @@ class AssemblyPartSpec(StrictModel):
         )
 
     def set_pose(self, which: Literal["start", "goal"], T_world_part: NDArray[np.float64]) -> None:
-        """Set the `which` pose from a (4, 4) transform [m] (stored in mm and degrees)."""
-        setattr(self, which, matrix_to_pose(T_world_part))
+        """Set the `which` pose from a (4, 4) transform [m] (stored in mm and degrees); a pose
+        outside the project's bounds is an InputError naming the part's field."""
+        try:
+            pose = matrix_to_pose(T_world_part)
+        except ValidationError as exc:
+            err = exc.errors()[0]
+            where = ".".join(str(x) for x in err.get("loc", ()))
+            raise InputError(
+                f"assembly part {self.name!r}: {which}.{where}: {err.get('msg', exc)}"
+            ) from None
+        setattr(self, which, pose)
 
 
 class AssemblyPlannerSpec(StrictModel):
