@@ -8,6 +8,11 @@ Two fields hold a bend sequence, with one meaning: the part's `sequence` is the 
 part comes with (a part file may be shared by projects); the section's `sequence` is this
 project's order and replaces it when given (the API's `set_sequence` writes it). The rule
 both must satisfy is `workbench.sheetmetal.sequence` (every bend exactly once).
+
+The press brake (`press`: punch, V-die, tool stations, back-gauge, ram, frame) is optional; a
+bend without `inner_radius` takes the air-bending radius of the press's V-opening. The bend
+process (`steps`: the grasp and tool station of each bend in sequence order, `blank`,
+`regrip`, `approach`, `lift`, `follow`) has defaults that need no press.
 """
 
 from __future__ import annotations
@@ -23,14 +28,60 @@ from pydantic import AfterValidator, Field, ValidationError, model_validator
 
 from workbench.errors import ProjectError
 from workbench.project import bounds as B
-from workbench.project.common import Angle, Coordinate, Pose, StrictModel, Vec3mm
+from workbench.project.bend_steps import BendStepSI, BendStepSpec, GraspSpec, step_problems
+from workbench.project.common import Coordinate, Loc, Pose, StrictModel, Vec3mm, dotted, field_error
 from workbench.project.paths import ProjectFolders
+from workbench.project.press import (
+    AxisRangeMM,
+    BackGaugeSpec,
+    DieToolSpec,
+    PressFrameMM,
+    PressRadiusMM,
+    PressSpec,
+    PressToolMM,
+    PunchSpec,
+    RamSpec,
+    RamSpeed,
+    StationSpec,
+    ToolAngle,
+    ToolLengthMM,
+)
 from workbench.project.units import DEG, MM
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.grasp import Grasp
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T
+from workbench.sheetmetal.press import PressBrake
 from workbench.sheetmetal.sequence import sequence_problem
 from workbench.sheetmetal.transfer import Transfer
+
+__all__ = [  # the models moved to `press` and `bend_steps` are still importable from here
+    "AxisRangeMM",
+    "BackGaugeSpec",
+    "BendSI",
+    "BendSpec",
+    "BendStepSI",
+    "BendStepSpec",
+    "BendingSI",
+    "BendingSpec",
+    "DieSpec",
+    "DieToolSpec",
+    "FlangeSI",
+    "FlangeSpec",
+    "GraspSpec",
+    "Loc",
+    "PartSI",
+    "PartSpec",
+    "PressFrameMM",
+    "PressRadiusMM",
+    "PressSpec",
+    "PressToolMM",
+    "PunchSpec",
+    "RamSpec",
+    "RamSpeed",
+    "StationSpec",
+    "ToolAngle",
+    "ToolLengthMM",
+]
 
 
 def _polygon(v: list[list[float]]) -> list[list[float]]:
@@ -82,7 +133,8 @@ class BendSpec(StrictModel):
     child: str
     child_edge: Annotated[int, Field(ge=0, le=B.MAX_INDEX)]
     included_angle: Annotated[float, AfterValidator(_included)]  # deg, (0, 180); 180 = flat
-    inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")]  # >= 0.5 x thickness
+    inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")] | None = None
+    # mm, >= 0.5 x thickness; None: the air-bending radius of the press's V-opening
     direction: Literal["up", "down"] = "up"
     k_factor: Annotated[float, Field(ge=0, le=1)] | None = None  # overrides Table 1
 
@@ -105,7 +157,7 @@ class PartSpec(StrictModel):
         if len(set(flanges)) != len(flanges):
             raise ValueError(f"flanges: names must be unique, got {flanges}")
         for i, b in enumerate(self.bends):
-            if b.inner_radius < MIN_R_OVER_T * self.thickness - 1e-9:
+            if b.inner_radius is not None and b.inner_radius < MIN_R_OVER_T * self.thickness - 1e-9:
                 raise ValueError(
                     f"bends[{i}].inner_radius: {b.inner_radius:g} mm is below Table 1's range; "
                     f"the minimum is {MIN_R_OVER_T} x thickness = {MIN_R_OVER_T * self.thickness:g} mm"
@@ -119,9 +171,53 @@ class PartSpec(StrictModel):
             _check_sequence(self.sequence, [b.name for b in self.bends], "sequence")
         return self
 
-    def to_si(self, sequence: list[str] | None = None) -> PartSI:
-        """Return the part in SI units; `sequence` (the project's) replaces the part's own."""
+    def radius_problem(
+        self, air_radius: float | None, v_opening: float | None = None
+    ) -> str | None:
+        """Return why a bend without `inner_radius` cannot take `air_radius` [m] (None: no
+        press), or None; `v_opening` [m] is the V-opening it came from, for the message."""
+        if air_radius is None:
+            return "give inner_radius, or a press (bending.press) whose V-opening sets it"
+        r, lo = air_radius / MM, MIN_R_OVER_T * self.thickness
+        if r >= lo - 1e-9:
+            return None
+        src = f"the air-bending radius is {r:.4g} mm"
+        if v_opening is not None:
+            src = (
+                f"the die's V-opening {v_opening / MM:g} mm gives {r:.4g} mm "
+                f"({100 * air_radius / v_opening:.3g} % of it)"
+            )
+        return (
+            f"not given, and {src}: below Table 1's minimum {MIN_R_OVER_T} x thickness = "
+            f"{lo:g} mm; use a wider die or set inner_radius"
+        )
+
+    def to_si(
+        self,
+        sequence: list[str] | None = None,
+        *,
+        air_radius: float | None = None,
+        v_opening: float | None = None,
+        where: str = "bending.part.",
+    ) -> PartSI:
+        """Return the part in SI units; `sequence` (the project's) replaces the part's own.
+
+        A bend without `inner_radius` gets `air_radius` [m] (the press's air-bending radius of
+        its V-opening `v_opening` [m]); ProjectError names ``{where}bends[i].inner_radius``
+        when there is none or it is below Table 1's minimum.
+        """
         seq = sequence if sequence is not None else self.sequence
+        radii: list[float] = []
+        for i, b in enumerate(self.bends):
+            if b.inner_radius is not None:
+                radii.append(b.inner_radius * MM)
+                continue
+            problem = self.radius_problem(air_radius, v_opening)
+            if problem is not None:
+                field = f"{where}bends[{i}].inner_radius"
+                raise ProjectError(f"{field}: {problem}", [(field, problem)])
+            assert air_radius is not None
+            radii.append(float(air_radius))
         return PartSI(
             name=self.name,
             thickness=self.thickness * MM,
@@ -135,11 +231,11 @@ class PartSpec(StrictModel):
                     child=b.child,
                     child_edge=b.child_edge,
                     included_angle=b.included_angle * DEG,
-                    inner_radius=b.inner_radius * MM,
+                    inner_radius=r,
                     direction=b.direction,
                     k_factor=b.k_factor,
                 )
-                for b in self.bends
+                for b, r in zip(self.bends, radii, strict=True)
             ),
             sequence=None if seq is None else tuple(seq),
         )
@@ -180,27 +276,6 @@ class PartSI:
     sequence: tuple[str, ...] | None  # the bend order used: the project's, else the part's
 
 
-class GraspSpec(StrictModel):
-    """Where the gripper holds the part: a flange and an offset in its plane [mm, deg]."""
-
-    flange: str = "1"
-    offset: Annotated[list[Coordinate], Field(min_length=2, max_length=2)] | None = None
-    # [x, y] mm in the flange's polygon frame; None = the polygon's centroid
-    yaw: Angle = 0.0  # deg, gripper rotation about the flange normal
-
-    def to_si(self) -> Grasp:
-        """Return the grasp in SI: offset [m] (None: the centroid), yaw [rad]."""
-        off = None if self.offset is None else np.asarray(self.offset, float) * MM
-        return Grasp(self.flange, off, self.yaw * DEG)
-
-    def set_si(self, grasp: Grasp, *, keep_yaw: bool = False) -> None:
-        """Store `grasp` (SI) in this section (mm, deg); `keep_yaw` leaves the yaw as it is."""
-        self.flange = grasp.flange
-        self.offset = None if grasp.offset is None else [float(v / MM) for v in grasp.offset]
-        if not keep_yaw:
-            self.yaw = float(grasp.yaw / DEG)
-
-
 class DieSpec(StrictModel):
     """The press brake's die: `pose` of its bend line (x along the line, z up, robot on -y)."""
 
@@ -210,13 +285,24 @@ class DieSpec(StrictModel):
 
 
 class BendingSpec(StrictModel):
-    """The `bending` section (mm, deg): part, sequence, grasp, die, transfer to the pallet."""
+    """The `bending` section (mm, deg): part, sequence, grasp, die, press, bend process,
+    transfer to the pallet."""
 
     part: PartSpec | None = None
     part_file: str | None = None  # path to a part JSON (mm/deg), relative to the project file
     sequence: Annotated[list[str], AfterValidator(_unique)] | None = None  # overrides the part's
     grasp: GraspSpec = Field(default_factory=GraspSpec)
     die: DieSpec = Field(default_factory=DieSpec)
+    press: PressSpec | None = None  # None: no press model
+    steps: Annotated[list[BendStepSpec], Field(max_length=B.MAX_ITEMS)] | None = None
+    # one per bend in sequence order; None: `grasp` for every bend, the first station
+    blank: Pose = Field(default_factory=Pose)  # the flat blank's part frame on the stack (world)
+    regrip: Pose = Field(default_factory=Pose)  # where the part lies on the regrip station (world)
+    approach: Vec3mm = Field(default_factory=lambda: [0.0, -80.0, 30.0])
+    # mm, die frame: offset of the pose before the part slides against the back-gauge
+    lift: Annotated[float, B.span(B.LIFT_MM_OPEN, "mm", lo_open=True)] = 80.0
+    # mm: vertical approach / retreat at the blank stack, the regrip station and the pallet
+    follow: bool = True  # the robot follows the rising flange (False: releases, re-grips)
     retract: Vec3mm = Field(default_factory=lambda: [0.0, -250.0, 60.0])  # in the die frame
     transfer: Annotated[list[Pose], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
     # TCP via poses in the world
@@ -238,6 +324,44 @@ class BendingSpec(StrictModel):
                     f"grasp.flange: no flange {self.grasp.flange!r}; flanges are {names}"
                 )
         return self
+
+    @model_validator(mode="after")
+    def _process(self) -> BendingSpec:
+        problems = self._step_problems(self.part)
+        if self.part is not None:
+            problems = self._radius_problems(self.part) + problems
+        if problems:
+            raise field_error(problems)
+        return self
+
+    def sequence_of(self, part: PartSpec) -> list[str]:
+        """Return the bend order in use: the section's, else the part's, else the bends'."""
+        if self.sequence is not None:
+            return list(self.sequence)
+        if part.sequence is not None:
+            return list(part.sequence)
+        return [b.name for b in part.bends]
+
+    def _radius_problems(self, part: PartSpec) -> list[tuple[Loc, str, object]]:
+        air = None if self.press is None else self.press.air_radius()
+        v = None if self.press is None else self.press.die.v_opening * MM
+        out: list[tuple[Loc, str, object]] = []
+        for i, b in enumerate(part.bends):
+            problem = None if b.inner_radius is not None else part.radius_problem(air, v)
+            if problem is not None:
+                out.append((("part", "bends", i, "inner_radius"), problem, None))
+        return out
+
+    def _step_problems(self, part: PartSpec | None) -> list[tuple[Loc, str, object]]:
+        """Return the problems of `steps` (locations in this section): unknown stations; with
+        `part`, bends not in sequence order and unknown flanges."""
+        if self.steps is None:
+            return []
+        stations = ["S1"] if self.press is None else self.press.station_names()
+        if part is None:
+            return step_problems(self.steps, stations)
+        flanges = [f.name for f in part.flanges]
+        return step_problems(self.steps, stations, self.sequence_of(part), flanges)
 
     def read_part(self, base_dir: Path | ProjectFolders) -> PartSpec:
         """Return the part section: inline, or read from `part_file` (relative to `base_dir`).
@@ -265,12 +389,53 @@ class BendingSpec(StrictModel):
             lines = "; ".join(f"{a}: {b}" for a, b in problems)
             raise ProjectError(f"bending.part_file ({p}): {lines}", problems) from None
 
+    def _die_si(self) -> Die:
+        return Die(self.die.pose.to_si(), self.die.length * MM, "bending.die.length")
+
+    def press_si(self) -> PressBrake | None:
+        """Return the press brake in SI (None: the section has no press model)."""
+        return None if self.press is None else self.press.to_si(self._die_si())
+
+    def set_steps_si(self, sequence: list[str], steps: list[BendStepSI]) -> None:
+        """Store a plan: the bend order and, per bend, its grasp (SI: m, rad) and station."""
+        self.steps = None  # the old steps would not match the new order
+        self.sequence = [str(s) for s in sequence]
+        specs = []
+        for st in steps:
+            grasp = GraspSpec(flange=st.grasp.flange)
+            grasp.set_si(st.grasp)
+            grasp.yaw = round(grasp.yaw, 9)
+            if grasp.offset is not None:
+                grasp.offset = [round(v, 9) for v in grasp.offset]
+            specs.append(BendStepSpec(bend=st.bend, grasp=grasp, station=st.station))
+        self.steps = specs
+
     def to_si(self, part: PartSpec) -> BendingSI:
-        """Return the section in SI units, with `part` (from `read_part`) and its sequence."""
+        """Return the section in SI units, with `part` (from `read_part`) and its sequence.
+
+        The press is built first: a bend without `inner_radius` takes its air-bending radius.
+        ProjectError names the field when a bend has no radius (no press), or a step names a
+        bend out of sequence order, an unknown flange or an unknown station.
+        """
+        die = self._die_si()
+        press = self.press_si()
+        part_si = part.to_si(
+            self.sequence,
+            air_radius=None if self.press is None else self.press.air_radius(),
+            v_opening=None if press is None else press.die.v_opening,
+            where="bending.part." if self.part is not None else "bending.part_file:",
+        )
+        found = [(f"bending.{dotted(loc)}", m) for loc, m, _ in self._step_problems(part)]
+        if found:
+            raise ProjectError("; ".join(f"{a}: {b}" for a, b in found), found)
+        first = "S1" if press is None else press.stations[0].name
+        steps = None
+        if self.steps is not None:
+            steps = tuple(st.to_si(first) for st in self.steps)
         return BendingSI(
-            part=part.to_si(self.sequence),
+            part=part_si,
             grasp=self.grasp.to_si(),
-            die=Die(self.die.pose.to_si(), self.die.length * MM, "bending.die.length"),
+            die=die,
             transfer=Transfer(
                 retract=np.asarray(self.retract) * MM,
                 T_world_vias=np.array([p.to_si() for p in self.transfer]).reshape(-1, 4, 4),
@@ -278,15 +443,30 @@ class BendingSpec(StrictModel):
                 where="bending",
             ),
             frames=int(self.frames),
+            press=press,
+            steps=steps,
+            blank=self.blank.to_si(),
+            regrip=self.regrip.to_si(),
+            approach=np.asarray(self.approach, float) * MM,
+            lift=self.lift * MM,
+            follow=bool(self.follow),
         )
 
 
 @dataclass(frozen=True, eq=False)
 class BendingSI:
-    """The `bending` section in SI units (m, rad): the part, the grasp, the die, the transfer."""
+    """The `bending` section in SI units (m, rad): the part, the grasp, the die, the transfer,
+    the press and the bend process."""
 
     part: PartSI
     grasp: Grasp
     die: Die
     transfer: Transfer
     frames: int  # transfer frames checked
+    press: PressBrake | None  # None: no press model
+    steps: tuple[BendStepSI, ...] | None  # one per bend in sequence order; None: not given
+    blank: NDArray[np.float64]  # (4, 4) T_world_part of the flat blank on the stack [m]
+    regrip: NDArray[np.float64]  # (4, 4) T_world_part on the regrip station [m]
+    approach: NDArray[np.float64]  # (3,) [m] in the die frame, before the back-gauge
+    lift: float  # [m] vertical approach / retreat at the stack, regrip station and pallet
+    follow: bool  # the robot follows the rising flange during the bend

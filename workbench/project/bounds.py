@@ -67,6 +67,31 @@ INNER_RADIUS_MM = (0.05, 10_000.0)
 """A bend's inner radius [mm] (also at least 0.5 x thickness, Table 1)."""
 DIE_LENGTH_MM = (1.0, 200_000.0)
 """The die's longest bend line [mm]."""
+LIFT_MM_OPEN = (0.0, 10_000.0)
+"""Bending: vertical approach and retreat at the blank stack, the regrip station and the pallet [mm]: > 0."""
+
+# -- the press brake (bending.press) -------------------------------------------------------------------
+PRESS_TOOL_MM = (0.1, 2_000.0)
+"""Press brake: the punch's width and height, the die's V-opening, width and height, a back-gauge
+finger's depth, width and height [mm]."""
+PRESS_RADIUS_MM = (0.0, 100.0)
+"""Press brake: the punch's tip radius and the die's shoulder radius [mm] (0: sharp)."""
+PRESS_ANGLE_DEG_OPEN = (0.0, 180.0)
+"""Press brake: the punch's tip angle and the die's V angle [deg]: > 0, and below 180 (flat, also refused)."""
+BACKGAUGE_FINGERS = (1, 4)
+"""Press brake: the number of back-gauge fingers."""
+RAM_OPEN_MM_OPEN = (0.0, 2_000.0)
+"""Press brake: the gap between the punch tip and the sheet when the ram is open [mm]: > 0."""
+RAM_SPEED_MM_S_OPEN = (0.0, 1_000.0)
+"""Press brake: the ram's approach, bending and return speeds [mm/s]: > 0."""
+AIR_RADIUS_RATIO_OPEN = (0.0, 0.5)
+"""Press brake: inner radius / V-opening in air bending [-] (0.16 for mild steel); above 0.5 the
+radius would be wider than the V, which holds the part on its shoulders."""
+CONTACT_TOLERANCE_MM_OPEN = (0.0, 5.0)
+"""Press brake: the contact tolerance between the part and the tools [mm]: > 0."""
+PRESS_FRAME_MM = (1.0, 10_000.0)
+"""Press brake: the gap from the longest tool to a side housing, the housings' depth and width,
+the upper beam's height over the punch [mm]."""
 
 # -- assembly -----------------------------------------------------------------------------------------
 PLANNER_CELL_MM = (0.1, 200_000.0)

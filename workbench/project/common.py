@@ -1,4 +1,5 @@
-"""Building blocks of the project file's models: strict base model, vectors, poses, colours."""
+"""Building blocks of the project file's models: strict base model, vectors, poses, colours,
+errors at a field."""
 
 from __future__ import annotations
 
@@ -6,7 +7,8 @@ from typing import Annotated
 
 import numpy as np
 from numpy.typing import NDArray
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from workbench.project import bounds as B
 
@@ -15,6 +17,26 @@ class StrictModel(BaseModel):
     """Base of every project model: unknown fields and non-finite numbers are errors."""
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, validate_assignment=True)
+
+
+Loc = tuple[str | int, ...]  # a location below a model: field names and list indices
+
+
+def field_error(problems: list[tuple[Loc, str, object]]) -> ValidationError:
+    """Return a validation error at each `loc` below the model that raises it (pydantic adds
+    the model's own path), so a rule across fields names the field it is about."""
+    return ValidationError.from_exception_data(
+        "bending",
+        [
+            InitErrorDetails(type=PydanticCustomError("value_error", msg), loc=loc, input=value)
+            for loc, msg, value in problems
+        ],
+    )
+
+
+def dotted(loc: Loc) -> str:
+    """Return `loc` as a dotted path: ("steps", 0, "bend") -> "steps[0].bend"."""
+    return "".join(f"[{k}]" if isinstance(k, int) else f".{k}" for k in loc).lstrip(".")
 
 
 def _vector(n: int, what: str) -> AfterValidator:

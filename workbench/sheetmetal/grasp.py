@@ -1,7 +1,8 @@
 """Where the gripper holds the part: a flange, a point on it and a yaw; the TCP frame there.
 
 SI units. The TCP sits on the gripped flange's top face (z = +t/2 in the flange frame),
-its z axis into the sheet, rotated by `yaw` about the flange normal.
+its z axis into the sheet, rotated by `yaw` about the flange normal; with `face` −1 on the
+bottom face (z = −t/2), its z axis into the sheet (the flange's +z).
 """
 
 from __future__ import annotations
@@ -20,11 +21,13 @@ from workbench.sheetmetal.part import SheetMetalPart
 @dataclass(frozen=True, eq=False)
 class Grasp:
     """The gripped flange's name, the grasp point (2,) [m] in its polygon frame (None: its
-    centroid) and the gripper's yaw [rad] about the flange normal."""
+    centroid), the gripper's yaw [rad] about the flange normal and the `face` it holds (+1:
+    the flange's +z face, −1: its −z face)."""
 
     flange: str
     offset: NDArray[np.float64] | None = None
     yaw: float = 0.0
+    face: int = 1
 
 
 def grasp_point(part: SheetMetalPart, grasp: Grasp) -> NDArray[np.float64]:
@@ -37,10 +40,12 @@ def grasp_point(part: SheetMetalPart, grasp: Grasp) -> NDArray[np.float64]:
 
 
 def T_flange_grasp(part: SheetMetalPart, grasp: Grasp) -> NDArray[np.float64]:
-    """Return the TCP pose (4, 4) [m] in the gripped flange's frame: on its top face, z into the sheet."""
+    """Return the TCP pose (4, 4) [m] in the gripped flange's frame: on the gripped face (top:
+    z = +t/2, bottom: z = −t/2), z into the sheet."""
     off = grasp_point(part, grasp)
-    R = rot_z(grasp.yaw) @ rot_x(np.pi)
-    return make_transform(R, [off[0], off[1], part.thickness / 2])
+    side = 1.0 if grasp.face > 0 else -1.0
+    R = rot_z(grasp.yaw) @ (rot_x(np.pi) if side > 0 else np.eye(3))
+    return make_transform(R, [off[0], off[1], side * part.thickness / 2])
 
 
 def T_part_grasp(part: SheetMetalPart, grasp: Grasp, step: int) -> NDArray[np.float64]:
