@@ -74,12 +74,34 @@ def _parser() -> argparse.ArgumentParser:
         help="default: by file name",
     )
     imp.add_argument("--out", help="project JSON to write (default: overwrite PROJECT)")
+    sweep = sub.add_parser(
+        "sweep", help="search a workflow's plans: bending sequences x grasps x stations"
+    )
+    sweep.add_argument("workflow", choices=["bending"], help="the search (bending)")
+    sweep.add_argument("project", help="project JSON with a bending section and a press")
+    sweep.add_argument(
+        "--engine",
+        default="serial",
+        choices=["serial", "ray"],
+        help="serial: this process; ray: a local Ray on all cores, or --address (default serial)",
+    )
+    sweep.add_argument("--address", help="a running Ray cluster, e.g. 127.0.0.1:6379 (ray only)")
+    sweep.add_argument(
+        "--time-limit", type=float, help="stop after this many seconds with the best found so far"
+    )
+    sweep.add_argument(
+        "--use",
+        type=int,
+        metavar="RANK",
+        help="put the plan of this rank (1 = best) into the project and save it (--out)",
+    )
+    sweep.add_argument("--out", help="project JSON to write with --use (default: overwrite PROJECT)")
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
         "clear", help="remove every cache entry ($WORKBENCH_CACHE, default ~/.cache/workbench)"
     )
-    for p in (serve, check, export, imp):
+    for p in (serve, check, export, imp, sweep):
         p.add_argument(
             "--allow-dir",
             action="append",
@@ -142,6 +164,40 @@ def _export(args: argparse.Namespace) -> int:
         print(f"note: {note}")
     print(f"wrote {', '.join(written)} ({args.workflow}, {args.format})")
     return 0 if plan.ok else 1
+
+
+def _sweep(args: argparse.Namespace) -> int:
+    from workbench.service import Workbench
+    from workbench.sheetmetal.bend_eval import grasp_label
+
+    wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
+    res = wb.bending.find_sequences(
+        engine=args.engine, address=args.address, time_limit=args.time_limit, progress=_Progress()
+    )
+    print(f"{args.project}: {res.stats.describe()}")
+    if res.note:
+        print(f"note: {res.note}")
+    for rank, plan in enumerate(res.plans, 1):
+        print(
+            f"{rank}. {' '.join(plan.sequence)}: {plan.regrips} regrip(s), {plan.flips} flip(s),"
+            f" cycle {plan.cycle_time:.1f} s{' (estimate)' if plan.estimated else ''}"
+        )
+        for b, g, st, o in zip(plan.sequence, plan.grasps, plan.stations, plan.orientations, strict=True):
+            print(f"     {b}: grasp {grasp_label(g)}, station {st}, {o}")
+    firsts: dict[str, tuple[str, ...]] = {}
+    for branch, reason in res.rejected:
+        firsts.setdefault(reason, branch)
+    print(f"rejected branches: {len(res.rejected)} ({len(firsts)} distinct first reasons)")
+    for reason, branch in list(firsts.items())[:12]:
+        print(f"  {' '.join(branch)}: {reason}")
+    if args.use is not None:
+        if not 1 <= args.use <= len(res.plans):
+            print(f"workbench sweep: error: --use {args.use}: there are {len(res.plans)} plans", file=sys.stderr)
+            return 2
+        wb.bending.use_plan(res.plans[args.use - 1])
+        path = wb.save(args.out or args.project)
+        print(f"wrote {path}: plan {args.use} ({' '.join(res.plans[args.use - 1].sequence)})")
+    return 0 if res.plans else 1
 
 
 def _import(args: argparse.Namespace) -> int:
@@ -221,6 +277,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _cache_clear()
         if args.command == "import":
             return _import(args)
+        if args.command == "sweep":
+            return _sweep(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

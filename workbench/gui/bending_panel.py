@@ -19,10 +19,11 @@ from workbench.gui.notify import guarded, notify
 from workbench.gui.progress import busy
 from workbench.gui.scene import place
 from workbench.gui.timeline import SECONDS
+from workbench.service.bending import BendingPlan
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import BendingPlan, DiePlacement, OBBTree
+    from workbench.service.bending import DiePlacement, OBBTree
 
 MM_PER_M = 1e3  # m -> mm for display
 PART_COLOR = (120, 170, 230)
@@ -318,8 +319,9 @@ class BendingPanel:
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()
         self.step.value = float(len(svc.part.bends))  # type: ignore[misc]  # redraws the folded tree
-        self._show_plots(plan)
-        self._load_timeline(plan)
+        if isinstance(plan, BendingPlan):
+            self._show_plots(plan)
+            self._load_timeline(plan)
 
     def _show_plots(self, plan: BendingPlan) -> None:
         for h in self.plots:

@@ -109,6 +109,8 @@ class RobotScene:
         """Create every node for the current project (after `clear`, or the first time)."""
         wb, s = self.wb, self.server
         for body in wb.cell:
+            if not body.display:
+                continue  # an envelope the robot is checked against (the ram's stroke)
             self.nodes.append(
                 _add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color, body.T_world_body)
             )

@@ -69,6 +69,7 @@ def follow_path(
     track: Literal["configuration", "nearest"] = "configuration",
     points: ArrayLike | None = None,
     hint: str = "",
+    branch: int | None = None,
 ) -> PathIK:
     """Return the `PathIK` that puts the flange on every pose (N, 4, 4) [m] in one configuration.
 
@@ -82,6 +83,7 @@ def follow_path(
     solution nearest the previous one (see the module docstring). Errors name the pose by `labels` (N,)
     (default "pose i of N") and its position from `points` (N, 3) [m] (default the flange
     in the base frame), prefixed by `what` and followed by `hint` (the fix to suggest).
+    branch: analytic models only, keep that `ik_batch` branch (None: the one `cost` picks).
     """
     T = np.asarray(T_base_flange, dtype=float)
     if T.ndim != 3 or T.shape[1:] != (4, 4) or len(T) == 0:
@@ -99,7 +101,7 @@ def follow_path(
         return f"{head} at [{', '.join(f'{v * 1000.0:.1f}' for v in where[i])}] mm"
 
     if model.is_analytic and track == "configuration":
-        q, b = _analytic(model, T, qn, max_joint_step, cost, what, name, fix)
+        q, b = _analytic(model, T, qn, max_joint_step, cost, what, name, fix, branch)
         configuration = branch_name(model, q[0])
     else:
         q, b, configuration = _numeric(model, T, qn, what, name, fix), -1, NUMERIC
@@ -119,9 +121,15 @@ def _analytic(
     what: str,
     name: Callable[[int], str],
     fix: str,
+    only: int | None = None,
 ) -> tuple[FloatArray, int]:
-    """Return (q (N, dof), branch) of the nearest branch valid and continuous along T."""
+    """Return (q (N, dof), branch) of the nearest branch valid and continuous along T
+    (`only`: that branch alone)."""
     qb, valid = model.ik_batch(T, q_near=qn)
+    if only is not None:
+        keep = np.zeros(valid.shape[1], dtype=bool)
+        keep[only] = True
+        valid = valid & keep
     reach_any = valid.any(axis=1)
     if not reach_any.all():
         i = int(np.argmin(reach_any))

@@ -13,22 +13,20 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.collision import check_trajectory
+from workbench.collision import Solid
 from workbench.errors import InputError
-from workbench.kinematics import follow_path
-from workbench.motion import SampledMotion, smooth_joint_path
+from workbench.motion import SampledMotion
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.project.program_io import program_settings
+from workbench.service import bending_process as process
+from workbench.service import bending_transfer as transfer_plan
 from workbench.service.section import SectionService
 from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
+from workbench.sheetmetal.bend_setup import press_poses
 from workbench.sheetmetal.check_cost import CheckCost, check_cost
-from workbench.sheetmetal.die import (
-    DiePlacement,
-    bend_on_die,
-    die_part_pose,
-    die_placements,
-    die_targets,
-)
+from workbench.sheetmetal.cycle import BendingCycle
+from workbench.sheetmetal.cycle_program import cycle_program
+from workbench.sheetmetal.die import DiePlacement, bend_on_die, die_part_pose
 from workbench.sheetmetal.grasp import (
     Grasp,
     T_flange_grasp,
@@ -37,17 +35,12 @@ from workbench.sheetmetal.grasp import (
     grasp_point,
 )
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.plan import BendingPlan, first_collision, robot_frames
+from workbench.sheetmetal.plan import BendingPlan
 from workbench.sheetmetal.plan import playback as sample_playback
 from workbench.sheetmetal.program import RobotProgram, bending_program
 from workbench.sheetmetal.sequence import check_sequence
-from workbench.sheetmetal.transfer import (
-    base_flange_poses,
-    carried_poses,
-    check_part,
-    transfer_poses,
-    world_tcp,
-)
+from workbench.sheetmetal.sequencing import SearchResult, SearchSettings, SequencePlan
+from workbench.sheetmetal.transfer import carried_poses, transfer_poses, world_tcp
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
@@ -65,7 +58,7 @@ class BendingService(SectionService[BendingSpec]):
         super().__init__(wb)
         self._part: SheetMetalPart | None = None
         self._part_spec: PartSpec | None = None
-        self._plan: BendingPlan | None = None
+        self._plan: BendingPlan | BendingCycle | None = None
 
     # -- project section ------------------------------------------------------------------
     def part_spec(self) -> PartSpec:
@@ -161,140 +154,129 @@ class BendingService(SectionService[BendingSpec]):
         """Return T_world_part (4, 4) [m] with bend `step` on the die (`sheetmetal.die`)."""
         return die_part_pose(self.part, step, self.si().die, self.grasp)
 
-    def _world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
+    def world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
+        """Return the TCP's world poses (..., 4, 4) [m] at joints (..., dof) [rad]."""
         setup = self.wb.setup
         return world_tcp(self.wb.robot, setup.T_world_base, setup.T_flange_tcp, q)
-
-    def _ik(
-        self,
-        T_world_tcp: NDArray[np.float64],
-        names: list[str],
-        q_start: NDArray[np.float64],
-        what: str,
-    ) -> tuple[NDArray[np.float64], str]:
-        """Return joints (N, dof) reaching the TCP poses (N, 4, 4) with one arm configuration."""
-        setup = self.wb.setup
-        path = follow_path(
-            self.wb.robot,
-            base_flange_poses(setup.T_world_base, setup.T_flange_tcp, T_world_tcp),
-            q_start,
-            labels=names,
-            what=what,
-            cost="total",
-            points=T_world_tcp[:, :3, 3],
-            hint=f"the grasp is on flange {self.grasp_flange!r}; move the die or pallet, "
-            "change the grasp or the sequence",
-        )
-        return path.q, path.configuration
 
     def placements(self) -> tuple[tuple[DiePlacement, ...], str]:
         """Return each bend's die placement with one arm configuration, and its label.
 
         Raises UnreachableError naming the bend the robot cannot hold on the die.
         """
-        part = self.part
-        T_part, T_tcp, names = die_targets(part, self.si().die, self.grasp)
-        q, label = self._ik(T_tcp, names, self.wb.joints, "bending.die")
-        return die_placements(part, T_part, T_tcp, q), label
+        return transfer_plan.placements(self)
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
         """Return TCP poses (N, 4, 4) [m] of the transfer: retract, via poses, pallet; with names."""
         si = self.si()
         return transfer_poses(si.transfer, si.die, last, self.part, si.grasp)
 
-    def plan(self, *, progress: Progress | None = None) -> BendingPlan:
-        """Place every bend on the die, then plan and check the transfer to the pallet.
+    def plan(self, *, progress: Progress | None = None) -> BendingPlan | BendingCycle:
+        """Plan the project's bending.
 
-        The transfer is a jerk-limited (ruckig) joint trajectory; `frames` (>= 22) evenly
-        timed frames are checked: the part with its OBB tree against the cell (leaf hits on
-        cylinders and meshes confirmed with python-fcl) and the robot's links and tool under
-        the project's collision policy (`check_trajectory` with `wb.collision_policy`; by
-        default spheres + SDF at every frame, what it flags confirmed with python-fcl, the
-        motion between frames certified on the trajectory). `progress(fraction, message)`
-        reports the stages.
+        With a press (`bending.press`): the whole cycle of the project's sequence and steps
+        (`BendingCycle`: pick, every bend with the ram and back-gauge, regrips, transfer,
+        pallet; every frame checked; `bending_process.plan_cycle`). Without: each bend placed
+        on the die and the checked transfer to the pallet (`BendingPlan`,
+        `bending_transfer.plan_transfer`). `progress(fraction, message)` reports the stages.
         """
-        report = progress or (lambda f, m: None)
-        model, part, grasp = self.wb.robot, self.part, self.grasp
-        report(0.0, "placing each bend line on the die")
-        placements, label = self.placements()
-        report(0.25, "planning the transfer")
-        T_tcp, names = self.transfer_poses(placements[-1])
-        q_way, _ = self._ik(T_tcp, names, placements[-1].q, "bending transfer")
-        traj = smooth_joint_path(
-            q_way,
-            model.max_velocity,
-            model.max_acceleration,
-            model.max_jerk,
-            position_limits=model.limits,
-            exact_stop=[0, len(q_way) - 1],
+        plan: BendingPlan | BendingCycle
+        if self.si().press is not None:
+            plan = process.plan_cycle(self, progress)
+        else:
+            plan = transfer_plan.plan_transfer(self, progress)
+        self._plan = plan
+        return plan
+
+    def find_sequences(
+        self,
+        engine: str = "serial",
+        address: str | None = None,
+        time_limit: float | None = None,
+        progress: Progress | None = None,
+        *,
+        cancel: Callable[[], bool] | None = None,
+        settings: SearchSettings | None = None,
+    ) -> SearchResult:
+        """Return ranked feasible plans of bend order, grasps and stations (best first), each
+        checked as a full cycle; `rejected`, the first reason of every pruned branch;
+        `stats`. `engine` "serial" or "ray" (`address`: a running cluster; None: a local Ray
+        started for the job); `time_limit` [s] returns the best found so far, with a note."""
+        return process.search(
+            self,
+            engine=engine,
+            address=address,
+            time_limit=time_limit,
+            progress=progress,
+            cancel=cancel,
+            settings=settings,
         )
-        F = self.si().frames
-        times = np.linspace(0.0, traj.duration, F)
-        q = traj.at(times)[0]
-        T_world_grasp, T_world_part = carried_poses(self._world_tcp(q), part, grasp)
-        report(0.4, f"checking {F} frames with the OBB tree")
-        obst = self.obstacles()
-        rep = check_part(self.tree(), obst, T_world_grasp)
-        report(0.7, "checking the robot against the cell")
-        # The checker holds the robot's links and tool, not the part: the tool and the part it
-        # grips are never a pair, and the part's own checks are the tree's above.
-        checker = self.wb.checker
-        path = check_trajectory(
-            traj,
-            times,
-            q,
-            checker,
-            self.wb.collision_policy,
-            progress=lambda f, m: report(0.7 + 0.25 * f, m),
-        )
-        robot_hit, robot_between = robot_frames(path, F)
-        first = first_collision(
-            times,
-            rep,
-            robot_hit,
-            path,
-            [f.name for f in part.flanges],
-            obst.names,
-            lambda f: checker.check(q[f], distance=False).colliding,
-        )
-        self._plan = BendingPlan(
-            placements=placements,
-            configuration=label,
-            trajectory=traj,
-            times=times,
-            joints=q,
-            T_world_grasp=T_world_grasp,
-            T_world_part=T_world_part,
-            part_report=rep,
-            part_colliding=rep.collides,
-            robot_colliding=robot_hit,
-            first_collision=first,
-            obstacle_names=obst.names,
-            robot_report=path,
-            robot_between=robot_between,
-        )
-        report(1.0, "done")
-        return self._plan
+
+    def use_plan(self, plan: SequencePlan) -> None:
+        """Put a plan's sequence, grasps and stations into the project: `plan()` then replays
+        that cycle, and saving keeps it."""
+        self.spec.set_steps_si(list(plan.sequence), process.steps_of(plan))
+        self._part = None
+        self._plan = None
+
+    def part_cell_bodies(self) -> list[tuple[str, Solid, NDArray[np.float64]]]:
+        """Return the cell's colliding objects the part is checked against (world), the press
+        left out (the process checks the part against the press as it moves)."""
+        return [
+            (b.name, b.solid, b.T_world_body)
+            for b in self.wb.cell
+            if b.collide and b.group != "press"
+        ]
+
+    def settle_time(self, *, close: bool) -> float:
+        """Return the gripper's settle time [s] after closing or opening (io.gripper; 0
+        without one)."""
+        s = program_settings(self.wb.project)
+        g = s.close if close else s.open
+        return 0.0 if g is None else float(g.settle)
 
     @property
-    def last_plan(self) -> BendingPlan | None:
+    def last_plan(self) -> BendingPlan | BendingCycle | None:
         """Return the latest plan (None before `plan`, or after the sequence or grasp changed)."""
         return self._plan
 
-    def robot_programs(self, plan: BendingPlan | None = None) -> list[RobotProgram]:
+    def robot_programs(self, plan: BendingPlan | BendingCycle | None = None) -> list[RobotProgram]:
         """Return the plan (default: the last) as a robot program (`sheetmetal.program`)."""
         plan, s = plan or self.last_plan or self.plan(), program_settings(self.wb.project)
+        if isinstance(plan, BendingCycle):
+            return [cycle_program(plan, self.wb.setup, s, self.wb.joints)]
         return [bending_program(plan, self.wb.setup, self.si(), s, self.wb.joints)]
 
     def check_cost(self, plan: BendingPlan, repeat: int = 3) -> CheckCost:
         """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request."""
         return check_cost(self.tree(), self.obstacles().boxes, plan.T_world_grasp, repeat)
 
-    def part_pose_at(self, plan: BendingPlan, t: float) -> NDArray[np.float64]:
-        """Return T_world_part (4, 4) [m] of the folded part carried by the robot at time `t` [s]."""
+    def part_pose_at(self, plan: BendingPlan | BendingCycle, t: float) -> NDArray[np.float64]:
+        """Return T_world_part (4, 4) [m] of the part at time `t` [s] (a cycle: at the last
+        checked frame before t; its fold step is `part_step_at`)."""
+        if isinstance(plan, BendingCycle):
+            return plan.frames.T_world_part[int(plan.frame_at(t))]  # type: ignore[no-any-return]
         q = plan.trajectory.at([t])[0][0]
-        return carried_poses(self._world_tcp(q), self.part, self.grasp)[1]
+        return carried_poses(self.world_tcp(q), self.part, self.grasp)[1]
 
-    def playback(self, plan: BendingPlan, dt: float = 0.02) -> SampledMotion:
-        """Return the transfer sampled every `dt` [s] for the timeline, frames' verdicts carried over."""
-        return sample_playback(plan, self._world_tcp, dt)
+    def part_step_at(self, plan: BendingPlan | BendingCycle, t: float) -> float:
+        """Return how far the part is folded at time `t` [s] (bends done, fractions partway)."""
+        if isinstance(plan, BendingCycle):
+            return float(plan.frames.step[int(plan.frame_at(t))])
+        return float(len(self.part.bends))
+
+    def press_poses_at(self, plan: BendingCycle, t: float) -> dict[str, NDArray[np.float64]]:
+        """Return the world poses (4, 4) [m] of the press's moving bodies at time `t` [s], by
+        their cell names ("press punch", "press upper beam", "press back-gauge finger 1", ...)."""
+        press = process.press_of(self.si())
+        n = int(plan.frame_at(t))
+        k = int(plan.frames.stop[n])
+        stop = plan.path.stops[k] if k >= 0 else None
+        poses = press_poses(press, float(plan.frames.punch_z[n]), stop)
+        return {f"press {name}": T for name, T in poses.items()}
+
+    def playback(self, plan: BendingPlan | BendingCycle, dt: float = 0.02) -> SampledMotion:
+        """Return the plan sampled every `dt` [s] for the timeline, frames' verdicts carried over."""
+        if isinstance(plan, BendingCycle):
+            return plan.playback(self.world_tcp, dt)
+        return sample_playback(plan, self.world_tcp, dt)

@@ -14,6 +14,8 @@ from workbench.collision import Solid
 from workbench.project.models import CellObject, CellObjectSI
 from workbench.project.paths import ProjectFolders
 from workbench.service.mesh_files import load_mesh_file
+from workbench.sheetmetal.bend_setup import press_display_bodies, robot_obstacles
+from workbench.sheetmetal.press import PressBrake
 
 
 @dataclass(frozen=True)
@@ -25,6 +27,8 @@ class CellBody:
     T_world_body: NDArray[np.float64] = field(repr=False)
     color: tuple[int, int, int]
     collide: bool
+    group: str = "cell"  # "cell": the project's objects; "press": the bending press's
+    display: bool = True  # False: an envelope the robot is checked against, not drawn
 
     def mesh(self) -> trimesh.Trimesh:
         """Return the body's triangle mesh in its own frame [m]."""
@@ -59,3 +63,28 @@ def build_cell(
             )
         )
     return bodies
+
+
+#: Colours of the press's bodies: frame, tools, back-gauge.
+PRESS_FRAME, PRESS_TOOL, PRESS_GAUGE = (90, 110, 140), (200, 200, 210), (220, 120, 40)
+#: Press bodies drawn but not in the robot's checks (they move: the timeline places them).
+MOVING = ("punch", "back-gauge finger")
+
+
+def press_cell(press: PressBrake | None) -> list[CellBody]:
+    """Return the press brake's bodies for the cell (`group` "press"): what the robot is
+    checked against (frame, bed, dies, the ram's stroke and the back-gauge's reach, the last
+    two not drawn), and the moving punch and fingers, drawn and placed by the timeline."""
+    if press is None:
+        return []
+    out = []
+    for name, solid, T in robot_obstacles(press):
+        envelope = name.startswith(("ram stroke", "back-gauge"))
+        color = PRESS_GAUGE if name.startswith("back-gauge") else PRESS_FRAME
+        if name.startswith("die"):
+            color = PRESS_TOOL
+        out.append(CellBody(f"press {name}", solid, T, color, True, "press", not envelope))
+    for name, solid, T in press_display_bodies(press):
+        color = PRESS_GAUGE if name.startswith("back-gauge") else PRESS_TOOL
+        out.append(CellBody(f"press {name}", solid, T, color, False, "press", True))
+    return out

@@ -32,7 +32,7 @@ from workbench.project.units import to_deg
 from workbench.service import program_import, programs
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
-from workbench.service.cell import CellBody, build_cell
+from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
@@ -77,6 +77,7 @@ class Workbench:
     def _load(self, project: Project) -> None:
         setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders)
         cell = build_cell(project.cell.to_si(), self.folders)
+        cell += press_cell(None if project.bending is None else project.bending.press_si())
         checker = RobotCollisionChecker(
             setup.model,
             setup.link_meshes,

@@ -1,0 +1,201 @@
+"""The press-brake process of `Workbench.bending`: the sequence and grasp search and the
+planned cycle, built from the project's `bending` section (SI through `BendingSpec.to_si`).
+
+Orchestration only: it hands the project's SI values, the robot and the cell to
+`workbench.sheetmetal` (`sequencing.find_sequences`, `cycle.check_cycle`) and returns their
+results.
+"""
+
+from __future__ import annotations
+
+import uuid
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from workbench.errors import InputError
+from workbench.project.bending import BendingSI, BendStepSI
+from workbench.sheetmetal.bend_eval import Reach, SweepContext, fitting_station
+from workbench.sheetmetal.cycle import BendingCycle, check_cycle
+from workbench.sheetmetal.cycle_path import CycleCell, CycleStep
+from workbench.sheetmetal.grasp_grid import grasp_grid
+from workbench.sheetmetal.press import PressBrake
+from workbench.sheetmetal.sequencing import (
+    Rejected,
+    SearchResult,
+    SearchSettings,
+    SequencePlan,
+    find_sequences,
+)
+
+if TYPE_CHECKING:
+    from workbench.service.bending import BendingService
+
+Progress = Callable[[float, str], None]
+
+#: Candidate grasps of a search: grid spacing and inset [m], yaws [rad], faces.
+GRASP_SPACING = 0.025
+GRASP_INSET = 0.008
+GRASP_YAWS = (0.0, np.pi / 2, np.pi, -np.pi / 2)
+GRASP_FACES = (1,)
+
+
+def press_of(si: BendingSI) -> PressBrake:
+    """Return the project's press; InputError naming `bending.press` when there is none."""
+    if si.press is None:
+        raise InputError(
+            "bending.press: the project has no press brake model; add one (punch, die, "
+            "back-gauge, ram: see docs/sheetmetal.md) to plan the bending process"
+        )
+    return si.press
+
+
+def sweep_context(svc: BendingService) -> SweepContext:
+    """Return the search's context: the part, press, cell, robot and candidate grasps."""
+    wb = svc.wb
+    si = svc.si()
+    press = press_of(si)
+    setup = wb.setup
+    reach = Reach.of(wb.robot, setup.T_world_base, setup.T_flange_tcp, wb.joints, setup.tool_mesh)
+    part = svc.part
+    grasps = grasp_grid(
+        part, spacing=GRASP_SPACING, inset=GRASP_INSET, yaws=GRASP_YAWS, faces=GRASP_FACES
+    )
+    return SweepContext(
+        si.part,
+        press,
+        tuple(svc.part_cell_bodies()),
+        reach,
+        tuple(grasps),
+        key=uuid.uuid4().hex,
+        T_world_blank=si.blank,
+        T_world_pallet=si.transfer.T_world_pallet,
+        lift=si.lift,
+        approach=si.approach,
+        T_world_regrip=si.regrip,
+    )
+
+
+def cycle_cell(svc: BendingService) -> CycleCell:
+    """Return the cycle's cell from the project: press, stack, station, pallet, transfer."""
+    si = svc.si()
+    return CycleCell(
+        press_of(si),
+        si.blank,
+        si.regrip,
+        si.transfer.T_world_pallet,
+        si.transfer.T_world_vias,
+        si.approach,
+        si.lift,
+        si.follow,
+        svc.wb.joints,
+        settle=svc.settle_time(close=True),
+        release=svc.settle_time(close=False),
+    )
+
+
+def cycle_steps(svc: BendingService) -> list[CycleStep]:
+    """Return the project's steps (grasp and station per bend), or the section's grasp for
+    every bend at the first station that fits it."""
+    si, part = svc.si(), svc.part
+    if si.steps is not None:
+        return [CycleStep(s.bend, s.grasp, s.station) for s in si.steps]
+    press = press_of(si)
+    return [
+        CycleStep(b.name, si.grasp, fitting_station(press, float(part.bend_lengths[i])))
+        for i, b in enumerate(part.bends)
+    ]
+
+
+def plan_cycle(svc: BendingService, progress: Progress | None = None) -> BendingCycle:
+    """Return the planned and checked cycle of the project's sequence and steps."""
+    wb = svc.wb
+    setup = wb.setup
+    return check_cycle(
+        svc.part,
+        cycle_steps(svc),
+        cycle_cell(svc),
+        model=wb.robot,
+        T_world_base=setup.T_world_base,
+        T_flange_tcp=setup.T_flange_tcp,
+        checker=wb.checker,
+        policy=wb.collision_policy,
+        cell_bodies=svc.part_cell_bodies(),
+        progress=progress,
+    )
+
+
+def search(
+    svc: BendingService,
+    *,
+    engine: str,
+    address: str | None,
+    time_limit: float | None,
+    progress: Progress | None,
+    cancel: Callable[[], bool] | None,
+    settings: SearchSettings | None,
+) -> SearchResult:
+    """Return the ranked plans of the project's part; each is checked as a full cycle."""
+    ctx = sweep_context(svc)
+    wb = svc.wb
+    setup = wb.setup
+    cell = cycle_cell(svc)
+    base = ctx.part()
+    names = [b.name for b in base.bends]
+    others = svc.part_cell_bodies()
+
+    def verify(plan: SequencePlan) -> SequencePlan | Rejected:
+        from dataclasses import replace
+
+        from workbench.errors import WorkbenchError
+        from workbench.sheetmetal.part import SheetMetalPart
+
+        order = [names.index(b) for b in plan.sequence]
+        part = SheetMetalPart(base.thickness, list(base.flanges), [base.bends[i] for i in order])
+        steps = [
+            CycleStep(b, g, s)
+            for b, g, s in zip(plan.sequence, plan.grasps, plan.stations, strict=True)
+        ]
+        try:
+            cyc = check_cycle(
+                part,
+                steps,
+                cell,
+                model=wb.robot,
+                T_world_base=setup.T_world_base,
+                T_flange_tcp=setup.T_flange_tcp,
+                checker=wb.checker,
+                policy=wb.collision_policy,
+                cell_bodies=others,
+            )
+        except WorkbenchError as exc:
+            return Rejected(f"full cycle: {exc}")
+        if cyc.first_problem is not None:
+            return Rejected(f"full cycle: {cyc.first_problem}", cyc.first_step)
+        return replace(
+            plan,
+            cycle_time=cyc.cycle_time,
+            regrips=cyc.regrips,
+            verified=True,
+            estimated=False,
+        )
+
+    return find_sequences(
+        ctx,
+        verify=verify,
+        engine=engine,
+        address=address,
+        time_limit=time_limit,
+        progress=progress,
+        cancel=cancel,
+        settings=settings,
+    )
+
+
+def steps_of(plan: SequencePlan) -> list[BendStepSI]:
+    """Return a plan's steps (grasp and station per bend) in the project's SI form."""
+    return [
+        BendStepSI(b, g, s)
+        for b, g, s in zip(plan.sequence, plan.grasps, plan.stations, strict=True)
+    ]

@@ -1,0 +1,552 @@
+"""The cheap checks of one bend in a sequence search: given the bends already made, can the
+next bend be made, with which grasps, at which tool station (SI units: m, rad, s).
+
+A candidate is (bends done, next bend). Its folded states do not depend on the order of the
+bends done, so a search over orders evaluates each candidate once. Per side of the bend
+(which side faces the robot; the grasp's flange decides it, `bend_setup`), in this order,
+the first failure is the reason:
+
+1. the tool station: the first station whose die is as long as the bend line and whose
+   punch covers it (short by at most `PUNCH_SHORTFALL` at each end) and where the part
+   clears the press and the cell at every checked fraction of the bend (`press_check`);
+2. the back-gauge: a stop within its axes at the placement (`bend_setup.gauge_stop`);
+Per grasp on that side: inverse kinematics at the placement and at the end of the bend in
+the search's one arm configuration, and the gripper's box clear of the press as the robot
+sees it (ram stroke, dies, frame, back-gauge reach).
+
+Everything here is a pure function of a picklable `SweepContext` and the candidate keys, so
+the batch runner (`workbench.batch`) can send it to Ray workers.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+import trimesh
+from numpy.typing import NDArray
+
+from workbench.collision.shapes import Solid
+from workbench.errors import InputError
+from workbench.geometry.obb import OBB, obb_overlap
+from workbench.kinematics.ik_report import branch_name
+from workbench.kinematics.model import RobotModel
+from workbench.sheetmetal.airbend import apex_depth
+from workbench.sheetmetal.bend_setup import (
+    GaugeStop,
+    PressObstacles,
+    bend_pose,
+    contact_zone,
+    gauge_stop,
+    in_child_side,
+    merge_obstacles,
+    part_points,
+    robot_obstacles,
+)
+from workbench.sheetmetal.cycle_path import follow_fractions
+from workbench.sheetmetal.folding import FoldedState, fold_state
+from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
+from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
+from workbench.sheetmetal.part import SheetMetalPart
+from workbench.sheetmetal.press import PressBrake, Station, ram_time
+from workbench.sheetmetal.press_check import check_states
+
+F64 = NDArray[np.float64]
+Body = tuple[str, Solid, F64]
+
+#: How much shorter than the bend line a punch may be at each end [m] (box bending: the
+#: walls already bent stand at the line's ends; the punch fits between them).
+PUNCH_SHORTFALL = 0.006
+#: Fractions of each bend checked by the cheap stage (the full cycle checks every frame).
+FRACTIONS = (0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0)
+
+
+def home_branch(model: RobotModel, q: F64) -> int | None:
+    """Return the `ik_batch` branch (arm configuration) of joints `q` (dof,) [rad]: the cycle
+    and the search keep it (None: a numeric model, or `q` on no branch)."""
+    if not model.is_analytic:
+        return None
+    q = np.asarray(q, float)
+    sol, valid = model.ik_batch(model.fk(q)[None])  # type: ignore[attr-defined]
+    err = np.where(valid[0], np.nan_to_num(np.abs(sol[0] - q), nan=np.inf).max(axis=1), np.inf)
+    return int(np.argmin(err)) if np.isfinite(err).any() else None
+
+
+@dataclass(frozen=True, eq=False)
+class Reach:
+    """The robot as the search needs it: model, base and TCP frames (4, 4) [m], the arm
+    configuration's IK branch (`ik_batch` index; -1 for a numeric model: any solution), its
+    label, the gripper's box in the TCP frame (None: no tool body) and the home joints."""
+
+    model: RobotModel
+    T_world_base: F64
+    T_flange_tcp: F64
+    branch: int
+    configuration: str
+    tool_box: OBB | None
+    q: F64  # (dof,) [rad] the joints the cycle starts from (home)
+
+    @classmethod
+    def of(
+        cls,
+        model: RobotModel,
+        T_world_base: F64,
+        T_flange_tcp: F64,
+        q: F64,
+        tool_mesh: trimesh.Trimesh | None,
+    ) -> Reach:
+        """Return the reach of a robot whose arm configuration is that of joints `q` (dof,)
+        [rad]; the gripper's box is the tool mesh's bounding box in the TCP frame."""
+        q = np.asarray(q, float)
+        branch = -1
+        if model.is_analytic:
+            sol, valid = model.ik_batch(model.fk(q)[None])  # type: ignore[attr-defined]
+            err = np.where(
+                valid[0], np.nan_to_num(np.abs(sol[0] - q), nan=np.inf).max(axis=1), np.inf
+            )
+            if np.isfinite(err).any():
+                branch = int(np.argmin(err))
+        box = None
+        if tool_mesh is not None and len(tool_mesh.vertices):
+            v = np.asarray(tool_mesh.vertices, float)
+            T_tcp_flange = np.linalg.inv(T_flange_tcp)
+            box = OBB.from_points(v @ T_tcp_flange[:3, :3].T + T_tcp_flange[:3, 3])
+        return cls(model, T_world_base, T_flange_tcp, branch, branch_name(model, q), box, q)
+
+
+@dataclass(frozen=True, eq=False)
+class SweepContext:
+    """What every candidate evaluation reads: the part (its SI spec), the press, the cell's
+    colliding objects (world) other than the press, the robot and the grasp candidates."""
+
+    part_spec: Any  # PartSI or the plain dict of `SheetMetalPart.from_spec`
+    press: PressBrake
+    cell: tuple[Body, ...]
+    reach: Reach
+    grasps: tuple[Grasp, ...]
+    fractions: tuple[float, ...] = FRACTIONS
+    key: str = field(default="", compare=False)
+    T_world_blank: F64 | None = None  # the flat blank on its stack (None: not checked)
+    T_world_pallet: F64 | None = None  # the finished part on the pallet (None: not checked)
+    lift: float = 0.0  # [m] approach height at the stack and the pallet
+    approach: F64 | None = None  # (3,) [m] die frame: the pose before the stop, and after
+    T_world_regrip: F64 | None = None  # the part's pose on the regrip station (None: no check)
+
+    def part(self) -> SheetMetalPart:
+        """Return the part (built once per process and context)."""
+        return _cached(self, "part", lambda: SheetMetalPart.from_spec(self.part_spec, check=False))
+
+    def cell_bodies(self) -> list[Body]:
+        """Return the cell's colliding objects (world frame)."""
+        return list(self.cell)
+
+    def press_obstacles(self) -> PressObstacles:
+        """Return the press's obstacles for the part (built once per process and context)."""
+        return _cached(self, "press_obstacles", lambda: PressObstacles(self.press))
+
+    def cell_obstacles(self) -> Obstacles:
+        """Return the cell's colliding objects as obstacles (built once)."""
+        return _cached(self, "cell_obstacles", lambda: cell_obstacles(self.cell_bodies()))
+
+    def robot_press(self) -> OBB:
+        """Return the press's bodies as the robot sees them, as world boxes (M,)."""
+        return _cached(
+            self, "robot_press", lambda: cell_obstacles(robot_obstacles(self.press)).boxes
+        )
+
+
+_CACHE: dict[tuple[str, str], Any] = {}
+
+
+def _cached(ctx: SweepContext, what: str, build: Any) -> Any:
+    key = (ctx.key or str(id(ctx)), what)
+    if key not in _CACHE:
+        if len(_CACHE) > 64:
+            _CACHE.clear()
+        _CACHE[key] = build()
+    return _CACHE[key]
+
+
+def ordered_part(part: SheetMetalPart, done: Sequence[int], bend: int) -> SheetMetalPart:
+    """Return `part` with its bends reordered: `done` (indices into part.bends), then `bend`,
+    then the rest; its fold step len(done) is the state before `bend`."""
+    rest = [i for i in range(len(part.bends)) if i not in done and i != bend]
+    order = [*done, bend, *rest]
+    return SheetMetalPart(
+        part.thickness, list(part.flanges), [part.bends[i] for i in order], check=False
+    )
+
+
+@dataclass(frozen=True)
+class SideEval:
+    """One side of a bend facing the robot: feasible or the first `reason`; the `station`,
+    back-gauge stop, final apex depth [m], the ram's time for the bend [s] and whether the
+    part shows its top (base +z) upwards."""
+
+    ok: bool
+    reason: str | None
+    station: str | None = None
+    stop_x: float = np.nan
+    depth: float = np.nan
+    ram_time: float = np.nan
+    top_up: bool = True
+
+
+@dataclass(frozen=True, eq=False)
+class BendEval:
+    """The cheap verdict of bend `bend` (index into the part's bends) after bends `done`.
+
+    `sides[0]`: the child's side facing the robot, `sides[1]`: the parent's. Per grasp
+    candidate: `grasp_ok` (G,), its first `grasp_reason`, and the joints (G, dof) [rad] at
+    the placement (`q0`) and at the end of the bend (`q1`), NaN where not reachable.
+    """
+
+    done: tuple[int, ...]
+    bend: int
+    problem: str | None
+    sides: tuple[SideEval, SideEval]
+    grasp_side: NDArray[np.int64]
+    grasp_ok: NDArray[np.bool_]
+    grasp_reason: tuple[str | None, ...]
+    q0: F64
+    q1: F64
+    at_station: NDArray[np.bool_] | None = None  # (G,) reachable at the regrip station before it
+
+    @property
+    def feasible(self) -> bool:
+        """Return whether any grasp can make the bend."""
+        return bool(self.grasp_ok.any())
+
+    def reason(self) -> str:
+        """Return the first reason no grasp makes the bend (the most common one)."""
+        if self.problem:
+            return self.problem
+        found = [r for r in self.grasp_reason if r]
+        if not found:
+            return "feasible"
+        return max(dict.fromkeys(found), key=found.count)
+
+
+def fitting_station(press: PressBrake, length: float) -> str:
+    """Return the first station whose tools fit a bend line `length` [m] long."""
+    fits = _stations(press, length)
+    if not fits:
+        raise InputError(
+            f"{press.where}.stations: no station fits a {length * 1e3:.0f} mm bend line (die at "
+            f"least as long, punch at most {2 * PUNCH_SHORTFALL * 1e3:g} mm shorter)"
+        )
+    return fits[0].name
+
+
+def _stations(press: PressBrake, length: float) -> list[Station]:
+    return [
+        s
+        for s in press.stations
+        if s.die_length >= length - 1e-9 and s.punch_length >= length - 2 * PUNCH_SHORTFALL - 1e-9
+    ]
+
+
+def _side(
+    ctx: SweepContext,
+    part: SheetMetalPart,
+    k: int,
+    flange: int,
+    bend_name: str,
+    states: list[FoldedState],
+) -> tuple[SideEval, list[F64]]:
+    """Return the side's verdict and the part's poses T_die_part at `ctx.fractions`."""
+    press = ctx.press
+    grasp = Grasp(part.flanges[flange].name)
+    length = float(part.bend_lengths[k])
+    stations = _stations(press, length)
+    if not stations:
+        return SideEval(
+            False,
+            f"bend {bend_name!r}: no tool station fits its {length * 1e3:.0f} mm bend line "
+            f"(die at least as long, punch at most {2 * PUNCH_SHORTFALL * 1e3:g} mm shorter; "
+            f"{press.where}.stations)",
+        ), []
+    tried: list[tuple[str, str]] = []
+    cell, scene = ctx.cell_obstacles(), ctx.press_obstacles()
+    cut = contact_zone(float(part.bend_allowances[k]), part.thickness, press.tolerance)
+    pts = part_points(states[0])
+    for station in stations:
+        poses = [bend_pose(s, k, grasp, press, station) for s in states]
+        stop = gauge_stop(
+            (poses[0].T_die_part @ np.c_[pts, np.ones(len(pts))].T).T[:, :3], press, station
+        )
+        if stop.problem is not None:
+            tried.append((station.name, stop.problem))
+            continue
+        obstacles = [merge_obstacles(scene.at(station, p.punch_z, cut, stop), cell) for p in poses]
+        T = np.array([press.T_world_die @ p.T_die_part for p in poses])
+        hits = check_states(states, T, obstacles)
+        bad = [i for i, h in enumerate(hits) if h is not None]
+        if bad:
+            i = bad[0]
+            hit = hits[i]
+            assert hit is not None
+            angle = np.degrees(states[i].angles[k])
+            at = f"at {angle:.0f}° (of {np.degrees(part.bends[k].angle):.0f}°)"
+            tried.append((station.name, f"{hit.describe()} {at}"))
+            continue
+        top_up = bool(T[0][2, 2] > 0)
+        return SideEval(
+            True,
+            None,
+            station.name,
+            stop.x,
+            poses[-1].depth,
+            ram_time(press, poses[-1].depth),
+            top_up,
+        ), [p.T_die_part for p in poses]
+    if len(press.stations) == 1:
+        return SideEval(False, f"bend {bend_name!r}: {tried[0][1]}"), []
+    why = "; ".join(f"at station {n!r} {w}" for n, w in tried)
+    return SideEval(False, f"bend {bend_name!r}: {why}"), []
+
+
+def reach_where_part_rests(
+    ctx: SweepContext, T_world_part: F64, step: int, part: SheetMetalPart | None = None
+) -> tuple[NDArray[np.bool_], F64]:
+    """Return (G,) whether the robot reaches each grasp of the part lying at `T_world_part`
+    (4, 4) [m] folded `step` bends of `part`'s sequence (default: the context's part) and
+    `lift` above it, and the joints (G, dof) [rad] at the grasp (NaN where not)."""
+    part = ctx.part() if part is None else part
+    state = fold_state(part, step, check=False)
+    tcp = np.array(
+        [
+            T_world_part
+            @ state.T_part_flange[part.flange_index(g.flange)]
+            @ T_flange_grasp(part, g)
+            for g in ctx.grasps
+        ]
+    )
+    up = tcp.copy()
+    up[:, 2, 3] += ctx.lift
+    ok, q = _reach(ctx, np.concatenate([tcp, up]))
+    both = ok[: len(tcp)] & ok[len(tcp) :]
+    return both, np.where(both[:, None], q[: len(tcp)], np.nan)
+
+
+def _reach(ctx: SweepContext, T_world_tcp: F64) -> tuple[NDArray[np.bool_], F64]:
+    """Return (reachable (N,), joints (N, dof)) of TCP poses (N, 4, 4) in the configuration."""
+    r = ctx.reach
+    T_base_flange = np.linalg.inv(r.T_world_base) @ T_world_tcp @ np.linalg.inv(r.T_flange_tcp)
+    n, dof = len(T_base_flange), r.model.dof
+    q = np.full((n, dof), np.nan)
+    if r.model.is_analytic and r.branch >= 0:
+        sol, valid = r.model.ik_batch(T_base_flange)  # type: ignore[attr-defined]
+        ok = valid[:, r.branch]
+        q[ok] = sol[ok, r.branch]
+        return ok, q
+    ok = np.zeros(n, dtype=bool)
+    for i, T in enumerate(T_base_flange):
+        s = r.model.ik(T)
+        if len(s):
+            ok[i], q[i] = True, s[0]
+    return ok, q
+
+
+def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
+    """Return the cheap verdict of making bend `bend` after the bends `done`."""
+    base = ctx.part()
+    name = base.bends[bend].name
+    part = ordered_part(base, done, bend)
+    k = len(done)
+    G = len(ctx.grasps)
+    dof = ctx.reach.model.dof
+    nan_q = np.full((G, dof), np.nan)
+    try:
+        fold_state(part, k + 1)
+    except InputError as exc:
+        problem = f"bend {name!r}: {str(exc).replace('bend sequence: ', '')}"
+        side = SideEval(False, problem)
+        return BendEval(
+            done,
+            bend,
+            problem,
+            (side, side),
+            np.zeros(G, np.int64),
+            np.zeros(G, bool),
+            (problem,) * G,
+            nan_q,
+            nan_q.copy(),
+        )
+    child = part.bends[k].child
+    sides: list[SideEval] = []
+    poses: list[list[F64]] = []
+    states = [fold_state(part, k, f, check=False) for f in ctx.fractions]
+    for flange in (child, part.bends[k].parent):
+        verdict, p = _side(ctx, part, k, flange, name, states)
+        sides.append(verdict)
+        poses.append(p)
+    gflange = np.array([part.flange_index(g.flange) for g in ctx.grasps], dtype=np.int64)
+    gside = np.array([0 if in_child_side(part, k, f) else 1 for f in gflange], dtype=np.int64)
+    ok = np.zeros(G, bool)
+    reasons: list[str | None] = [None] * G
+    q0, q1 = nan_q.copy(), nan_q.copy()
+    robot_press = ctx.robot_press()
+    for s in (0, 1):
+        idx = np.flatnonzero(gside == s)
+        if not len(idx):
+            continue
+        if not sides[s].ok:
+            for i in idx:
+                reasons[i] = sides[s].reason
+            continue
+        # IK along the bend at the cycle's following fractions (the robot keeps pace)
+        follow = [fold_state(part, k, f, check=False) for f in follow_fractions()]
+        rep = Grasp(part.flanges[(part.bends[k].child, part.bends[k].parent)[s]].name)
+        station = ctx.press.station(sides[s].station or "")
+        along = [bend_pose(st, k, rep, ctx.press, station).T_die_part for st in follow]
+        states_f = follow
+        nf = len(follow)
+        tcp_f = np.array(
+            [
+                ctx.press.T_world_die
+                @ along[j]
+                @ follow[j].T_part_flange[gflange[i]]
+                @ T_flange_grasp(part, ctx.grasps[i])
+                for j in range(nf)
+                for i in idx
+            ]
+        )
+        n = len(idx)
+        tcp = np.concatenate([tcp_f[:n], tcp_f[-n:]])  # at the stop, at the end of the bend
+        # the moves in and out of the die: in front of the stop, and lifted out and pulled
+        # back after the bend (the cycle's waypoints; `cycle_path`)
+        aside = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth)
+        reach, q = _reach(ctx, np.concatenate([tcp_f, aside]))
+        reach_f = reach[: nf * n].reshape(nf, n)
+        q_f = q[: nf * n].reshape(nf, n, dof)
+        depth = [
+            float(
+                apex_depth(
+                    st.angles[k],
+                    st.radii[k],
+                    part.thickness,
+                    ctx.press.die.v_opening,
+                    ctx.press.die.shoulder_radius,
+                )
+            )
+            for st in states_f
+        ]
+        speed = _following_speed(ctx, q_f, depth)
+        hits = _tool_hits(ctx, tcp, robot_press)
+        for m, i in enumerate(idx):
+            g = ctx.grasps[i]
+            label = grasp_label(g)
+            if not reach_f[:, m].all():
+                j = int(np.argmin(reach_f[:, m]))
+                when = (
+                    "at the die"
+                    if j == 0
+                    else f"at {np.degrees(states_f[j].angles[k]):.0f}° of the bend"
+                )
+                reasons[i] = (
+                    f"bend {name!r}: grasp {label} unreachable {when} in the arm configuration "
+                    f"{ctx.reach.configuration}"
+                )
+                continue
+            if not (reach[nf * n + m] and reach[nf * n + n + m]):
+                when = (
+                    "in front of the die" if not reach[nf * n + m] else "pulled back from the die"
+                )
+                reasons[i] = (
+                    f"bend {name!r}: grasp {label} unreachable {when} in the arm configuration "
+                    f"{ctx.reach.configuration}"
+                )
+                continue
+            if speed[m] > 1.0:
+                reasons[i] = (
+                    f"bend {name!r}: grasp {label}: following the flange needs {speed[m]:.1f}x a "
+                    "joint's top speed (a wrist near its singularity, or the grasp too far out)"
+                )
+                continue
+            if hits[m] or hits[n + m]:
+                when = "at the die" if hits[m] else "at the end of the bend"
+                reasons[i] = f"bend {name!r}: grasp {label}: the gripper hits the press {when}"
+                continue
+            q_end = q_f[-1]
+            ok[i], q0[i], q1[i] = True, q_f[0, m], q_end[m]
+    station_ok = None
+    if ctx.T_world_regrip is not None:
+        station_ok = reach_where_part_rests(ctx, ctx.T_world_regrip, k, part)[0]
+    return BendEval(
+        done, bend, None, (sides[0], sides[1]), gside, ok, tuple(reasons), q0, q1, station_ok
+    )
+
+
+def _following_speed(ctx: SweepContext, q: F64, depth: list[float]) -> F64:
+    """Return per grasp (N,) the highest ratio of joint speed to top speed while following
+    the flange between the search's fractions (q (F, N, dof) [rad]) at the ram's pace."""
+    if len(depth) < 2:
+        return np.zeros(q.shape[1])
+    dt = np.maximum(np.diff(np.asarray(depth)) / ctx.press.ram.bending_speed, 1e-6)
+    dq = np.abs(np.diff(q, axis=0)) / dt[:, None, None]
+    ratio = dq / np.asarray(ctx.reach.model.max_velocity, float)
+    return np.nan_to_num(ratio, nan=np.inf).max(axis=(0, 2))  # type: ignore[no-any-return]
+
+
+def _aside(ctx: SweepContext, at_stop: F64, at_end: F64, depth: float) -> F64:
+    """Return the TCP poses in front of the die (before the stop) and lifted out and pulled
+    back after the bend (2N, 4, 4), as `cycle_path` moves them: the approach offset (die
+    frame) from the stop; up by its z plus the depth, back by its y, from the end."""
+    if ctx.approach is None:
+        return np.concatenate([at_stop, at_end])
+    R = ctx.press.T_world_die[:3, :3]
+    a = np.asarray(ctx.approach, float)
+    before = at_stop.copy()
+    before[:, :3, 3] += R @ a
+    after = at_end.copy()
+    after[:, :3, 3] += R @ np.array([0.0, a[1], a[2] + depth])
+    return np.concatenate([before, after])
+
+
+def _tool_hits(ctx: SweepContext, T_world_tcp: F64, press_boxes: OBB) -> NDArray[np.bool_]:
+    """Return (N,) whether the gripper's box at each TCP pose (N, 4, 4) meets the press."""
+    box = ctx.reach.tool_box
+    if box is None or not len(T_world_tcp):
+        return np.zeros(len(T_world_tcp), dtype=bool)
+    R = T_world_tcp[:, :3, :3]
+    placed = OBB(
+        np.einsum("nij,j->ni", R, box.center) + T_world_tcp[:, :3, 3],
+        R @ box.rotation,
+        np.broadcast_to(box.half_extents, (len(R), 3)),
+    )
+    hit = obb_overlap(placed.reshape(len(R), 1), press_boxes.reshape(1, -1))
+    return np.asarray(np.asarray(hit).any(axis=1), dtype=bool)
+
+
+def grasp_label(g: Grasp) -> str:
+    """Return a short name of a grasp: flange, point [mm], yaw [deg] and face."""
+    off = (
+        "centroid" if g.offset is None else f"({g.offset[0] * 1e3:.0f}, {g.offset[1] * 1e3:.0f}) mm"
+    )
+    face = "" if getattr(g, "face", 1) > 0 else ", bottom face"
+    return f"'{g.flange}' at {off}, yaw {np.degrees(g.yaw):.0f}°{face}"
+
+
+def evaluate_batch(ctx: SweepContext, keys: list[tuple[tuple[int, ...], int]]) -> list[BendEval]:
+    """Return `evaluate` of every (done, bend) key: the batch runner's unit of work."""
+    return [evaluate(ctx, done, bend) for done, bend in keys]
+
+
+__all__ = [
+    "FRACTIONS",
+    "PUNCH_SHORTFALL",
+    "BendEval",
+    "GaugeStop",
+    "Reach",
+    "SideEval",
+    "SweepContext",
+    "evaluate",
+    "evaluate_batch",
+    "grasp_label",
+    "ordered_part",
+    "ram_time",
+    "replace",
+]

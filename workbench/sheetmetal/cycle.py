@@ -1,0 +1,471 @@
+"""The planned press-brake cycle: joints, a jerk-limited trajectory, and every frame checked.
+
+SI units (m, rad, s). From `cycle_path`'s waypoints: inverse kinematics of every TCP pose in
+one arm configuration (`follow_path`), one jerk-limited trajectory (ruckig) through them with
+exact stops where the gripper or the press works, holding still for their times; each
+bend-following segment is slowed per joint so it lasts at least the ram's time for it (the
+robot keeps pace with the press; where the robot cannot, the plan says which joint).
+
+Checked, frame by frame (every `frame_dt` and at every waypoint):
+- the part (its OBB tree, `press_check`) against the press at that instant (punch height,
+  back-gauge fingers) and the cell, carried, bent or resting;
+- the robot (links and tool) against the cell and the press under the collision policy
+  (spheres + SDF, confirmed with python-fcl, certified between frames);
+- the robot's links against the part when it rests (blank stack, regrip station, pallet).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from workbench.collision.engine import EnginePathReport
+from workbench.collision.fcl_checker import CollisionScene
+from workbench.collision.plan_check import CollisionPolicy, check_trajectory
+from workbench.collision.robot_checker import RobotCollisionChecker
+from workbench.collision.shapes import Solid
+from workbench.errors import PlanningError
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.model import RobotModel
+from workbench.kinematics.path_ik import follow_path
+from workbench.motion.sampled import SampledMotion
+from workbench.motion.trajectory import Trajectory, smooth_joint_path
+from workbench.sheetmetal.bend_eval import home_branch
+from workbench.sheetmetal.bend_setup import (
+    Body,
+    PressObstacles,
+    bend_pose,
+    contact_zone,
+    merge_obstacles,
+)
+from workbench.sheetmetal.cycle_path import (
+    CycleCell,
+    CyclePath,
+    CycleStep,
+    Phase,
+    T_part_tcp,
+    cycle_path,
+)
+from workbench.sheetmetal.folding import FoldedState, fold_state
+from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
+from workbench.sheetmetal.part import SheetMetalPart
+from workbench.sheetmetal.press_check import PartHit, check_states
+
+F64 = NDArray[np.float64]
+Progress = Callable[[float, str], None]
+
+
+@dataclass(frozen=True, eq=False)
+class CycleFrames:
+    """Per checked frame (F,): time [s], joints (F, dof), the part's fold step, its pose
+    T_world_part (F, 4, 4) [m], the punch tip's height [m] over the die's top, the
+    back-gauge setting (index into the path's stops, -1 none), the phase index, and the
+    part's first collision (None: free)."""
+
+    times: F64
+    joints: F64
+    step: F64
+    T_world_part: F64
+    punch_z: F64
+    stop: NDArray[np.int64]
+    phase: NDArray[np.int64]
+    part_hits: tuple[PartHit | None, ...]
+    robot_part_hits: tuple[str | None, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class BendingCycle:
+    """A planned cycle: its path, joints at the waypoints (N, dof) [rad], the configuration,
+    the trajectory, the checked frames and the robot's report; `first_problem` names the
+    first collision (time, what hits what) or is None when the whole cycle is free."""
+
+    part: SheetMetalPart
+    steps: tuple[CycleStep, ...]
+    path: CyclePath = field(repr=False)
+    q: F64
+    configuration: str
+    trajectory: Trajectory = field(repr=False)
+    frames: CycleFrames = field(repr=False)
+    robot_report: EnginePathReport
+    first_problem: str | None
+    first_step: int | None = None  # the step (bend) whose grasp was in use at the problem
+
+    @property
+    def cycle_time(self) -> float:
+        """Return the cycle's duration [s], holds included."""
+        return float(self.trajectory.duration)
+
+    @property
+    def ok(self) -> bool:
+        """Return whether the whole cycle is collision-free."""
+        return self.first_problem is None
+
+    @property
+    def regrips(self) -> int:
+        """Return how many times the part is handed to the regrip station."""
+        return sum(
+            1 for w in self.path.waypoints if w.label == "put the part on the regrip station"
+        )
+
+    def frame_at(self, t: ArrayLike) -> NDArray[np.intp]:
+        """Return, per time [s], the index of the last checked frame at or before it."""
+        k = np.searchsorted(self.frames.times, np.asarray(t, float), side="right") - 1
+        return np.clip(k, 0, len(self.frames.times) - 1)  # type: ignore[no-any-return]
+
+    @property
+    def colliding(self) -> NDArray[np.bool_]:
+        """Return (F,) frames where the part or the robot collides (or is not certified up to
+        the next frame)."""
+        out = np.array([h is not None for h in self.frames.part_hits], dtype=bool)
+        out |= np.array([h is not None for h in self.frames.robot_part_hits], dtype=bool)
+        out[list(self.robot_report.colliding_indices)] = True
+        out[list(self.robot_report.between_indices)] = True
+        return out
+
+    def playback(self, world_tcp: Callable[[F64], F64], dt: float = 0.02) -> SampledMotion:
+        """Return the cycle sampled every `dt` [s] for the timeline, the frames' verdicts
+        carried over; `world_tcp(q)` gives TCP world poses (N, 4, 4) at joints (N, dof)."""
+        t, p, v, a = self.trajectory.sample(dt)
+        return SampledMotion(
+            t, p, v, a, world_tcp(p), self.colliding[self.frame_at(t)], name="bending cycle"
+        )
+
+    def waypoint_times(self) -> F64:
+        """Return when the robot reaches each waypoint [s] (arrival, before its hold)."""
+        return self.trajectory.waypoint_times  # type: ignore[no-any-return]
+
+    def summary(self) -> str:
+        """Return a short human summary (markdown)."""
+        head = (
+            f"{len(self.steps)} bends ({' '.join(s.bend for s in self.steps)}), "
+            f"{self.regrips} regrip(s), cycle {self.cycle_time:.1f} s, "
+            f"{len(self.frames.times)} frames checked ({self.configuration})."
+        )
+        tail = f" Robot: {self.robot_report.message}."
+        if self.first_problem is None:
+            return head + " Collision-free." + tail
+        return head + f" First collision: {self.first_problem}." + tail
+
+
+def _segment_speeds(q: F64, path: CyclePath, vmax: F64, labels: list[str]) -> F64:
+    """Return per-segment velocity limits (N-1, dof): the robot's, or for a bend-following
+    segment each joint's share of the ram's time (PlanningError when above the robot's)."""
+    out = np.tile(vmax, (len(q) - 1, 1))
+    for i, w in enumerate(path.waypoints[1:]):
+        if w.bend_time <= 0.0:
+            continue
+        need = np.abs(q[i + 1] - q[i]) / w.bend_time
+        if np.any(need > vmax * (1 + 1e-9)):
+            j = int(np.argmax(need / vmax))
+            raise PlanningError(
+                f"{labels[i + 1]}: following the flange needs joint {j + 1} at "
+                f"{np.degrees(need[j]):.0f} deg/s, above its {np.degrees(vmax[j]):.0f} deg/s; "
+                "lower the press's bending speed or grip farther from the bend line"
+            )
+        out[i] = np.maximum(need, vmax * 1e-3)
+    return out
+
+
+def plan_cycle_motion(
+    model: RobotModel,
+    T_world_base: F64,
+    T_flange_tcp: F64,
+    path: CyclePath,
+    q_home: F64,
+    branch: int | None = None,
+) -> tuple[F64, str, Trajectory]:
+    """Return joints at every waypoint (N, dof), the configuration label and the trajectory
+    (`branch`: the arm configuration's IK branch to keep; None: the one nearest home)."""
+    idx = [i for i, w in enumerate(path.waypoints) if w.T_world_tcp is not None]
+    T = np.array([path.waypoints[i].T_world_tcp for i in idx])
+    T_bf = invert_transform(T_world_base) @ T @ invert_transform(T_flange_tcp)
+    labels = [w.label for w in path.waypoints]
+    ik = follow_path(
+        model,
+        T_bf,
+        q_home,
+        labels=[labels[i] for i in idx],
+        what="bending cycle",
+        cost="total",
+        points=T[:, :3, 3],
+        hint="move the press, stack, station or pallet, or change the grasps",
+        branch=branch,
+    )
+    q = np.tile(np.asarray(q_home, float), (len(path.waypoints), 1))
+    q[idx] = ik.q
+    vmax = np.asarray(model.max_velocity, float)
+    speeds = _segment_speeds(q, path, vmax, labels)
+    stops = [i for i, w in enumerate(path.waypoints) if w.stop]
+    traj = smooth_joint_path(
+        q,
+        speeds,
+        model.max_acceleration,
+        model.max_jerk,
+        position_limits=model.limits,
+        exact_stop=stops,
+        labels=labels,
+    )
+    holds = [(i, w.hold) for i, w in enumerate(path.waypoints) if w.hold > 0]
+    return q, ik.configuration, traj.with_holds(holds)
+
+
+@dataclass(eq=False)
+class _PressScene:
+    """Obstacles of the part per press state (the press's moved with the ram, the cell's)."""
+
+    part: SheetMetalPart
+    path: CyclePath
+    cell: CycleCell
+    others: Obstacles
+    press: PressObstacles
+
+    def at(self, station: str, punch_z: float, stop: int, bend: int) -> Obstacles:
+        press = self.cell.press
+        ba = float(self.part.bend_allowances[max(bend, 0)])
+        cut = contact_zone(ba, self.part.thickness, press.tolerance) if bend >= 0 else 0.0
+        gs = self.path.stops[stop] if stop >= 0 else None
+        return merge_obstacles(self.press.at(press.station(station), punch_z, cut, gs), self.others)
+
+
+def _frame_times(traj: Trajectory, dt: float) -> F64:
+    grid = np.arange(0.0, traj.duration, dt)
+    marks = np.asarray(traj.waypoint_times, float)
+    return np.unique(np.concatenate([grid, marks, [traj.duration]]))
+
+
+def check_cycle(
+    part: SheetMetalPart,
+    steps: list[CycleStep],
+    cell: CycleCell,
+    *,
+    model: RobotModel,
+    T_world_base: F64,
+    T_flange_tcp: F64,
+    checker: RobotCollisionChecker,
+    policy: CollisionPolicy,
+    cell_bodies: list[Body],
+    progress: Progress | None = None,
+) -> BendingCycle:
+    """Return the planned and checked cycle of `part` (bends in sequence order) with `steps`.
+
+    `cell_bodies`: the cell's colliding objects other than the press (world frame), for the
+    part's checks; `checker` holds the robot against the cell and the press.
+    """
+    report = progress or (lambda f, m: None)
+    report(0.0, "building the cycle's waypoints")
+    path = cycle_path(part, steps, cell)
+    report(0.1, "inverse kinematics and the jerk-limited trajectory")
+    branch = home_branch(model, cell.q_home)
+    q_wp, label, traj = plan_cycle_motion(
+        model, T_world_base, T_flange_tcp, path, cell.q_home, branch
+    )
+    times = _frame_times(traj, cell.frame_dt)
+    q = traj.at(times)[0]
+    from workbench.sheetmetal.transfer import world_tcp
+
+    T_tcp = world_tcp(model, T_world_base, T_flange_tcp, q)
+    wp_t = np.asarray(traj.waypoint_times, float)
+    arrive = wp_t
+    leave = np.array([traj.waypoint_times[i] + path.waypoints[i].hold for i in range(len(wp_t))])
+    # Hold times shift later waypoints: with_holds already moved waypoint_times; the hold at
+    # waypoint i lasts [arrive[i], arrive[i] + hold].
+    report(0.3, f"checking the part in {len(times)} frames")
+    scene = _PressScene(part, path, cell, cell_obstacles(cell_bodies), PressObstacles(cell.press))
+    states: list[FoldedState] = []
+    T_part = np.zeros((len(times), 4, 4))
+    step = np.zeros(len(times))
+    punch = np.zeros(len(times))
+    stop_idx = np.full(len(times), -1)
+    phase_idx = np.zeros(len(times), dtype=np.int64)
+    obstacles: list[Obstacles] = []
+    press = cell.press
+    open_z = press.ram.open + part.thickness
+    fold_cache: dict[float, FoldedState] = {}
+
+    def fold(s: float) -> FoldedState:
+        key = round(s, 9)
+        if key not in fold_cache:
+            fold_cache[key] = fold_state(part, s, check=False)
+        return fold_cache[key]
+
+    last_stop = -1
+    for n, t in enumerate(times):
+        ph_i = _phase_at(path.phases, arrive, leave, t)
+        ph = path.phases[ph_i]
+        phase_idx[n] = ph_i
+        s_stop = _stop_of(path, ph)
+        if s_stop >= 0:
+            last_stop = s_stop
+        station = ph.station or steps[max(0, min(int(ph.step), len(steps) - 1))].station
+        bend = -1
+        z = open_z
+        s = ph.step
+        if ph.kind == "bend":
+            k = ph.bend
+            bend = k
+            f = _bend_fraction(path, ph, arrive, leave, t, times[n])
+            s = k + f
+            depth = bend_pose(fold(s), k, steps[k].grasp, press, press.station(station)).depth
+            z = part.thickness - depth
+            if f <= 0.0 and _in_first_hold(ph, arrive, leave, t):
+                z = part.thickness  # the ram closes onto the sheet during this hold
+        state = fold(s)
+        if ph.kind == "rest":
+            assert ph.T_world_part is not None
+            Tp = ph.T_world_part
+        elif ph.kind == "bend" and ph.pressed:
+            k = ph.bend
+            bp = bend_pose(state, k, steps[k].grasp, press, press.station(station))
+            Tp = press.T_world_die @ bp.T_die_part
+        else:
+            grasp = ph.grasp or steps[min(int(np.floor(s + 1e-9)), len(steps) - 1)].grasp
+            Tp = T_tcp[n] @ invert_transform(T_part_tcp(part, grasp, s))
+        states.append(state)
+        T_part[n] = Tp
+        step[n] = s
+        punch[n] = z
+        stop_idx[n] = last_stop
+        obstacles.append(scene.at(station, z, last_stop, bend))
+    hits = check_states(states, T_part, obstacles)
+    report(0.55, "checking the robot against the part where it rests")
+    robot_part = _robot_vs_resting_part(checker, path, phase_idx, q, T_part, states)
+    report(0.6, "checking the robot against the cell and the press")
+    robot = check_trajectory(
+        traj, times, q, checker, policy, progress=lambda f, m: report(0.6 + 0.38 * f, m)
+    )
+    frames = CycleFrames(
+        times, q, step, T_part, punch, stop_idx, phase_idx, tuple(hits), tuple(robot_part)
+    )
+    first = _first_problem(path, frames, robot)
+    first_step = None
+    if first is not None:
+        n = int(np.searchsorted(times, first[0], side="right")) - 1
+        ph = path.phases[int(phase_idx[max(n, 0)])]
+        first_step = int(ph.bend) if ph.kind == "bend" else min(int(ph.step), len(steps) - 1)
+    report(1.0, "done")
+    return BendingCycle(
+        part,
+        tuple(steps),
+        path,
+        q_wp,
+        label,
+        traj,
+        frames,
+        robot,
+        None if first is None else first[1],
+        first_step,
+    )
+
+
+def _phase_at(phases: tuple[Phase, ...], arrive: F64, leave: F64, t: float) -> int:
+    """Return the phase running at time t: the last one whose start waypoint was reached."""
+    best = 0
+    for i, ph in enumerate(phases):
+        if arrive[ph.start] - 1e-9 <= t and (t <= arrive[ph.end] + 1e-9 or i == len(phases) - 1):
+            best = i
+            # a phase starting at a waypoint owns the hold there (the gripper acts)
+    return best
+
+
+def _in_first_hold(ph: Phase, arrive: F64, leave: F64, t: float) -> bool:
+    return bool(arrive[ph.start] - 1e-9 <= t <= leave[ph.start] + 1e-9)
+
+
+def _bend_fraction(
+    path: CyclePath, ph: Phase, arrive: F64, leave: F64, t: float, _t: float
+) -> float:
+    """Return how far the bend has gone at time t: by the robot's progress over the bend's
+    waypoints (following), or by the ram's time (the press holds the part)."""
+    fr = path.fractions
+    if ph.pressed:
+        t0 = leave[ph.start] + 0.0
+        wps = path.waypoints
+        # the press bends while the robot stands back: the hold of the waypoint after the stop
+        i_back = ph.start + 1
+        t_a, t_b = arrive[i_back], leave[i_back]
+        del t0, wps
+        if t <= t_a:
+            return 0.0
+        if t >= t_b:
+            return 1.0
+        return float((t - t_a) / max(t_b - t_a, 1e-9))
+    start = leave[ph.start]
+    idx = np.arange(ph.start, ph.start + len(fr))
+    tt = np.concatenate([[start], arrive[idx[1:]]])
+    return float(np.interp(t, tt, fr))
+
+
+def _stop_of(path: CyclePath, ph: Phase) -> int:
+    if ph.stop is None:
+        return -1
+    for i, s in enumerate(path.stops):
+        if s is ph.stop:
+            return i
+    return -1
+
+
+def _robot_vs_resting_part(
+    checker: RobotCollisionChecker,
+    path: CyclePath,
+    phase_idx: NDArray[np.int64],
+    q: F64,
+    T_part: F64,
+    states: list[FoldedState],
+) -> list[str | None]:
+    """Return, per frame, the robot link that touches the resting part (None: free). The tool
+    is left out: it touches the part where it grips it."""
+    out: list[str | None] = [None] * len(q)
+    links = [b.solid for name, b in checker.scene.moving.items() if name != "tool"]
+    scenes: dict[int, CollisionScene] = {}
+    for n in range(len(q)):
+        ph = path.phases[int(phase_idx[n])]
+        if ph.kind != "rest":
+            continue
+        k = int(phase_idx[n])
+        if k not in scenes:
+            mesh = states[n].solid()
+            scenes[k] = CollisionScene(links, [(Solid("part", "mesh", mesh=mesh), T_part[n])])
+        poses = {k2: v for k2, v in checker.world_poses(q[n]).items() if k2 != "tool"}
+        rep = scenes[k].check(poses, distance=False)
+        if rep.colliding:
+            out[n] = rep.colliding[0][0]
+    return out
+
+
+def _first_problem(
+    path: CyclePath, frames: CycleFrames, robot: EnginePathReport
+) -> tuple[float, str] | None:
+    """Return the earliest failure (time [s], in words), or None."""
+    cands: list[tuple[float, str]] = []
+    for n, h in enumerate(frames.part_hits):
+        if h is not None:
+            ph = path.phases[int(frames.phase[n])]
+            cands.append(
+                (
+                    float(frames.times[n]),
+                    f"t = {frames.times[n]:.2f} s ({ph.label}): {h.describe()}",
+                )
+            )
+            break
+    for n, link in enumerate(frames.robot_part_hits):
+        if link is not None:
+            cands.append(
+                (
+                    float(frames.times[n]),
+                    f"t = {frames.times[n]:.2f} s: robot {link} hits the resting part",
+                )
+            )
+            break
+    if not robot.collision_free and robot.first_time is not None:
+        what = (
+            f"robot {robot.link} hits {robot.obstacle!r}"
+            if robot.link
+            else "robot clearance unresolved"
+        )
+        cands.append((float(robot.first_time), f"t = {robot.first_time:.2f} s: {what}"))
+    if not cands:
+        return None
+    return min(cands)

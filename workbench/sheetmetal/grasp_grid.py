@@ -1,0 +1,64 @@
+"""Candidate grasps of a sequence search: a grid of points on every flange, yaws and faces.
+
+SI units. A flange's candidates are its centroid and the points of a square grid of
+`spacing` [m] (aligned with the flange's frame) that lie at least `inset` [m] inside its
+polygon, each with every yaw [rad] and face (+1 top, -1 bottom) asked for. The order is
+fixed (flange, then point, then yaw, then face), so a search is repeatable.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import shapely
+
+from workbench.errors import InputError
+from workbench.sheetmetal.grasp import Grasp
+from workbench.sheetmetal.part import SheetMetalPart
+
+#: Most candidates a search takes (each is checked by IK at every bend it could serve).
+MAX_GRASPS = 2000
+
+
+def grasp_grid(
+    part: SheetMetalPart,
+    *,
+    spacing: float,
+    inset: float,
+    yaws: Sequence[float] = (0.0,),
+    faces: Sequence[int] = (1,),
+    flanges: Sequence[str] | None = None,
+) -> list[Grasp]:
+    """Return the candidate grasps of `part` (see the module docstring).
+
+    InputError when `spacing` is not positive or the grid holds more than `MAX_GRASPS`.
+    """
+    if not (np.isfinite(spacing) and spacing > 0):
+        raise InputError(f"grasp spacing: must be > 0 m, got {spacing!r}")
+    out: list[Grasp] = []
+    names = [f.name for f in part.flanges] if flanges is None else list(flanges)
+    for name in names:
+        poly = part.flanges[part.flange_index(name)].polygon
+        shape = shapely.Polygon(poly)
+        inner = shape.buffer(-inset) if inset > 0 else shape
+        c = shape.centroid
+        points = [(c.x, c.y)]
+        lo, hi = poly.min(axis=0), poly.max(axis=0)
+        xs = np.arange(lo[0] + spacing / 2, hi[0], spacing)
+        ys = np.arange(lo[1] + spacing / 2, hi[1], spacing)
+        for y in ys:
+            for x in xs:
+                if inner.contains(shapely.Point(x, y)) and np.hypot(x - c.x, y - c.y) > 1e-6:
+                    points.append((float(x), float(y)))
+        for p in points:
+            for yaw in yaws:
+                for face in faces:
+                    out.append(Grasp(name, np.array(p), float(yaw), int(face)))  # type: ignore[call-arg]
+    if len(out) > MAX_GRASPS:
+        raise InputError(
+            f"grasp grid: {len(out)} candidates, above {MAX_GRASPS} "
+            "(workbench.sheetmetal.grasp_grid.MAX_GRASPS); widen the spacing or name fewer "
+            "yaws or faces"
+        )
+    return out
