@@ -95,7 +95,9 @@ def _parser() -> argparse.ArgumentParser:
         metavar="RANK",
         help="put the plan of this rank (1 = best) into the project and save it (--out)",
     )
-    sweep.add_argument("--out", help="project JSON to write with --use (default: overwrite PROJECT)")
+    sweep.add_argument(
+        "--out", help="project JSON to write with --use (default: overwrite PROJECT)"
+    )
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
@@ -182,7 +184,9 @@ def _sweep(args: argparse.Namespace) -> int:
             f"{rank}. {' '.join(plan.sequence)}: {plan.regrips} regrip(s), {plan.flips} flip(s),"
             f" cycle {plan.cycle_time:.1f} s{' (estimate)' if plan.estimated else ''}"
         )
-        for b, g, st, o in zip(plan.sequence, plan.grasps, plan.stations, plan.orientations, strict=True):
+        for b, g, st, o in zip(
+            plan.sequence, plan.grasps, plan.stations, plan.orientations, strict=True
+        ):
             print(f"     {b}: grasp {grasp_label(g)}, station {st}, {o}")
     firsts: dict[str, tuple[str, ...]] = {}
     for branch, reason in res.rejected:
@@ -192,7 +196,10 @@ def _sweep(args: argparse.Namespace) -> int:
         print(f"  {' '.join(branch)}: {reason}")
     if args.use is not None:
         if not 1 <= args.use <= len(res.plans):
-            print(f"workbench sweep: error: --use {args.use}: there are {len(res.plans)} plans", file=sys.stderr)
+            print(
+                f"workbench sweep: error: --use {args.use}: there are {len(res.plans)} plans",
+                file=sys.stderr,
+            )
             return 2
         wb.bending.use_plan(res.plans[args.use - 1])
         path = wb.save(args.out or args.project)

@@ -57,7 +57,14 @@ def sweep_context(svc: BendingService) -> SweepContext:
     si = svc.si()
     press = press_of(si)
     setup = wb.setup
-    reach = Reach.of(wb.robot, setup.T_world_base, setup.T_flange_tcp, wb.joints, setup.tool_mesh)
+    reach = Reach.of(
+        wb.robot,
+        setup.T_world_base,
+        setup.T_flange_tcp,
+        wb.joints,
+        setup.tool_mesh,
+        setup.link_meshes,
+    )
     part = svc.part
     grasps = grasp_grid(
         part, spacing=GRASP_SPACING, inset=GRASP_INSET, yaws=GRASP_YAWS, faces=GRASP_FACES
@@ -181,9 +188,13 @@ def search(
             estimated=False,
         )
 
+    def robot_free(q: np.ndarray) -> np.ndarray:
+        return np.array([not wb.checker.check(qi, distance=False).colliding for qi in q])
+
     return find_sequences(
         ctx,
         verify=verify,
+        robot_free=robot_free,
         engine=engine,
         address=address,
         time_limit=time_limit,

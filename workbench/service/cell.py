@@ -79,12 +79,13 @@ def press_cell(press: PressBrake | None) -> list[CellBody]:
         return []
     out = []
     for name, solid, T in robot_obstacles(press):
-        envelope = name.startswith(("ram stroke", "back-gauge"))
+        envelope = name.startswith(("ram stroke", "beam stroke", "back-gauge"))
         color = PRESS_GAUGE if name.startswith("back-gauge") else PRESS_FRAME
         if name.startswith("die"):
             color = PRESS_TOOL
         out.append(CellBody(f"press {name}", solid, T, color, True, "press", not envelope))
     for name, solid, T in press_display_bodies(press):
         color = PRESS_GAUGE if name.startswith("back-gauge") else PRESS_TOOL
+        color = PRESS_FRAME if name == "upper beam" else color
         out.append(CellBody(f"press {name}", solid, T, color, False, "press", True))
     return out

@@ -87,6 +87,7 @@ class Reach:
     configuration: str
     tool_box: OBB | None
     q: F64  # (dof,) [rad] the joints the cycle starts from (home)
+    link_boxes: OBB | None = None  # (L,) each link's box in its own frame (base first)
 
     @classmethod
     def of(
@@ -96,6 +97,7 @@ class Reach:
         T_flange_tcp: F64,
         q: F64,
         tool_mesh: trimesh.Trimesh | None,
+        link_meshes: list[trimesh.Trimesh] | None = None,
     ) -> Reach:
         """Return the reach of a robot whose arm configuration is that of joints `q` (dof,)
         [rad]; the gripper's box is the tool mesh's bounding box in the TCP frame."""
@@ -113,7 +115,15 @@ class Reach:
             v = np.asarray(tool_mesh.vertices, float)
             T_tcp_flange = np.linalg.inv(T_flange_tcp)
             box = OBB.from_points(v @ T_tcp_flange[:3, :3].T + T_tcp_flange[:3, 3])
-        return cls(model, T_world_base, T_flange_tcp, branch, branch_name(model, q), box, q)
+        links = None
+        if link_meshes:
+            boxes = [OBB.from_points(np.asarray(m.vertices, float)) for m in link_meshes]
+            links = OBB(
+                np.array([b.center for b in boxes]),
+                np.array([b.rotation for b in boxes]),
+                np.array([b.half_extents for b in boxes]),
+            )
+        return cls(model, T_world_base, T_flange_tcp, branch, branch_name(model, q), box, q, links)
 
 
 @dataclass(frozen=True, eq=False)
@@ -220,13 +230,19 @@ class BendEval:
         return bool(self.grasp_ok.any())
 
     def reason(self) -> str:
-        """Return the first reason no grasp makes the bend (the most common one)."""
+        """Return why no grasp makes the bend: its most common first reason, with how many
+        grasps it stopped and one of them."""
         if self.problem:
             return self.problem
         found = [r for r in self.grasp_reason if r]
         if not found:
             return "feasible"
-        return max(dict.fromkeys(found), key=found.count)
+        kinds = [_kind(r) for r in found]
+        top = max(dict.fromkeys(kinds), key=kinds.count)
+        example = found[kinds.index(top)]
+        if kinds.count(top) == len(found) and len(found) == 1:
+            return example
+        return f"{example} (and so {kinds.count(top) - 1} more of the {len(found)} grasps)"
 
 
 def fitting_station(press: PressBrake, length: float) -> str:
@@ -436,6 +452,7 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         ]
         speed = _following_speed(ctx, q_f, depth)
         hits = _tool_hits(ctx, tcp, robot_press)
+        arm_hits = _links_hit(ctx, q_f.reshape(-1, dof), robot_press).reshape(nf, n)
         for m, i in enumerate(idx):
             g = ctx.grasps[i]
             label = grasp_label(g)
@@ -469,6 +486,13 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
             if hits[m] or hits[n + m]:
                 when = "at the die" if hits[m] else "at the end of the bend"
                 reasons[i] = f"bend {name!r}: grasp {label}: the gripper hits the press {when}"
+                continue
+            if arm_hits[:, m].any():
+                j = int(np.argmax(arm_hits[:, m]))
+                reasons[i] = (
+                    f"bend {name!r}: grasp {label}: the arm hits the press at "
+                    f"{np.degrees(states_f[j].angles[k]):.0f}° of the bend"
+                )
                 continue
             q_end = q_f[-1]
             ok[i], q0[i], q1[i] = True, q_f[0, m], q_end[m]
@@ -506,6 +530,27 @@ def _aside(ctx: SweepContext, at_stop: F64, at_end: F64, depth: float) -> F64:
     return np.concatenate([before, after])
 
 
+def _links_hit(ctx: SweepContext, q: F64, press_boxes: OBB) -> NDArray[np.bool_]:
+    """Return (N,) whether any link's box at joints q (N, dof) meets the press's boxes (the
+    base excepted: it stands where it stands). Conservative: a link's box holds the link."""
+    boxes = ctx.reach.link_boxes
+    n = len(q)
+    out = np.zeros(n, dtype=bool)
+    ok = np.isfinite(q).all(axis=1)
+    if boxes is None or not ok.any():
+        return out
+    T = ctx.reach.T_world_base @ ctx.reach.model.link_transforms(q[ok])  # (K, L, 4, 4)
+    R = T[:, 1:, :3, :3]
+    placed = OBB(
+        np.einsum("klij,lj->kli", R, boxes.center[1:]) + T[:, 1:, :3, 3],
+        R @ boxes.rotation[1:],
+        np.broadcast_to(boxes.half_extents[1:], R.shape[:2] + (3,)),
+    )
+    hit = obb_overlap(placed.reshape(*R.shape[:2], 1), press_boxes.reshape(1, 1, -1))
+    out[ok] = np.asarray(hit).any(axis=(1, 2))
+    return out
+
+
 def _tool_hits(ctx: SweepContext, T_world_tcp: F64, press_boxes: OBB) -> NDArray[np.bool_]:
     """Return (N,) whether the gripper's box at each TCP pose (N, 4, 4) meets the press."""
     box = ctx.reach.tool_box
@@ -519,6 +564,14 @@ def _tool_hits(ctx: SweepContext, T_world_tcp: F64, press_boxes: OBB) -> NDArray
     )
     hit = obb_overlap(placed.reshape(len(R), 1), press_boxes.reshape(1, -1))
     return np.asarray(np.asarray(hit).any(axis=1), dtype=bool)
+
+
+def _kind(reason: str) -> str:
+    """Return a grasp's reason without the grasp and the numbers (to count alike ones)."""
+    import re
+
+    text = re.sub(r"grasp '[^']*' at [^,]*, yaw [-0-9]+°(, bottom face)?:?", "grasp", reason)
+    return re.sub(r"[-0-9.]+", "#", text)
 
 
 def grasp_label(g: Grasp) -> str:

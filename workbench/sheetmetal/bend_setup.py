@@ -356,9 +356,9 @@ def merge_obstacles(*parts: Obstacles) -> Obstacles:
 
 
 def robot_obstacles(press: PressBrake) -> list[Body]:
-    """Return the press as the robot sees it, in the WORLD frame: frame, bed, dies, and the
-    ram's stroke (every station's punch and the beam over their whole travel, from the die's
-    top to open) and the back-gauge's reach (its fingers' travel) as boxes."""
+    """Return the press as the robot sees it, in the WORLD frame: frame, bed, dies, the
+    ram's stroke (every station's punch, and the upper beam, over their whole travel from
+    closed to open) and the back-gauge's reach (its fingers' travel) as boxes."""
     # One closed prism per die (the robot's distance field needs every body watertight and
     # apart: pieces sharing faces would not be).
     bodies = frame_bodies(press) + [
@@ -373,8 +373,10 @@ def robot_obstacles(press: PressBrake) -> list[Body]:
         )
         for s in press.stations
     ]
+    # the ram's stroke: every station's punch and the beam over it, from the punch tip on
+    # the die's top (closed) to open
+    prof = press.punch.profile
     for s in press.stations:
-        prof = press.punch.profile
         w = float(np.ptp(prof[:, 0]))
         top = press.ram.open + press.punch.height
         bodies.append(
@@ -384,7 +386,17 @@ def robot_obstacles(press: PressBrake) -> list[Body]:
                 make_transform(np.eye(3), [s.x, float(prof[:, 0].mean()), top / 2]),
             )
         )
-    bodies.append(beam_body(press, press.ram.open))
+    beam_closed = beam_body(press, 0.0)[2][2, 3] - press.beam_height / 2
+    half = press.length / 2 + press.frame_gap
+    width = max(float(np.ptp(prof[:, 0])), 0.1)
+    height = press.ram.open + press.beam_height
+    bodies.append(
+        (
+            "beam stroke",
+            Solid("beam stroke", "box", size=(2 * half, width, height)),
+            make_transform(np.eye(3), [0.0, 0.0, beam_closed + height / 2]),
+        )
+    )
     bg = press.backgauge
     d, w, h = bg.finger
     size = (
@@ -407,7 +419,7 @@ def robot_obstacles(press: PressBrake) -> list[Body]:
 def press_display_bodies(press: PressBrake) -> list[Body]:
     """Return the moving press bodies as drawn, in the WORLD frame, ram open and fingers
     parked at the back of their X range: each station's punch (its whole profile), the
-    back-gauge fingers."""
+    upper beam, the back-gauge fingers."""
     T = press.T_world_die
     out: list[Body] = []
     z_open = press.ram.open
@@ -417,6 +429,8 @@ def press_display_bodies(press: PressBrake) -> list[Body]:
         out.append(
             (name, Solid(name, "mesh", mesh=mesh), T @ make_transform(np.eye(3), [0, 0, z_open]))
         )
+    name, solid, T_beam = beam_body(press, z_open)
+    out.append((name, solid, T @ T_beam))
     bg = press.backgauge
     park = GaugeStop(
         bg.x_range[1],

@@ -60,11 +60,13 @@ Progress = Callable[[float, str], None]
 
 @dataclass(frozen=True, eq=False)
 class CycleFrames:
-    """Per checked frame (F,): time [s], joints (F, dof), the part's fold step, its pose
+    """Per checked frame (F,): the following robot's TCP distance [m] from the grasp on the
+    part the press holds (0 outside bends), time [s], joints (F, dof), the part's fold step, its pose
     T_world_part (F, 4, 4) [m], the punch tip's height [m] over the die's top, the
     back-gauge setting (index into the path's stops, -1 none), the phase index, and the
     part's first collision (None: free)."""
 
+    follow_error: F64
     times: F64
     joints: F64
     step: F64
@@ -284,6 +286,7 @@ def check_cycle(
     press = cell.press
     open_z = press.ram.open + part.thickness
     fold_cache: dict[float, FoldedState] = {}
+    follow_error = np.zeros(len(times))
 
     def fold(s: float) -> FoldedState:
         key = round(s, 9)
@@ -306,7 +309,7 @@ def check_cycle(
         if ph.kind == "bend":
             k = ph.bend
             bend = k
-            f = _bend_fraction(path, ph, arrive, leave, t, times[n])
+            f = _bend_fraction(path, ph, arrive, leave, t, q[n], q_wp)
             s = k + f
             depth = bend_pose(fold(s), k, steps[k].grasp, press, press.station(station)).depth
             z = part.thickness - depth
@@ -316,10 +319,15 @@ def check_cycle(
         if ph.kind == "rest":
             assert ph.T_world_part is not None
             Tp = ph.T_world_part
-        elif ph.kind == "bend" and ph.pressed:
+        elif ph.kind == "bend":
+            # the punch and die hold the part in the bend; the following robot is checked
+            # for how far its TCP strays from the grasp on the part (`follow_error`)
             k = ph.bend
             bp = bend_pose(state, k, steps[k].grasp, press, press.station(station))
             Tp = press.T_world_die @ bp.T_die_part
+            if not ph.pressed:
+                T_grip = Tp @ T_part_tcp(part, steps[k].grasp, s)
+                follow_error[n] = float(np.linalg.norm(T_grip[:3, 3] - T_tcp[n][:3, 3]))
         else:
             grasp = ph.grasp or steps[min(int(np.floor(s + 1e-9)), len(steps) - 1)].grasp
             Tp = T_tcp[n] @ invert_transform(T_part_tcp(part, grasp, s))
@@ -337,7 +345,16 @@ def check_cycle(
         traj, times, q, checker, policy, progress=lambda f, m: report(0.6 + 0.38 * f, m)
     )
     frames = CycleFrames(
-        times, q, step, T_part, punch, stop_idx, phase_idx, tuple(hits), tuple(robot_part)
+        follow_error,
+        times,
+        q,
+        step,
+        T_part,
+        punch,
+        stop_idx,
+        phase_idx,
+        tuple(hits),
+        tuple(robot_part),
     )
     first = _first_problem(path, frames, robot)
     first_step = None
@@ -375,27 +392,26 @@ def _in_first_hold(ph: Phase, arrive: F64, leave: F64, t: float) -> bool:
 
 
 def _bend_fraction(
-    path: CyclePath, ph: Phase, arrive: F64, leave: F64, t: float, _t: float
+    path: CyclePath, ph: Phase, arrive: F64, leave: F64, t: float, q_t: F64, q_wp: F64
 ) -> float:
-    """Return how far the bend has gone at time t: by the robot's progress over the bend's
-    waypoints (following), or by the ram's time (the press holds the part)."""
+    """Return how far the bend has gone at time t: by the robot's progress along its
+    following segment (the press keeps pace with the robot: the joints' share of the way
+    from one following waypoint to the next), or by the ram's time when the press holds
+    the part alone."""
     fr = path.fractions
     if ph.pressed:
-        t0 = leave[ph.start] + 0.0
-        wps = path.waypoints
         # the press bends while the robot stands back: the hold of the waypoint after the stop
         i_back = ph.start + 1
         t_a, t_b = arrive[i_back], leave[i_back]
-        del t0, wps
-        if t <= t_a:
-            return 0.0
-        if t >= t_b:
-            return 1.0
-        return float((t - t_a) / max(t_b - t_a, 1e-9))
-    start = leave[ph.start]
-    idx = np.arange(ph.start, ph.start + len(fr))
-    tt = np.concatenate([[start], arrive[idx[1:]]])
-    return float(np.interp(t, tt, fr))
+        return float(np.clip((t - t_a) / max(t_b - t_a, 1e-9), 0.0, 1.0))
+    if t <= leave[ph.start]:
+        return 0.0
+    idx = ph.start + np.arange(len(fr))
+    k = int(np.clip(np.searchsorted(arrive[idx[1:]], t, side="right"), 0, len(fr) - 2))
+    a, b = q_wp[idx[k]], q_wp[idx[k + 1]]
+    span = float(np.linalg.norm(b - a))
+    share = 1.0 if span < 1e-12 else float(np.clip(np.dot(q_t - a, b - a) / span**2, 0.0, 1.0))
+    return float(fr[k] + share * (fr[k + 1] - fr[k]))
 
 
 def _stop_of(path: CyclePath, ph: Phase) -> int:
@@ -435,11 +451,29 @@ def _robot_vs_resting_part(
     return out
 
 
+#: How far [m] the following robot's TCP may stray from the grasp on the part the press
+#: holds (the gripper's compliance); more is a problem of the plan.
+FOLLOW_TOLERANCE = 0.002
+
+
 def _first_problem(
     path: CyclePath, frames: CycleFrames, robot: EnginePathReport
 ) -> tuple[float, str] | None:
     """Return the earliest failure (time [s], in words), or None."""
     cands: list[tuple[float, str]] = []
+    lag = np.flatnonzero(frames.follow_error > FOLLOW_TOLERANCE)
+    if len(lag):
+        n = int(lag[0])
+        ph = path.phases[int(frames.phase[n])]
+        cands.append(
+            (
+                float(frames.times[n]),
+                f"t = {frames.times[n]:.2f} s ({ph.label}): the robot strays "
+                f"{frames.follow_error[n] * 1e3:.1f} mm from the flange it follows (more than "
+                f"FOLLOW_TOLERANCE {FOLLOW_TOLERANCE * 1e3:g} mm); more following waypoints "
+                "or a slower bend",
+            )
+        )
     for n, h in enumerate(frames.part_hits):
         if h is not None:
             ph = path.phases[int(frames.phase[n])]

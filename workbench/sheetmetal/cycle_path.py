@@ -37,9 +37,12 @@ from workbench.sheetmetal.press import PressBrake, ram_time
 F64 = NDArray[np.float64]
 
 
+#: How high [m] over the die the part slides in before it is put down on it.
+DROP = 0.005
+
 #: Bend-following waypoints per bend: the robot's IK is solved at each (the search checks
 #: the same fractions).
-FOLLOW_STEPS = 8
+FOLLOW_STEPS = 24
 
 
 def follow_fractions(steps: int = FOLLOW_STEPS) -> NDArray[np.float64]:
@@ -55,7 +58,8 @@ class CycleCell:
     die-frame `approach` offset (3,) and the `lift` [m] at the stack, station and pallet;
     `follow`; home joints (dof,); the gripper's settle times [s] after closing (`settle`) and
     opening (`release`); bend-following waypoints
-    per bend (`follow_steps`) and the checked frames' spacing `frame_dt` [s]."""
+    per bend (`follow_steps`), the checked frames' spacing `frame_dt` [s] and the spacing
+    [m] of the IK waypoints of the straight moves onto the die and out (`line_step`)."""
 
     press: PressBrake
     T_world_blank: F64
@@ -70,6 +74,7 @@ class CycleCell:
     release: float = 0.3
     follow_steps: int = FOLLOW_STEPS
     frame_dt: float = 0.05
+    line_step: float = 0.01
 
 
 @dataclass(frozen=True)
@@ -174,6 +179,16 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     stops: list[GaugeStop] = []
 
     def add(w: Waypoint) -> int:
+        """Append `w`; a vertical move (lift) from the previous TCP pose goes straight, by IK
+        waypoints every `line_step` (the part is near a table)."""
+        prev = wps[-1].T_world_tcp if wps else None
+        if prev is not None and w.T_world_tcp is not None:
+            d = w.T_world_tcp[:3, 3] - prev[:3, 3]
+            vertical = np.linalg.norm(d[:2]) < 1e-9 and abs(d[2]) > 1e-9
+            if vertical and np.allclose(prev[:3, :3], w.T_world_tcp[:3, :3]):
+                step = min(cell.line_step, abs(d[2]) / 5)
+                for j, T in enumerate(_line(prev, w.T_world_tcp, step)[1:-1]):
+                    wps.append(Waypoint(T, f"{w.label} ({j + 1})"))
         wps.append(w)
         return len(wps) - 1
 
@@ -181,10 +196,11 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     g0 = steps[0].grasp
     T_blank_tcp = cell.T_world_blank @ T_part_tcp(part, g0, 0)
     phases.append(Phase("rest", 0, 2, 0.0, None, cell.T_world_blank, label="blank on the stack"))
-    add(Waypoint(_lift(T_blank_tcp, lift), "above the blank"))
+    add(Waypoint(_lift(T_blank_tcp, lift), "above the blank", stop=True))
     i_pick = add(
         Waypoint(T_blank_tcp, "pick the blank", stop=True, hold=cell.settle, action="grip")
     )
+    add(Waypoint(_lift(T_blank_tcp, lift), "lift the blank off the stack"))
     start = i_pick
     prev: Grasp | None = g0
     ram = press.ram
@@ -241,11 +257,14 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         ]
         close = ram.open / ram.approach_speed
         opening = (ram.open + poses[-1].depth) / ram.return_speed
-        add(
-            Waypoint(
-                _shift(tcp[0], R_wd, cell.approach), f"in front of the die for bend {st.bend!r}"
-            )
-        )
+        # In front of the die, over to just above the stop, then straight down onto the die
+        # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
+        front = _shift(tcp[0], R_wd, cell.approach)
+        over = _shift(tcp[0], R_wd, np.array([0.0, 0.0, DROP]))
+        add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True))
+        for j, T in enumerate(_line(front, over, cell.line_step)[1:]):
+            add(Waypoint(T, f"onto the die for bend {st.bend!r} ({j + 1})"))
+        wps[-1] = Waypoint(over, f"over the stop for bend {st.bend!r}", stop=True)
         i_stop = add(Waypoint(tcp[0], f"bend {st.bend!r} against the back-gauge", stop=True))
         phases.append(
             Phase(
@@ -338,8 +357,12 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             )
             del i_back
         up = _shift(tcp[-1], R_wd, np.array([0.0, 0.0, cell.approach[2] + poses[-1].depth]))
-        add(Waypoint(up, f"lift out of the die after bend {st.bend!r}"))
+        for j, T in enumerate(_line(tcp[-1], up, cell.line_step)[1:-1]):
+            add(Waypoint(T, f"out of the die after bend {st.bend!r} ({j + 1})"))
+        add(Waypoint(up, f"lift out of the die after bend {st.bend!r}", stop=True))
         out = _shift(up, R_wd, np.array([0.0, cell.approach[1], 0.0]))
+        for j, T in enumerate(_line(up, out, cell.line_step)[1:-1]):
+            add(Waypoint(T, f"back from the die after bend {st.bend!r} ({j + 1})"))
         add(Waypoint(out, f"pull back from the die after bend {st.bend!r}"))
         start = i_end
         prev = g
@@ -369,6 +392,18 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     )
     phases.sort(key=lambda p: (p.start, p.end))
     return CyclePath(tuple(wps), tuple(phases), fr, tuple(bend_poses), tuple(stops))
+
+
+def _line(T_a: F64, T_b: F64, step: float) -> list[F64]:
+    """Return poses from T_a to T_b (same orientation) every `step` [m] or less, ends included:
+    a straight move near the tools is followed by IK waypoints, not left to the joints."""
+    n = max(1, int(np.ceil(np.linalg.norm(T_b[:3, 3] - T_a[:3, 3]) / step)))
+    out = []
+    for f in np.linspace(0.0, 1.0, n + 1):
+        T = T_a.copy()
+        T[:3, 3] = (1 - f) * T_a[:3, 3] + f * T_b[:3, 3]
+        out.append(T)
+    return out
 
 
 def _tz(dz: float) -> F64:

@@ -201,6 +201,32 @@ def _child(node: _Node, bend: int, e: BendEval, ctx: SweepContext, s: SearchSett
     return _Node((*node.prefix, bend), cost, up, e.q1, prev, node, e)
 
 
+def _no_grasp(bend: str, first: bool) -> str:
+    """Return why no grasp carries on with `bend` although some make it."""
+    if first:
+        return (
+            f"bend {bend!r}: no grasp that makes it also picks the blank off its stack "
+            "(bending.blank) reachable and collision-free"
+        )
+    return (
+        f"bend {bend!r}: no grasp that makes it goes on from the bends before: the same grasp "
+        "cannot make it, and no regrip is possible (both grasps must reach the part on the "
+        "regrip station, bending.regrip)"
+    )
+
+
+def _free(
+    robot_free: Callable[[F64], NDArray[np.bool_]], q: F64, ok: NDArray[np.bool_]
+) -> NDArray[np.bool_]:
+    """Return (G,) True where the robot at `q` (G, dof) is collision-free (only `ok` ones
+    are checked; the others stay False)."""
+    out = np.zeros(len(q), dtype=bool)
+    idx = np.flatnonzero(ok)
+    if len(idx):
+        out[idx] = robot_free(q[idx])
+    return out
+
+
 def _rechain(
     node: _Node,
     banned: frozenset[tuple[int, int]],
@@ -289,15 +315,21 @@ def find_sequences(
     progress: Progress | None = None,
     cancel: Callable[[], bool] | None = None,
     settings: SearchSettings | None = None,
+    robot_free: Callable[[F64], NDArray[np.bool_]] | None = None,
 ) -> SearchResult:
     """Return ranked feasible plans of the part in `ctx` (see the module docstring).
+
+    robot_free(q) (N,) says which joint vectors (N, dof) are collision-free (robot against
+    itself and the cell); the grasps at the blank stack and the pallet are checked with it.
 
     verify(plan) returns the plan with its planned cycle (verified) or the reason the full
     cycle fails; None keeps the cheap stage's verdict. `time_limit` [s] (None: none) stops
     the search and returns what was found, with a note; `cancel()` True stops it too.
     """
     with engine_session(engine, address):
-        return _search(ctx, verify, engine, address, time_limit, progress, cancel, settings)
+        return _search(
+            ctx, verify, engine, address, time_limit, progress, cancel, settings, robot_free
+        )
 
 
 def _search(
@@ -309,6 +341,7 @@ def _search(
     progress: Progress | None,
     cancel: Callable[[], bool] | None,
     settings: SearchSettings | None,
+    robot_free: Callable[[F64], NDArray[np.bool_]] | None,
 ) -> SearchResult:
     s = settings or SearchSettings()
     if time_limit is not None and not (np.isfinite(time_limit) and time_limit > 0):
@@ -340,9 +373,13 @@ def _search(
     at_blank, q_blank = np.ones(G, bool), np.full((G, dof), np.nan)
     if ctx.T_world_blank is not None:
         at_blank, q_blank = reach_where_part_rests(ctx, ctx.T_world_blank, 0)
+        if robot_free is not None:
+            at_blank &= _free(robot_free, q_blank, at_blank)
     at_pallet, q_pallet = np.ones(G, bool), np.full((G, dof), np.nan)
     if ctx.T_world_pallet is not None:
         at_pallet, q_pallet = reach_where_part_rests(ctx, ctx.T_world_pallet, nb)
+        if robot_free is not None:
+            at_pallet &= _free(robot_free, q_pallet, at_pallet)
     vmax = ctx.reach.model.max_velocity
 
     def finish(node: _Node) -> None:
@@ -476,11 +513,20 @@ def _search(
                     rejected.append((branch, e.reason()))
                     continue
                 child = _child(n, b, e, ctx, s)
+                if not np.isfinite(child.cost).any():
+                    rejected.append((branch, _no_grasp(names[b], not n.prefix)))
+                    continue
                 if len(child.prefix) == nb:
                     finish(child)
-                if not np.isfinite(child.cost).any():
-                    rejected.append((branch, e.reason()))
-                    continue
+                    if not np.isfinite(child.cost).any():
+                        rejected.append(
+                            (
+                                branch,
+                                f"bend {names[b]!r}: no grasp that makes it also puts the part "
+                                "on the pallet (bending.pallet) reachable and collision-free",
+                            )
+                        )
+                        continue
                 counter += 1
                 heapq.heappush(heap, (key(child), counter, child))
     runs = tally.runs
