@@ -10,14 +10,15 @@ from __future__ import annotations
 
 import uuid
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from workbench.errors import InputError
 from workbench.project.bending import BendingSI, BendStepSI
+from workbench.sheetmetal.airbend import short_flanges
 from workbench.sheetmetal.bend_eval import Reach, SweepContext, fitting_station
-from workbench.sheetmetal.cycle import BendingCycle, check_cycle
+from workbench.sheetmetal.cycle import BendingCycle, PartScene, check_cycle
 from workbench.sheetmetal.cycle_path import CycleCell, CycleStep
 from workbench.sheetmetal.grasp_grid import grasp_grid
 from workbench.sheetmetal.press import PressBrake
@@ -51,11 +52,21 @@ def press_of(si: BendingSI) -> PressBrake:
     return si.press
 
 
+def checked_press(svc: BendingService) -> PressBrake:
+    """Return the press after the part's fit on its die: InputError naming each flange too
+    short to bridge the V-opening."""
+    press = press_of(svc.si())
+    problems = short_flanges(svc.part, press.die.v_opening)
+    if problems:
+        raise InputError("; ".join(problems))
+    return press
+
+
 def sweep_context(svc: BendingService) -> SweepContext:
     """Return the search's context: the part, press, cell, robot and candidate grasps."""
     wb = svc.wb
     si = svc.si()
-    press = press_of(si)
+    press = checked_press(svc)
     setup = wb.setup
     reach = Reach.of(
         wb.robot,
@@ -88,7 +99,7 @@ def cycle_cell(svc: BendingService) -> CycleCell:
     """Return the cycle's cell from the project: press, stack, station, pallet, transfer."""
     si = svc.si()
     return CycleCell(
-        press_of(si),
+        checked_press(svc),
         si.blank,
         si.regrip,
         si.transfer.T_world_pallet,
@@ -188,8 +199,15 @@ def search(
             estimated=False,
         )
 
-    def robot_free(q: np.ndarray) -> np.ndarray:
-        return np.array([not wb.checker.check(qi, distance=False).colliding for qi in q])
+    def robot_free(q: np.ndarray, lying: tuple[Any, np.ndarray] | None) -> np.ndarray:
+        scene = None if lying is None else PartScene(wb.checker, *lying)
+        return np.array(
+            [
+                not wb.checker.check(qi, distance=False).colliding
+                and (scene is None or scene.link_hit(qi) is None)
+                for qi in q
+            ]
+        )
 
     return find_sequences(
         ctx,

@@ -27,10 +27,15 @@ V-opening for cold-rolled mild steel (15-17 %), 20-22 % for 304 stainless, 13-15
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
+
+if TYPE_CHECKING:
+    from workbench.sheetmetal.part import SheetMetalPart
 
 #: Inner radius / V-opening in air bending for cold-rolled mild steel (Benson's 20 % rule).
 AIR_BEND_RATIO = 0.16
@@ -87,3 +92,26 @@ def punch_height(
     return float(thickness) - apex_depth(  # type: ignore[no-any-return]
         bend_angle, inner_radius, thickness, v_opening, shoulder_radius
     )
+
+
+def short_flanges(part: SheetMetalPart, v_opening: float) -> list[str]:
+    """Return a message per flange too short to bridge the V-die: a flange next to a bend must
+    reach at least V/2 from the bend line to lie on the die's far shoulder (else it drops
+    into the V). Measured in the flange's plane, perpendicular to the bend line."""
+    out = []
+    for b in part.bends:
+        for f, e in ((b.parent, b.parent_edge), (b.child, b.child_edge)):
+            poly = part.flanges[f].polygon
+            a, c = poly[e], poly[(e + 1) % len(poly)]
+            d = (c - a) / np.linalg.norm(c - a)
+            inward = np.array([-d[1], d[0]])  # CCW polygon: the interior is to the left
+            reach = float(np.max((poly - a) @ inward))
+            if reach < v_opening / 2 - 1e-9:
+                out.append(
+                    f"bend {b.name!r}: flange {part.flanges[f].name!r} reaches "
+                    f"{reach * 1e3:.1f} mm from the bend line; the die's V-opening is "
+                    f"{v_opening * 1e3:g} mm, so a flange must reach at least V/2 = "
+                    f"{v_opening * 1e3 / 2:g} mm to lie on both shoulders: use a narrower die "
+                    "(bending.press.die.v_opening) or a longer flange"
+                )
+    return out

@@ -45,7 +45,7 @@ from workbench.sheetmetal.bend_setup import (
     part_points,
     robot_obstacles,
 )
-from workbench.sheetmetal.cycle_path import follow_fractions
+from workbench.sheetmetal.cycle_path import clear_of_tools, follow_fractions
 from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
@@ -434,7 +434,12 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         tcp = np.concatenate([tcp_f[:n], tcp_f[-n:]])  # at the stop, at the end of the bend
         # the moves in and out of the die: in front of the stop, and lifted out and pulled
         # back after the bend (the cycle's waypoints; `cycle_path`)
-        aside = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth)
+        pts = [part_points(follow[j]) for j in (0, -1)]
+        pts_die = tuple(
+            (along[j] @ np.c_[p, np.ones(len(p))].T).T[:, :3]
+            for j, p in zip((0, -1), pts, strict=True)
+        )
+        aside = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth, pts_die)  # type: ignore[arg-type]
         reach, q = _reach(ctx, np.concatenate([tcp_f, aside]))
         reach_f = reach[: nf * n].reshape(nf, n)
         q_f = q[: nf * n].reshape(nf, n, dof)
@@ -515,18 +520,23 @@ def _following_speed(ctx: SweepContext, q: F64, depth: list[float]) -> F64:
     return np.nan_to_num(ratio, nan=np.inf).max(axis=(0, 2))  # type: ignore[no-any-return]
 
 
-def _aside(ctx: SweepContext, at_stop: F64, at_end: F64, depth: float) -> F64:
+def _aside(
+    ctx: SweepContext, at_stop: F64, at_end: F64, depth: float, points: tuple[F64, F64]
+) -> F64:
     """Return the TCP poses in front of the die (before the stop) and lifted out and pulled
     back after the bend (2N, 4, 4), as `cycle_path` moves them: the approach offset (die
-    frame) from the stop; up by its z plus the depth, back by its y, from the end."""
+    frame, its y far enough for the whole part, `cycle_path.clear_of_tools`, from the part's
+    points (P, 3) in the die frame at the stop and at the end) from the stop; up by its z
+    plus the depth, back by its y, from the end."""
     if ctx.approach is None:
         return np.concatenate([at_stop, at_end])
     R = ctx.press.T_world_die[:3, :3]
-    a = np.asarray(ctx.approach, float)
+    a0 = clear_of_tools(ctx.approach, points[0])
+    a1 = clear_of_tools(ctx.approach, points[1])
     before = at_stop.copy()
-    before[:, :3, 3] += R @ a
+    before[:, :3, 3] += R @ a0
     after = at_end.copy()
-    after[:, :3, 3] += R @ np.array([0.0, a[1], a[2] + depth])
+    after[:, :3, 3] += R @ np.array([0.0, a1[1], a1[2] + depth])
     return np.concatenate([before, after])
 
 

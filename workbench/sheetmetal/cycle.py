@@ -20,6 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
+import trimesh
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.engine import EnginePathReport
@@ -434,21 +435,32 @@ def _robot_vs_resting_part(
     """Return, per frame, the robot link that touches the resting part (None: free). The tool
     is left out: it touches the part where it grips it."""
     out: list[str | None] = [None] * len(q)
-    links = [b.solid for name, b in checker.scene.moving.items() if name != "tool"]
-    scenes: dict[int, CollisionScene] = {}
+    scenes: dict[int, PartScene] = {}
     for n in range(len(q)):
         ph = path.phases[int(phase_idx[n])]
         if ph.kind != "rest":
             continue
         k = int(phase_idx[n])
         if k not in scenes:
-            mesh = states[n].solid()
-            scenes[k] = CollisionScene(links, [(Solid("part", "mesh", mesh=mesh), T_part[n])])
-        poses = {k2: v for k2, v in checker.world_poses(q[n]).items() if k2 != "tool"}
-        rep = scenes[k].check(poses, distance=False)
-        if rep.colliding:
-            out[n] = rep.colliding[0][0]
+            scenes[k] = PartScene(checker, states[n].solid(), T_part[n])
+        out[n] = scenes[k].link_hit(q[n])
     return out
+
+
+class PartScene:
+    """The robot's links (the tool left out: it touches the part where it grips it) against
+    a part resting at a pose: `link_hit(q)` names the first link that touches it."""
+
+    def __init__(self, checker: RobotCollisionChecker, mesh: trimesh.Trimesh, T_world: F64) -> None:
+        self.checker = checker
+        links = [b.solid for name, b in checker.scene.moving.items() if name != "tool"]
+        self.scene = CollisionScene(links, [(Solid("part", "mesh", mesh=mesh), T_world)])
+
+    def link_hit(self, q: F64) -> str | None:
+        """Return the first link touching the part at joints `q` (dof,) [rad], or None."""
+        poses = {k: v for k, v in self.checker.world_poses(q).items() if k != "tool"}
+        rep = self.scene.check(poses, distance=False)
+        return rep.colliding[0][0] if rep.colliding else None
 
 
 #: How far [m] the following robot's TCP may stray from the grasp on the part the press

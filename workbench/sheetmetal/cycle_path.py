@@ -59,7 +59,9 @@ class CycleCell:
     `follow`; home joints (dof,); the gripper's settle times [s] after closing (`settle`) and
     opening (`release`); bend-following waypoints
     per bend (`follow_steps`), the checked frames' spacing `frame_dt` [s] and the spacing
-    [m] of the IK waypoints of the straight moves onto the die and out (`line_step`)."""
+    [m] of the IK waypoints of the straight moves onto the die and out (`line_step`);
+    `via_home`: the moves between the stack, the die, the regrip station and the pallet
+    pass through the home joints (a safe pose: no transit planner)."""
 
     press: PressBrake
     T_world_blank: F64
@@ -75,6 +77,7 @@ class CycleCell:
     follow_steps: int = FOLLOW_STEPS
     frame_dt: float = 0.05
     line_step: float = 0.01
+    via_home: bool = True
 
 
 @dataclass(frozen=True)
@@ -211,6 +214,8 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             # Regrip: put the part down at the station, take it again at the new grasp.
             T_rest = cell.T_world_regrip
             T_put = T_rest @ T_part_tcp(part, prev, k)
+            if cell.via_home:
+                add(Waypoint(None, f"via home to the regrip station (before bend {st.bend!r})"))
             add(Waypoint(_lift(T_put, lift), f"above the regrip station (before bend {st.bend!r})"))
             i_put = add(
                 Waypoint(
@@ -244,10 +249,11 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         states = [fold_state(part, k + f, check=False) for f in fr]
         poses = tuple(bend_pose(s, k, g, press, station) for s in states)
         bend_poses.append(poses)
-        pts = part_points(states[0])
-        stop = gauge_stop(
-            (poses[0].T_die_part @ np.c_[pts, np.ones(len(pts))].T).T[:, :3], press, station
-        )
+        pts_die = [
+            (p.T_die_part @ np.c_[pts, np.ones(len(pts))].T).T[:, :3]
+            for p, pts in ((poses[0], part_points(states[0])), (poses[-1], part_points(states[-1])))
+        ]
+        stop = gauge_stop(pts_die[0], press, station)
         if stop.problem is not None:
             raise InputError(f"bend {st.bend!r}: {stop.problem}")
         stops.append(stop)
@@ -259,7 +265,12 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         opening = (ram.open + poses[-1].depth) / ram.return_speed
         # In front of the die, over to just above the stop, then straight down onto the die
         # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
-        front = _shift(tcp[0], R_wd, cell.approach)
+        if cell.via_home and wps[-1].label.startswith(("lift the blank", "off the regrip")):
+            add(Waypoint(None, f"via home to the die for bend {st.bend!r}"))
+        # in front: the approach offset, or farther until the whole part is in front of the
+        # punch and beam (`CLEAR` before the bend line), so the moves to and from it do not
+        # sweep the part through the press
+        front = _shift(tcp[0], R_wd, clear_of_tools(cell.approach, pts_die[0]))
         over = _shift(tcp[0], R_wd, np.array([0.0, 0.0, DROP]))
         add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True))
         for j, T in enumerate(_line(front, over, cell.line_step)[1:]):
@@ -360,7 +371,8 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         for j, T in enumerate(_line(tcp[-1], up, cell.line_step)[1:-1]):
             add(Waypoint(T, f"out of the die after bend {st.bend!r} ({j + 1})"))
         add(Waypoint(up, f"lift out of the die after bend {st.bend!r}", stop=True))
-        out = _shift(up, R_wd, np.array([0.0, cell.approach[1], 0.0]))
+        back = clear_of_tools(cell.approach, pts_die[-1])
+        out = _shift(up, R_wd, np.array([0.0, back[1], 0.0]))
         for j, T in enumerate(_line(up, out, cell.line_step)[1:-1]):
             add(Waypoint(T, f"back from the die after bend {st.bend!r} ({j + 1})"))
         add(Waypoint(out, f"pull back from the die after bend {st.bend!r}"))
@@ -370,6 +382,8 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     for i, T in enumerate(cell.T_world_vias):
         add(Waypoint(T, f"transfer via {i + 1}"))
     T_drop = cell.T_world_pallet @ T_part_tcp(part, g_last, nb)
+    if cell.via_home and not len(cell.T_world_vias):
+        add(Waypoint(None, "via home to the pallet"))
     add(Waypoint(_lift(T_drop, lift), "above the pallet"))
     i_drop = add(
         Waypoint(
@@ -392,6 +406,19 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     )
     phases.sort(key=lambda p: (p.start, p.end))
     return CyclePath(tuple(wps), tuple(phases), fr, tuple(bend_poses), tuple(stops))
+
+
+#: How far [m] in front of the bend line the part's rearmost point must be before the
+#: robot moves it anywhere but straight in or out (the punch and the beam over it).
+CLEAR = 0.06
+
+
+def clear_of_tools(approach: F64, points_die: F64) -> F64:
+    """Return the approach offset (3,) [m] (die frame), its y made far enough in front that
+    the part's points (P, 3) [m] in the die frame, moved by it, lie `CLEAR` before the line."""
+    out = np.asarray(approach, float).copy()
+    out[1] = min(out[1], -(float(points_die[:, 1].max()) + CLEAR))
+    return out
 
 
 def _line(T_a: F64, T_b: F64, step: float) -> list[F64]:

@@ -29,6 +29,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
 import numpy as np
+import trimesh
 from numpy.typing import NDArray
 
 from workbench.batch import BatchStats, engine_session, run_batches
@@ -40,6 +41,7 @@ from workbench.sheetmetal.bend_eval import (
     grasp_label,
     reach_where_part_rests,
 )
+from workbench.sheetmetal.folding import fold_state
 from workbench.sheetmetal.grasp import Grasp
 
 F64 = NDArray[np.float64]
@@ -215,15 +217,20 @@ def _no_grasp(bend: str, first: bool) -> str:
     )
 
 
+RobotFree = Callable[[F64, "tuple[trimesh.Trimesh, F64] | None"], NDArray[np.bool_]]
+"""robot_free(q, lying) (N,): which joint vectors (N, dof) are collision-free, the robot
+against itself and the cell and, given `lying` = (mesh, T_world), its links against that part."""
+
+
 def _free(
-    robot_free: Callable[[F64], NDArray[np.bool_]], q: F64, ok: NDArray[np.bool_]
+    robot_free: RobotFree, q: F64, ok: NDArray[np.bool_], lying: tuple[trimesh.Trimesh, F64]
 ) -> NDArray[np.bool_]:
     """Return (G,) True where the robot at `q` (G, dof) is collision-free (only `ok` ones
     are checked; the others stay False)."""
     out = np.zeros(len(q), dtype=bool)
     idx = np.flatnonzero(ok)
     if len(idx):
-        out[idx] = robot_free(q[idx])
+        out[idx] = robot_free(q[idx], lying)
     return out
 
 
@@ -315,12 +322,12 @@ def find_sequences(
     progress: Progress | None = None,
     cancel: Callable[[], bool] | None = None,
     settings: SearchSettings | None = None,
-    robot_free: Callable[[F64], NDArray[np.bool_]] | None = None,
+    robot_free: RobotFree | None = None,
 ) -> SearchResult:
     """Return ranked feasible plans of the part in `ctx` (see the module docstring).
 
-    robot_free(q) (N,) says which joint vectors (N, dof) are collision-free (robot against
-    itself and the cell); the grasps at the blank stack and the pallet are checked with it.
+    robot_free(q, lying) (`RobotFree`) says which joint vectors are collision-free; the
+    grasps at the blank stack and the pallet are checked with it (the part lying there).
 
     verify(plan) returns the plan with its planned cycle (verified) or the reason the full
     cycle fails; None keeps the cheap stage's verdict. `time_limit` [s] (None: none) stops
@@ -341,7 +348,7 @@ def _search(
     progress: Progress | None,
     cancel: Callable[[], bool] | None,
     settings: SearchSettings | None,
-    robot_free: Callable[[F64], NDArray[np.bool_]] | None,
+    robot_free: RobotFree | None,
 ) -> SearchResult:
     s = settings or SearchSettings()
     if time_limit is not None and not (np.isfinite(time_limit) and time_limit > 0):
@@ -374,12 +381,14 @@ def _search(
     if ctx.T_world_blank is not None:
         at_blank, q_blank = reach_where_part_rests(ctx, ctx.T_world_blank, 0)
         if robot_free is not None:
-            at_blank &= _free(robot_free, q_blank, at_blank)
+            lying = (fold_state(part, 0, check=False).solid(), ctx.T_world_blank)
+            at_blank &= _free(robot_free, q_blank, at_blank, lying)
     at_pallet, q_pallet = np.ones(G, bool), np.full((G, dof), np.nan)
     if ctx.T_world_pallet is not None:
         at_pallet, q_pallet = reach_where_part_rests(ctx, ctx.T_world_pallet, nb)
         if robot_free is not None:
-            at_pallet &= _free(robot_free, q_pallet, at_pallet)
+            lying = (fold_state(part, nb, check=False).solid(), ctx.T_world_pallet)
+            at_pallet &= _free(robot_free, q_pallet, at_pallet, lying)
     vmax = ctx.reach.model.max_velocity
 
     def finish(node: _Node) -> None:
