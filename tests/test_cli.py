@@ -57,3 +57,41 @@ def test_serve_on_busy_port_fails_clearly() -> None:
     assert res.returncode == 2
     assert f"cannot listen on 127.0.0.1:{port}" in res.stderr and "--port" in res.stderr
     assert "Traceback" not in res.stderr
+
+
+def _closed_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def test_sweep_bending_prints_ranked_plans_and_first_reasons(tmp_path: Path) -> None:
+    # The U-channel's known-bad order (the tall flange first) is rejected naming the punch;
+    # the figures line names the engine. The plans printed are the service's.
+    from workbench import Workbench
+
+    res = run("sweep", "bending", "projects/u_channel_cell.json", timeout=600)
+    assert res.returncode in (0, 1), res.stderr
+    assert "Traceback" not in res.stderr
+    assert "(serial, 1 worker(s)" in res.stdout
+    assert "bA bB: bend 'bB': flange 'A' hits the punch" in res.stdout
+    plans = Workbench.open(ROOT / "projects/u_channel_cell.json").bending.find_sequences().plans
+    for rank, plan in enumerate(plans, 1):
+        assert f"{rank}. {' '.join(plan.sequence)}: {plan.regrips} regrip(s)" in res.stdout
+    assert res.returncode == (0 if plans else 1)
+
+
+def test_sweep_with_a_ray_address_that_does_not_answer_names_it() -> None:
+    addr = f"127.0.0.1:{_closed_port()}"
+    res = run(
+        "sweep", "bending", "projects/u_channel_cell.json", "--engine", "ray", "--address", addr
+    )
+    assert res.returncode == 2, res.stdout
+    assert "Traceback" not in res.stderr
+    assert addr in res.stderr
+
+
+def test_sweep_needs_a_press() -> None:
+    res = run("sweep", "bending", "projects/bending_cell.json")
+    assert res.returncode == 2
+    assert "bending.press: the project has no press brake model" in res.stderr

@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+from workbench.sheetmetal.airbend import AIR_BEND_RATIO, air_bend_radius, apex_depth, short_flanges
+from workbench.sheetmetal.bend_eval import BendEval, Reach, SweepContext, evaluate_batch
+from workbench.sheetmetal.bend_setup import BendPose, GaugeStop, bend_pose, gauge_stop
 from workbench.sheetmetal.check_cost import CheckCost
+from workbench.sheetmetal.cycle import BendingCycle, check_cycle
+from workbench.sheetmetal.cycle_path import CycleCell, CycleStep
 from workbench.sheetmetal.die import (
     Die,
     DiePlacement,
@@ -31,7 +36,24 @@ from workbench.sheetmetal.plan import (
     playback,
     robot_frames,
 )
+from workbench.sheetmetal.press import (
+    BackGauge,
+    DieTool,
+    PressBrake,
+    Punch,
+    Ram,
+    Station,
+    punch_profile,
+    ram_time,
+)
 from workbench.sheetmetal.sequence import check_sequence, sequence_problem
+from workbench.sheetmetal.sequencing import (
+    SearchResult,
+    SearchSettings,
+    SearchStats,
+    SequencePlan,
+    find_sequences,
+)
 from workbench.sheetmetal.transfer import (
     Transfer,
     base_flange_poses,
@@ -45,7 +67,36 @@ from workbench.sheetmetal.transfer import (
 # that name would hide the module from `import workbench.sheetmetal.check_cost as m`.
 
 __all__ = [
+    "AIR_BEND_RATIO",
+    "BackGauge",
     "Bend",
+    "BendEval",
+    "BendPose",
+    "BendingCycle",
+    "CycleCell",
+    "CycleStep",
+    "DieTool",
+    "GaugeStop",
+    "PressBrake",
+    "Punch",
+    "Ram",
+    "Reach",
+    "SearchResult",
+    "SearchSettings",
+    "SearchStats",
+    "SequencePlan",
+    "Station",
+    "SweepContext",
+    "air_bend_radius",
+    "apex_depth",
+    "bend_pose",
+    "check_cycle",
+    "evaluate_batch",
+    "find_sequences",
+    "gauge_stop",
+    "punch_profile",
+    "ram_time",
+    "short_flanges",
     "BendingPlan",
     "CheckCost",
     "CollisionReport",

@@ -425,6 +425,37 @@ def _search(
         return (f, -len(n.prefix), *order)
 
     heap: list[tuple[tuple[float, ...], int, _Node]] = [(key(root), 0, root)]
+
+    def accept(n: _Node) -> bool:
+        """Verify complete order `n`; return True when the search is over (enough plans, or
+        the budget of full cycles spent)."""
+        nonlocal verified, note, counter
+        plan = _plan_of(n, ctx)
+        if verify is not None:
+            if verified >= s.max_verify:
+                note += f"stopped after checking {s.max_verify} full cycles (SearchSettings.max_verify). "
+                return True
+            verified += 1
+            report(
+                min(0.99, 0.5 + 0.5 * len(plans) / s.max_plans),
+                f"checking the full cycle of {' '.join(plan.sequence)}",
+            )
+            checked = verify(plan)
+            if isinstance(checked, (str, Rejected)):
+                why = checked if isinstance(checked, Rejected) else Rejected(checked)
+                rejected.append((plan.sequence, why.reason))
+                if why.step is not None:
+                    # the same order with that grasp banned at that step, if any is left
+                    ban = n.banned | {(why.step, plan.grasp_ids[why.step])}
+                    again = _rechain(n, ban, ctx, s, finish)
+                    if again is not None:
+                        counter += 1
+                        heapq.heappush(heap, (key(again), counter, again))
+                return False
+            plan = checked
+        plans.append(plan)
+        return len(plans) >= s.max_plans
+
     while heap:
         if cancel is not None and cancel():
             note += "cancelled: the plans found so far are returned. "
@@ -434,52 +465,32 @@ def _search(
                 f"stopped at the time limit of {time_limit:g} s: the best plans found so far "
                 "are returned; a longer limit may find better ones. "
             )
+            if not plans and verify is not None:
+                # the best complete order found, checked after the limit: a plan, not nothing
+                best = sorted((h for h in heap if len(h[2].prefix) == nb), key=lambda h: h[0])
+                for h in best[:1]:
+                    note += "The best complete order found was checked after the limit. "
+                    accept(h[2])
             break
-        width = 1 if diving else s.width
-        batch: list[_Node] = []
-        while heap and len(batch) < width:
-            batch.append(heapq.heappop(heap)[2])
-        complete = [n for n in batch if len(n.prefix) == nb]
-        stop = False
-        for n in complete:
-            plan = _plan_of(n, ctx)
-            if verify is not None:
-                if verified >= s.max_verify:
-                    note += (
-                        f"stopped after checking {s.max_verify} full cycles "
-                        "(SearchSettings.max_verify). "
-                    )
-                    stop = True
-                    break
-                verified += 1
-                report(
-                    min(0.99, 0.5 + 0.5 * len(plans) / s.max_plans),
-                    f"checking the full cycle of {' '.join(plan.sequence)}",
-                )
-                checked = verify(plan)
-                if isinstance(checked, (str, Rejected)):
-                    why = checked if isinstance(checked, Rejected) else Rejected(checked)
-                    rejected.append((plan.sequence, why.reason))
-                    if why.step is not None:
-                        # the same order with that grasp banned at that step, if any is left
-                        again = _rechain(
-                            n, n.banned | {(why.step, plan.grasp_ids[why.step])}, ctx, s, finish
-                        )
-                        if again is not None:
-                            counter += 1
-                            heapq.heappush(heap, (key(again), counter, again))
-                    continue
-                plan = checked
-            plans.append(plan)
+        # A complete order is taken only from the top of the queue: its cost is exact and no
+        # open prefix can end cheaper. While diving, the first one found ends the dive; it
+        # goes back into the queue to wait its turn.
+        if heap and len(heap[0][2].prefix) == nb:
+            n = heapq.heappop(heap)[2]
             if diving:
                 diving = False
+                counter += 1
+                heap.append((key(n), counter, n))
                 heap = [(key(h[2]), h[1], h[2]) for h in heap]
                 heapq.heapify(heap)
-            if len(plans) >= s.max_plans:
-                stop = True
+                continue
+            if accept(n):
                 break
-        if stop:
-            break
+            continue
+        width = 1 if diving else s.width
+        batch: list[_Node] = []
+        while heap and len(batch) < width and len(heap[0][2].prefix) < nb:
+            batch.append(heapq.heappop(heap)[2])
         open_nodes = [n for n in batch if len(n.prefix) < nb]
         needed = []
         for n in open_nodes:
