@@ -28,7 +28,9 @@ def _preset_meshes() -> list:
 
 def _key(mesh) -> str:
     v, f = sp._mesh_arrays(mesh)
-    return cache_path(".", "spheres", [v, f.astype(np.int64)], sp._params(SPHERES_PER_LINK)).name
+    return cache_path(
+        ".", "spheres", list(sp.mesh_key_arrays(v, f)), sp._params(SPHERES_PER_LINK)
+    ).name
 
 
 @pytest.fixture(scope="module", autouse=True)

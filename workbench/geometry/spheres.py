@@ -291,7 +291,7 @@ def fit_spheres(
     if cache_dir is None:
         return _fit(v, f, count, seed, iterations, particles, samples)[0]
     params = _params(count, seed, iterations, particles, samples)
-    path = cache_path(cache_dir, "spheres", [v, f.astype(np.int64)], params)
+    path = cache_path(cache_dir, "spheres", list(mesh_key_arrays(v, f)), params)
     required = ("centres", "radii", "split", *_SCALARS)
     for read in (lambda: _shipped_entry(path.name, required), lambda: load_entry(path, required)):
         d = read()  # a fit shipped with the package first, then the disk cache
@@ -325,6 +325,26 @@ def _shipped_entry(name: str, required: tuple[str, ...]) -> dict[str, NDArray[An
     return arrays if all(k in arrays for k in required) else None
 
 
+KEY_ROUND = 1e-7
+"""Vertices are rounded to this [m] for a fit's key: the same link mesh generated on another
+machine (its convex hull's vertex order, the last bits of its floats) keys the same fit."""
+
+
+def mesh_key_arrays(v: FloatArray, f: NDArray[np.int64]) -> tuple[FloatArray, NDArray[np.int64]]:
+    """Return the mesh in a canonical form for keys: vertices rounded to `KEY_ROUND` and
+    sorted, faces renumbered, each rotated to start at its least vertex (winding kept), sorted."""
+    r = np.round(np.asarray(v, float) / KEY_ROUND) * KEY_ROUND + 0.0  # +0.0: no -0.0
+    order = np.lexsort((r[:, 2], r[:, 1], r[:, 0]))
+    rank = np.empty(len(r), dtype=np.int64)
+    rank[order] = np.arange(len(r))
+    g = rank[np.asarray(f, np.int64)]
+    k = np.argmin(g, axis=1)
+    rows = np.arange(len(g))[:, None]
+    g = g[rows, (k[:, None] + np.arange(3)) % 3]
+    g = g[np.lexsort((g[:, 2], g[:, 1], g[:, 0]))]
+    return r[order], g
+
+
 def write_shipped_fits(
     meshes: list[Any], count: int, folder: str | Path = SHIPPED_FITS
 ) -> list[Path]:
@@ -340,7 +360,7 @@ def write_shipped_fits(
     out = []
     for mesh in meshes:
         v, f = _mesh_arrays(mesh)
-        path = cache_path(folder, "spheres", [v, f.astype(np.int64)], _params(int(count)))
+        path = cache_path(folder, "spheres", list(mesh_key_arrays(v, f)), _params(int(count)))
         s, split = _fit(v, f, int(count), 0, 60, 24, 2000)
         store_entry(path, _entry_arrays(s, split))
         out.append(path)

@@ -160,6 +160,22 @@ class SweepContext:
         """Return the cell's colliding objects as obstacles (built once)."""
         return _cached(self, "cell_obstacles", lambda: cell_obstacles(self.cell_bodies()))
 
+    def flange_grasps(self) -> F64:
+        """Return every candidate's TCP in its flange's frame (G, 4, 4) [m] (built once)."""
+
+        def build() -> F64:
+            part = self.part()
+            return np.array([T_flange_grasp(part, g) for g in self.grasps]).reshape(-1, 4, 4)
+
+        # keyed by the grasps too: a context copied with other grasps keeps its key
+        grasps = hash(
+            tuple(
+                (g.flange, None if g.offset is None else tuple(g.offset), g.yaw, g.face)
+                for g in self.grasps
+            )
+        )
+        return _cached(self, f"flange_grasps {grasps}", build)  # type: ignore[no-any-return]
+
     def robot_press(self) -> OBB:
         """Return the press's bodies as the robot sees them, as world boxes (M,)."""
         return _cached(
@@ -332,14 +348,8 @@ def reach_where_part_rests(
     `lift` above it, and the joints (G, dof) [rad] at the grasp (NaN where not)."""
     part = ctx.part() if part is None else part
     state = fold_state(part, step, check=False)
-    tcp = np.array(
-        [
-            T_world_part
-            @ state.T_part_flange[part.flange_index(g.flange)]
-            @ T_flange_grasp(part, g)
-            for g in ctx.grasps
-        ]
-    )
+    flanges = np.array([part.flange_index(g.flange) for g in ctx.grasps], dtype=np.int64)
+    tcp = T_world_part @ state.T_part_flange[flanges] @ ctx.flange_grasps()
     up = tcp.copy()
     up[:, 2, 3] += ctx.lift
     ok, q = _reach(ctx, np.concatenate([tcp, up]))
@@ -420,16 +430,10 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         along = [bend_pose(st, k, rep, ctx.press, station).T_die_part for st in follow]
         states_f = follow
         nf = len(follow)
-        tcp_f = np.array(
-            [
-                ctx.press.T_world_die
-                @ along[j]
-                @ follow[j].T_part_flange[gflange[i]]
-                @ T_flange_grasp(part, ctx.grasps[i])
-                for j in range(nf)
-                for i in idx
-            ]
-        )
+        # (nf, n, 4, 4): die pose at each fraction x the gripped flange x the grasp on it
+        T_wp = ctx.press.T_world_die @ np.array(along)  # (nf, 4, 4) world <- part
+        T_pf = np.array([st.T_part_flange[gflange[idx]] for st in follow])  # (nf, n, 4, 4)
+        tcp_f = (T_wp[:, None] @ T_pf @ ctx.flange_grasps()[idx][None]).reshape(-1, 4, 4)
         n = len(idx)
         tcp = np.concatenate([tcp_f[:n], tcp_f[-n:]])  # at the stop, at the end of the bend
         # the moves in and out of the die: in front of the stop, and lifted out and pulled
