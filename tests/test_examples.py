@@ -132,14 +132,27 @@ def check_05_polishing(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> No
     assert f"({len(text.splitlines())} lines)" in out
 
 
+def check_06_bending_sweep(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    _, out = _run("06_bending_sweep", capsys)
+    res = Workbench.open(ROOT / "projects" / "u_channel_cell.json").bending.find_sequences()
+    assert "part u_channel: bends bA, bB" in out
+    assert "(serial, 1 worker(s)" in out
+    assert "bA -> bB: bend 'bB': flange 'A' hits the punch" in out
+    for rank, plan in enumerate(res.plans, 1):
+        assert f"{rank}. {' -> '.join(plan.sequence)}: {plan.regrips} regrip(s)" in out
+    if res.plans:
+        assert "planned: 2 bends (" in out and "Collision-free." in out, out
+
+
 CHECKS: dict[str, Callable[[pytest.CaptureFixture[str], Path], None]] = {
     "01_jog_and_ik": check_01_jog_and_ik,
     "02_plan_and_export": check_02_plan_and_export,
     "03_bending": check_03_bending,
     "04_assembly": check_04_assembly,
     "05_polishing": check_05_polishing,
+    "06_bending_sweep": check_06_bending_sweep,
 }
-SLOW = {"04_assembly"}  # over 5 s here
+SLOW = {"04_assembly", "06_bending_sweep"}  # over 5 s here
 
 
 def test_every_example_has_a_title_a_main_and_a_check() -> None:
