@@ -21,7 +21,7 @@ the batch runner (`workbench.batch`) can send it to Ray workers.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -35,7 +35,6 @@ from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.model import RobotModel
 from workbench.sheetmetal.airbend import apex_depth
 from workbench.sheetmetal.bend_setup import (
-    GaugeStop,
     PressObstacles,
     bend_pose,
     contact_zone,
@@ -606,7 +605,6 @@ __all__ = [
     "FRACTIONS",
     "PUNCH_SHORTFALL",
     "BendEval",
-    "GaugeStop",
     "Reach",
     "SideEval",
     "SweepContext",
@@ -615,5 +613,4 @@ __all__ = [
     "grasp_label",
     "ordered_part",
     "ram_time",
-    "replace",
 ]

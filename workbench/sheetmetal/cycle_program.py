@@ -34,7 +34,6 @@ from workbench.motion.programs.model import (
     Target,
     WaitInput,
     WaitTime,
-    WorkObject,
 )
 from workbench.sheetmetal.cycle import BendingCycle
 from workbench.sheetmetal.program import (
@@ -44,6 +43,7 @@ from workbench.sheetmetal.program import (
     PRESS_TIMEOUT,
     TRANSFER_ZONE,
     RobotAt,
+    base_program,
 )
 
 F64 = NDArray[np.float64]
@@ -138,16 +138,7 @@ def cycle_program(
             ]
         elif w.hold > 0.0:
             ins.append(WaitTime(w.hold))
-    return RobotProgram(
-        name,
-        (tool,),
-        (WorkObject("base", np.eye(4)),),
-        tuple(ins),
-        model.convention,
-        model.dof,
-        robot or model.name,
-        settings.limits,
-    )
+    return base_program(name, model, settings, ins, robot)
 
 
 def _name(label: str, i: int) -> str:

@@ -20,8 +20,7 @@ from numpy.typing import NDArray
 
 from workbench.collision.shapes import bvh_model, fcl_transform
 from workbench.sheetmetal.folding import FoldedState
-from workbench.sheetmetal.obbtree import FramesReport
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles, confirm_exact, winding_number
+from workbench.sheetmetal.obstacles import Obstacles, confirm_exact, winding_number
 
 F64 = NDArray[np.float64]
 
@@ -112,7 +111,3 @@ def check_states(
 def frames_report(hits: Sequence[PartHit | None]) -> NDArray[np.bool_]:
     """Return (F,) True where a frame collides."""
     return np.array([h is not None for h in hits], dtype=bool)
-
-
-__all__ = ["PartHit", "TOOLS", "cell_obstacles", "check_states", "frames_report", "is_tool"]
-_ = FramesReport  # re-exported type for annotations elsewhere

@@ -234,11 +234,22 @@ def bending_program(
             home_dur,
         )
     )
+    return base_program(name, model, settings, ins, robot)
+
+
+def base_program(
+    name: str,
+    model: RobotModel,
+    settings: ProgramSettings,
+    instructions: list[Instruction],
+    robot: str | None = None,
+) -> RobotProgram:
+    """Return a bending program: the settings' tool, the robot's base as its one work object."""
     return RobotProgram(
         name,
-        (tool,),
+        (settings.tool,),
         (WorkObject("base", np.eye(4)),),
-        tuple(ins),
+        tuple(instructions),
         model.convention,
         model.dof,
         robot or model.name,
