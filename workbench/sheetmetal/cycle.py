@@ -155,7 +155,8 @@ class BendingCycle:
 
 def _segment_speeds(q: F64, path: CyclePath, vmax: F64, labels: list[str]) -> F64:
     """Return per-segment velocity limits (N-1, dof): the robot's, or for a bend-following
-    segment each joint's share of the ram's time (PlanningError when above the robot's)."""
+    segment the joints' top speeds times the one fraction at which the slowest keeps the
+    ram's pace, in the programs' 1 % steps (`following_fraction`; PlanningError above 100 %)."""
     out = np.tile(vmax, (len(q) - 1, 1))
     for i, w in enumerate(path.waypoints[1:]):
         if w.bend_time <= 0.0:
@@ -168,8 +169,17 @@ def _segment_speeds(q: F64, path: CyclePath, vmax: F64, labels: list[str]) -> F6
                 f"{np.degrees(need[j]):.0f} deg/s, above its {np.degrees(vmax[j]):.0f} deg/s; "
                 "lower the press's bending speed or grip farther from the bend line"
             )
-        out[i] = np.maximum(need, vmax * 1e-3)
+        out[i] = vmax * following_fraction(q[i], q[i + 1], w.bend_time, vmax)
     return out
+
+
+def following_fraction(q_a: F64, q_b: F64, seconds: float, vmax: F64) -> float:
+    """Return the joint-speed fraction of a bend-following move from q_a to q_b (dof,) [rad]
+    that lasts about `seconds` [s], the ram's time for it: the slowest joint's share of its
+    top speed `vmax` [rad/s], rounded up to the 1 % steps the programs state (KRL's and
+    FANUC's percentages), so plan and program move alike; at least 1 %, at most 100 %."""
+    need = float(np.max(np.abs(np.asarray(q_b) - np.asarray(q_a)) / (seconds * vmax)))
+    return float(np.clip(np.ceil(need * 100.0 - 1e-9) / 100.0, 0.01, 1.0))
 
 
 def plan_cycle_motion(

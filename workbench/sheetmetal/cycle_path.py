@@ -261,8 +261,9 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             press.T_world_die @ p.T_die_part @ T_part_tcp(part, g, k + f)
             for p, f in zip(poses, fr, strict=True)
         ]
-        close = ram.open / ram.approach_speed
-        opening = (ram.open + poses[-1].depth) / ram.return_speed
+        # the press's times as the program states them (ms): plan and program wait alike
+        close = round(ram.open / ram.approach_speed, 3)
+        opening = round((ram.open + poses[-1].depth) / ram.return_speed, 3)
         # In front of the die, over to just above the stop, then straight down onto the die
         # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
         if cell.via_home and wps[-1].label.startswith(("lift the blank", "off the regrip")):
@@ -326,7 +327,7 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             )
         else:
             # Let go, stand back along the tool, wait for the bend, grip the bent part again.
-            bend_total = ram_time(press, poses[-1].depth)
+            bend_total = round(ram_time(press, poses[-1].depth), 3)
             wps[i_stop] = Waypoint(
                 tcp[0], wps[i_stop].label, stop=True, hold=cell.release, action="release"
             )

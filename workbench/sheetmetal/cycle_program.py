@@ -2,7 +2,8 @@
 
 Every waypoint of the cycle is one joint move to its planned joints (a Cartesian target:
 the TCP pose in the base and the arm configuration, as planned) with the planned time from
-the previous waypoint (`MoveJ ... \\T`, `PTP` with its time); exact stops where the plan
+the previous waypoint (`MoveJ ... \\T`, `PTP` with its time) and, for a bend-following move,
+the joints' speed fraction at which it keeps the ram's pace; exact stops where the plan
 stops, a small blend elsewhere. What the plan does while the robot stands still becomes
 the program's actions, with the same times:
 
@@ -35,7 +36,7 @@ from workbench.motion.programs.model import (
     WaitInput,
     WaitTime,
 )
-from workbench.sheetmetal.cycle import BendingCycle
+from workbench.sheetmetal.cycle import BendingCycle, following_fraction
 from workbench.sheetmetal.program import (
     PRESS_DONE,
     PRESS_PULSE,
@@ -61,6 +62,7 @@ def cycle_program(
     """Return the `RobotProgram` of `cycle` (see the module docstring); `q_start` (dof,)
     [rad] the home joints the cycle starts and ends at."""
     model, tool = robot_at.model, settings.tool
+    vmax = np.asarray(model.max_velocity, float)
     wps = cycle.path.waypoints
     q = np.asarray(cycle.q, float)
     arrive = np.asarray(cycle.trajectory.waypoint_times, float)
@@ -110,7 +112,7 @@ def cycle_program(
             MoveInstr(
                 "joint",
                 target(i),
-                1.0,
+                1.0 if w.bend_time <= 0 else following_fraction(q[i - 1], q[i], w.bend_time, vmax),
                 0.0 if w.stop else TRANSFER_ZONE,
                 tool.name,
                 "base",
