@@ -465,6 +465,12 @@ def _search(
                 f"stopped at the time limit of {time_limit:g} s: the best plans found so far "
                 "are returned; a longer limit may find better ones. "
             )
+            deepest = max((h[2] for h in heap), key=lambda n: len(n.prefix), default=None)
+            if deepest is not None and len(deepest.prefix) < nb and not plans:
+                note += (
+                    f"The deepest order reached: {' '.join(names[i] for i in deepest.prefix)} "
+                    f"({len(deepest.prefix)} of {nb} bends). "
+                )
             if not plans and verify is not None:
                 # the best complete order found, checked after the limit: a plan, not nothing
                 best = sorted((h for h in heap if len(h[2].prefix) == nb), key=lambda h: h[0])
