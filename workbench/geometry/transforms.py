@@ -39,15 +39,24 @@ def rpy_to_matrix(rpy: ArrayLike) -> NDArray[np.float64]:
     return rot_z(angles[..., 2]) @ rot_y(angles[..., 1]) @ rot_x(angles[..., 0])
 
 
+GIMBAL_LOCK = 1e-7
+"""cos(pitch) below which `matrix_to_rpy` reads a rotation as gimbal-locked (pitch ±90°)."""
+
+
 def matrix_to_rpy(R: ArrayLike) -> NDArray[np.float64]:
     """Return (..., 3) [roll, pitch, yaw] rad with R = Rz(yaw) Ry(pitch) Rx(roll).
 
-    At pitch = ±90° (gimbal lock) roll is set to 0 and yaw carries the whole rotation.
+    At pitch = ±90° (gimbal lock) roll is set to 0 and yaw carries the whole rotation. Within
+    `GIMBAL_LOCK` (cos pitch below it) the lock's answer is taken too: there roll and yaw alone
+    come from elements of the size of rounding noise, and a program that writes them (with
+    the pitch rounded) would turn the frame by any angle; the lock's answer is exact to
+    `GIMBAL_LOCK` rad.
     """
     R = np.asarray(R, dtype=float)  # type: ignore[assignment]
-    pitch = np.arcsin(np.clip(-R[..., 2, 0], -1.0, 1.0))
-    cp = np.cos(pitch)
-    lock = np.abs(cp) < 1e-9
+    cp = np.hypot(R[..., 0, 0], R[..., 1, 0])
+    pitch = np.arctan2(-R[..., 2, 0], cp)
+    lock = cp < GIMBAL_LOCK
+    pitch = np.where(lock, np.copysign(np.pi / 2, -R[..., 2, 0]), pitch)
     roll = np.where(lock, 0.0, np.arctan2(R[..., 2, 1], R[..., 2, 2]))
     yaw = np.where(
         lock,

@@ -97,6 +97,16 @@ class BendingCycle:
     first_step: int | None = None  # the step (bend) whose grasp was in use at the problem
 
     @property
+    def times(self) -> F64:
+        """Return the checked frames' times (F,) [s] (the samples a csv/json export writes)."""
+        return self.frames.times
+
+    @property
+    def joints(self) -> F64:
+        """Return the joints (F, dof) [rad] at the checked frames."""
+        return self.frames.joints
+
+    @property
     def cycle_time(self) -> float:
         """Return the cycle's duration [s], holds included."""
         return float(self.trajectory.duration)

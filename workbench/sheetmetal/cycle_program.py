@@ -83,9 +83,9 @@ def cycle_program(
             )
 
     def target(i: int) -> Target:
+        # Every target Cartesian (the home joints too, as the TCP pose there with its
+        # configuration): the readers re-solve a Cartesian move from the one before it.
         label = _name(wps[i].label, i)
-        if wps[i].T_world_tcp is None:
-            return Target(label, q[i])
         return Target(
             label, q[i], model.fk(q[i]) @ tool.T_flange_tcp, arm_configuration(model, q[i])
         )
