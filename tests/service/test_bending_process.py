@@ -20,6 +20,9 @@ CELL = ROOT / "projects" / "u_channel_cell.json"
 
 def _project(**bending: Any) -> dict[str, Any]:
     data = json.loads(CELL.read_text())
+    if "part" in bending:  # another part: the cell's planned order and steps do not apply
+        data["bending"].pop("sequence", None)
+        data["bending"].pop("steps", None)
     data["bending"].update(bending)
     return data
 

@@ -1,4 +1,5 @@
-"""The "Bending" tab: the part flat and folded at the die, sequence, grasp, OBB tree levels, Plan."""
+"""The "Bending" tab: the part flat and folded at the die, sequence, grasp, OBB tree levels, Plan;
+with a press brake, the sequence search and the planned cycle on the timeline."""
 
 from __future__ import annotations
 
@@ -13,17 +14,21 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError, WorkbenchError
 from workbench.geometry.transforms import make_transform
+from workbench.gui.bending_cycle import CycleFollower
 from workbench.gui.fields import NumberField, format_number
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
 from workbench.gui.progress import busy
 from workbench.gui.scene import place
+from workbench.gui.sequence_search import SequenceSearch
 from workbench.gui.timeline import SECONDS
 from workbench.service.bending import BendingPlan
 
 if TYPE_CHECKING:
+    import trimesh
+
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import DiePlacement, OBBTree
+    from workbench.service.bending import BendingCycle, DiePlacement, OBBTree
 
 MM_PER_M = 1e3  # m -> mm for display
 PART_COLOR = (120, 170, 230)
@@ -48,6 +53,9 @@ class BendingPanel:
         self._animating = threading.Event()
         self._quiet = False
         self.plots: list[Any] = []
+        self.search: SequenceSearch | None = None
+        self.follower: CycleFollower | None = None  # the timeline's view of the last cycle
+        self._press_moved = False  # the press's bodies left their parked poses
         g = app.server.gui
         if not app.wb.bending.available:
             self.handles.append(g.add_markdown("This project has no `bending` section."))
@@ -107,10 +115,15 @@ class BendingPanel:
                 cb.on_update(guarded(s, "OBB levels")(lambda _: self._show_levels()))
                 self.levels.append(cb)
             self.tree_info = g.add_markdown("")
+        self.has_press = svc.si().press is not None
+        if self.has_press:
+            self.search = SequenceSearch(
+                self.app, on_used=self._sequence_changed, on_planned=self._show_plan
+            )
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
-        self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)")
+        self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)", visible=not self.has_press)
         self.handles += [
             self.info,
             self.look,
@@ -136,6 +149,7 @@ class BendingPanel:
         self.grasp_frame = s.scene.add_frame("/bending/part/obb", show_axes=False)
         self.nodes += [self.part_frame, self.grasp_frame]
         self.mesh: Any = None
+        self.mesh_step: float | None = None  # the fold step of the drawn mesh [bends]
         try:
             self.redraw()
         except WorkbenchError as exc:
@@ -152,6 +166,10 @@ class BendingPanel:
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""
         self._animating.clear()
+        if self.follower is not None:
+            self.follower.close()
+        if self.search is not None:
+            self.search.remove()
         for h in self.plots:
             h.remove()
         for h in self.handles:
@@ -183,7 +201,21 @@ class BendingPanel:
             step = float(np.clip(self._step, 0.0, nb))
             state = svc.fold(step)
             k = svc.bend_on_die(step)
-            mesh = state.solid()
+            self._draw_mesh(state.solid(), step)
+            place(self.part_frame, svc.die_part_pose(k))
+            if self._press_moved:  # a cycle moved the ram: the die view shows it parked
+                self.app.scene.park_bodies()
+                self._press_moved = False
+            placements = self._die_placements()
+            if placements is not None:
+                self.app.scene.show(placements[k].q)
+            self._tree = state.obb_tree(svc.grasp_flange)
+            self._check = None
+            self._draw_boxes(state.T_part_flange[self._tree.grasp_flange])
+
+    def _draw_mesh(self, mesh: trimesh.Trimesh, step: float) -> None:
+        """Draw the part's mesh (in the part frame) for fold step `step` [bends]."""
+        with self._lock:
             if self.mesh is not None:
                 self.mesh.remove()
                 self.nodes.remove(self.mesh)
@@ -194,14 +226,24 @@ class BendingPanel:
                 color=PART_COLOR,
                 side="double",
             )
+            self.mesh_step = step
             self.nodes.append(self.mesh)
-            place(self.part_frame, svc.die_part_pose(k))
-            placements = self._die_placements()
-            if placements is not None:
-                self.app.scene.show(placements[k].q)
-            self._tree = state.obb_tree(svc.grasp_flange)
-            self._check = None
-            self._draw_boxes(state.T_part_flange[self._tree.grasp_flange])
+
+    def show_fold(self, step: float) -> None:
+        """Draw the part folded to `step` [bends] where it is (a cycle on the timeline); the
+        OBB tree, drawn for the fold step on the die, is taken down until that is shown again."""
+        with self._lock:
+            self._draw_mesh(self.app.wb.bending.fold(step).solid(), step)
+            self._press_moved = True
+            if self._tree is not None:
+                for n in self.box_nodes:
+                    n.remove()
+                self.box_nodes.clear()
+                self._tree, self._check = None, None
+                self.tree_info.content = (
+                    "The tree is drawn for the fold step above; the cycle's checks are in its"
+                    " summary."
+                )
 
     def _draw_boxes(self, T_part_grasp: NDArray[np.float64]) -> None:
         for n in self.box_nodes:
@@ -248,6 +290,14 @@ class BendingPanel:
         self.tree_info.content = f"{len(tree.flanges)} nodes. " + "; ".join(rows)
 
     # -- callbacks ------------------------------------------------------------------------
+    def _sequence_changed(self) -> None:
+        """Show the project's sequence (a search's plan was put into the project)."""
+        svc = self.app.wb.bending
+        self.sequence.value = ",".join(svc.sequence)  # type: ignore[misc]
+        self._placements = None
+        self.result.content = ""
+        self.info.content = self._describe()
+
     def _reset(self) -> None:
         self._placements = None
         self.result.content = ""
@@ -316,12 +366,19 @@ class BendingPanel:
             self.progress, [self.plan_button], self.result, what="planning the bending"
         ) as progress:
             plan = svc.plan(progress=progress)
+        self._show_plan(plan)
+
+    def _show_plan(self, plan: BendingPlan | BendingCycle) -> None:
+        """Show a plan's summary, and its motion on the timeline."""
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()
-        self.step.value = float(len(svc.part.bends))  # type: ignore[misc]  # redraws the folded tree
         if isinstance(plan, BendingPlan):
+            nb = float(len(self.app.wb.bending.part.bends))
+            self.step.value = nb  # type: ignore[misc]  # redraws the folded tree
             self._show_plots(plan)
             self._load_timeline(plan)
+        else:
+            self._load_cycle(plan)
 
     def _show_plots(self, plan: BendingPlan) -> None:
         for h in self.plots:
@@ -373,3 +430,17 @@ class BendingPanel:
         first = plan.first_collision
         if first is not None:
             self.app.timeline.time.value = round(float(plan.times[first.frame]), 4)  # type: ignore[misc]
+
+    def _load_cycle(self, plan: BendingCycle) -> None:
+        """Play a press-brake cycle: the robot, the part folded and carried, the ram and the
+        back-gauge; the timeline starts at the first colliding frame when there is one."""
+        svc = self.app.wb.bending
+        if self.follower is not None:
+            self.follower.close()
+        self.follower = CycleFollower(
+            self.app, plan, part_frame=self.part_frame, show_fold=self.show_fold
+        )
+        self.app.timeline.load(svc.playback(plan), robot=self.app.wb.robot, follow=self.follower)
+        hits = np.flatnonzero(plan.colliding)
+        if len(hits):
+            self.app.timeline.time.value = round(float(plan.frames.times[hits[0]]), 4)  # type: ignore[misc]

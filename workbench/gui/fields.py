@@ -81,6 +81,9 @@ class NumberField:
     get() -> the value in use [display unit]; put(v) sets it through the service, raising a
     WorkbenchError when refused; allowed() -> the allowed range as text ('[-170, 170] deg');
     after an accepted change `changed()` updates what depends on the value.
+
+    An optional value (a time limit: none when blank) passes `clear`, called for an empty box
+    instead of refusing it; its get() returns None while there is no value (an empty box).
     """
 
     def __init__(
@@ -88,7 +91,7 @@ class NumberField:
         server: viser.ViserServer,
         label: str,
         *,
-        get: Callable[[], float],
+        get: Callable[[], float | None],
         put: Callable[[float], None],
         allowed: Callable[[], str],
         changed: Callable[[], None] | None = None,
@@ -97,10 +100,12 @@ class NumberField:
         slider: tuple[float, float, float] | None = None,
         hint: str | None = None,
         delay: float = COMMIT_DELAY,
+        clear: Callable[[], None] | None = None,
     ) -> None:
         self.server = server
         self.label = label
         self.get, self.put, self.allowed, self.changed = get, put, allowed, changed
+        self.clear = clear
         self.decimals = 0 if integer else decimals
         self.integer = integer
         self.delay = delay
@@ -113,14 +118,19 @@ class NumberField:
         if slider is not None:
             lo, hi, step = slider
             self.slider = server.gui.add_slider(
-                "", min=lo, max=hi, step=step, initial_value=min(max(self.get(), lo), hi)
+                "", min=lo, max=hi, step=step, initial_value=min(max(self._value(), lo), hi)
             )
             self.slider.on_update(self._on_slider)
         self.handles: list[Any] = [self.text] + ([self.slider] if self.slider is not None else [])
 
     # -- the value in use -> widgets ------------------------------------------------------------
+    def _value(self) -> float:
+        v = self.get()
+        return 0.0 if v is None else float(v)
+
     def _text(self) -> str:
-        return format_number(float(self.get()), self.decimals)
+        v = self.get()
+        return "" if v is None else format_number(float(v), self.decimals)
 
     def refresh(self) -> None:
         """Show the service's value in the box and on the slider (fires no commit)."""
@@ -129,7 +139,7 @@ class NumberField:
             if self.text.value != text:
                 self.text.value = text  # type: ignore[misc]  # event.client None: ignored by _on_text
             if self.slider is not None:
-                v = min(max(float(self.get()), self.slider.min), self.slider.max)
+                v = min(max(self._value(), self.slider.min), self.slider.max)
                 if abs(float(self.slider.value) - v) > 1e-12:
                     self.slider.value = v  # type: ignore[misc]
 
@@ -163,6 +173,9 @@ class NumberField:
         with self._lock:
             if str(self.text.value) != text:
                 return  # typed on meanwhile: a later commit takes it
+            if not text.strip() and self.clear is not None:
+                self._apply(self.clear, client)
+                return
             try:
                 v = parse_number(text, self.label, integer=self.integer)
             except InputError as exc:
@@ -172,11 +185,19 @@ class NumberField:
 
     def commit(self, v: float, client: Any = None) -> bool:
         """Set `v` through the service; return True when taken. A refusal reverts and notifies."""
+
+        def put() -> None:
+            if not math.isfinite(v):
+                raise InputError(f"{self.label}: {v!r} is not a number")
+            self.put(v)
+
+        return self._apply(put, client)
+
+    def _apply(self, action: Callable[[], None], client: Any) -> bool:
+        """Run `action` (a setter); True when taken. A refusal reverts and notifies."""
         with self._lock:
             try:
-                if not math.isfinite(v):
-                    raise InputError(f"{self.label}: {v!r} is not a number")
-                self.put(v)
+                action()
             except WorkbenchError as exc:
                 self._refuse(str(exc), client)
                 return False

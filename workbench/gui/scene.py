@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import logging
 import traceback
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -94,6 +94,7 @@ class RobotScene:
         self.wb = wb
         self.nodes: list[viser.SceneNodeHandle] = []
         self.links: dict[str, viser.MeshHandle] = {}
+        self.bodies: dict[str, viser.MeshHandle] = {}  # the cell bodies drawn, by name
         # Called with the joints (None: the workbench's own) after every pose, for what
         # follows the robot (e.g. the collision spheres).
         self.on_show: list[Callable[[NDArray[np.float64] | None], None]] = []
@@ -111,9 +112,9 @@ class RobotScene:
         for body in wb.cell:
             if not body.display:
                 continue  # an envelope the robot is checked against (the ram's stroke)
-            self.nodes.append(
-                _add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color, body.T_world_body)
-            )
+            h = _add_mesh(s, f"/cell/{body.name}", body.mesh(), body.color, body.T_world_body)
+            self.bodies[body.name] = h
+            self.nodes.append(h)
         poses = wb.link_poses()
         names = wb.checker.link_names
         for name, mesh, T in zip(names, wb.setup.link_meshes, poses, strict=True):
@@ -135,6 +136,7 @@ class RobotScene:
             h.remove()
         self.nodes.clear()
         self.links.clear()
+        self.bodies.clear()
         self.show_plan(None)
         self.gizmo = None  # the jog panel's, removed with it
 
@@ -183,6 +185,19 @@ class RobotScene:
             self._place_gizmo(q)
         for listener in self.on_show:
             listener(q)
+
+    def place_bodies(self, poses: Mapping[str, NDArray[np.float64]]) -> None:
+        """Move the drawn cell bodies named in `poses` to their world poses (4, 4) [m] (the
+        press's ram and back-gauge during a bending cycle); names not drawn are skipped."""
+        with self.server.atomic():
+            for name, T in poses.items():
+                h = self.bodies.get(name)
+                if h is not None:
+                    place(h, T)
+
+    def park_bodies(self) -> None:
+        """Put every drawn cell body back at its pose in the project."""
+        self.place_bodies({b.name: b.T_world_body for b in self.wb.cell if b.name in self.bodies})
 
     def _place_gizmo(self, q: NDArray[np.float64] | None) -> None:
         g = self.gizmo
@@ -245,8 +260,9 @@ class CameraViews:
         position, look_at = camera_pose(box.lo, box.hi, direction, fov, aspect)  # type: ignore[arg-type]
         with client.atomic():
             cam.up_direction = (0.0, 0.0, 1.0)
-            cam.look_at = look_at
+            # viser's position setter moves look_at along with the camera: set look_at last
             cam.position = position
+            cam.look_at = look_at
 
     def frame_bending(self, client: viser.ClientHandle | None) -> None:
         """Point `client`'s camera at the die and the part, from the robot's side and above

@@ -291,7 +291,7 @@ def _plan_of(node: _Node, ctx: SweepContext) -> SequencePlan:
         bend = part.bends[n.prefix[-1]]
         front = part.flanges[bend.child if which == "child" else bend.parent].name
         orient.append(
-            f"flange {front!r}'s side to the robot, {'top' if side.top_up else 'bottom'} up"
+            f"the side of flange {front!r} to the robot, {'top' if side.top_up else 'bottom'} up"
         )
         if prev_g is not None and prev_g != gi:
             regrips += 1
