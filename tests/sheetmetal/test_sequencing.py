@@ -326,15 +326,17 @@ def test_other_estimates_keep_the_ranking(twins: Callable[[str], Twin]) -> None:
 
 def test_bending_a_first_is_rejected_for_the_punch(base_ctx: SweepContext) -> None:
     ctx = _open(base_ctx)  # nothing but the bends to stop the branch
+    names = [b.name for b in ctx.part().bends]  # the project's order (it may set one)
+    a, b = names.index("bA"), names.index("bB")
     # the part against the press does not depend on the grasp: after bA, bB fails on
     # either side of the die
-    e = evaluate(dataclasses.replace(ctx, grasps=ctx.grasps[:1]), (0,), 1)
+    e = evaluate(dataclasses.replace(ctx, grasps=ctx.grasps[:1]), (a,), b)
     assert not e.feasible
     for side in e.sides:
         assert not side.ok and side.reason is not None and "punch" in side.reason, side.reason
     # in the search: the grasps that make bA first take the branch to bB, which is rejected
     probe = dataclasses.replace(ctx, grasps=ctx.grasps[::3])
-    makes_a = [probe.grasps[i] for i in np.flatnonzero(evaluate(probe, (), 0).grasp_ok)]
+    makes_a = [probe.grasps[i] for i in np.flatnonzero(evaluate(probe, (), a).grasp_ok)]
     assert makes_a, "no candidate grasp makes bA first (the cell's tuning?)"
     result = find_sequences(dataclasses.replace(ctx, grasps=tuple(makes_a[:4])), verify=None)
     assert all(p.sequence != ("bA", "bB") for p in result.plans)
