@@ -53,9 +53,8 @@ def matrix_to_rpy(R: ArrayLike) -> NDArray[np.float64]:
     `GIMBAL_LOCK` rad.
     """
     R = np.asarray(R, dtype=float)  # type: ignore[assignment]
-    cp = np.hypot(R[..., 0, 0], R[..., 1, 0])
-    pitch = np.arctan2(-R[..., 2, 0], cp)
-    lock = cp < GIMBAL_LOCK
+    pitch = np.arcsin(np.clip(-R[..., 2, 0], -1.0, 1.0))
+    lock = np.hypot(R[..., 0, 0], R[..., 1, 0]) < GIMBAL_LOCK
     pitch = np.where(lock, np.copysign(np.pi / 2, -R[..., 2, 0]), pitch)
     roll = np.where(lock, 0.0, np.arctan2(R[..., 2, 1], R[..., 2, 2]))
     yaw = np.where(
