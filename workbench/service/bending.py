@@ -97,6 +97,7 @@ class BendingService(SectionService[BendingSpec]):
         part_si = self.si().part
         names = check_sequence([str(n).strip() for n in names], [b.name for b in part_si.bends])
         part = self._build_part(replace(part_si, sequence=tuple(names)))  # raises when infeasible
+        self.spec.steps = None  # a plan's grasps and stations belong to its own order
         self.spec.sequence = names
         self._part, self._plan = part, None
 
@@ -120,6 +121,7 @@ class BendingService(SectionService[BendingSpec]):
     ) -> None:
         """Grip `flange` at `offset` (2,) [m] in its polygon frame (None: centroid), gripper `yaw` [rad]."""
         grasp = checked_grasp(self.part, flange, offset, 0.0 if yaw is None else yaw)
+        self.spec.steps = None  # the grasp chosen now serves every bend
         self.spec.grasp.set_si(grasp, keep_yaw=yaw is None)
         self._plan = None
 
