@@ -15,7 +15,6 @@ from pathlib import Path
 import numpy as np
 
 from workbench import Workbench, WorkbenchError
-from workbench.service.bending import BendingCycle
 
 PROJECT = Path(__file__).resolve().parents[1] / "projects" / "bending_cell.json"
 
@@ -49,16 +48,16 @@ def main(project: str | Path = PROJECT) -> None:
     print("planning:")
     plan = bending.plan(progress=_Progress())
     print(plan.summary())
-    if isinstance(plan, BendingCycle):  # a project with a press: see 06_bending_sweep.py
-        return
-    for p in plan.placements:
+    # (a project with a press plans its whole cycle instead: see 06_bending_sweep.py)
+    for p in getattr(plan, "placements", ()):
         print(
             f"  bend {p.bend} on the die: joints [deg]",
             (np.round(np.degrees(p.q), 1) + 0.0).tolist(),
         )
-    if plan.first_collision is not None:
-        print(f"first collision: {plan.first_collision.describe()}")
-    else:
+    first = getattr(plan, "first_collision", None)
+    if first is not None:
+        print(f"first collision: {first.describe()}")
+    elif plan.ok:
         print("the transfer is collision-free")
 
 

@@ -134,8 +134,9 @@ def check_05_polishing(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> No
 
 def check_06_bending_sweep(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     _, out = _run("06_bending_sweep", capsys)
-    res = Workbench.open(ROOT / "projects" / "u_channel_cell.json").bending.find_sequences()
-    assert "part u_channel: bends bA, bB" in out
+    svc = Workbench.open(ROOT / "projects" / "u_channel_cell.json").bending
+    res = svc.find_sequences()
+    assert f"part u_channel: bends {', '.join(svc.sequence)}" in out
     assert "(serial, 1 worker(s)" in out
     assert "bA -> bB: bend 'bB': flange 'A' hits the punch" in out
     for rank, plan in enumerate(res.plans, 1):
