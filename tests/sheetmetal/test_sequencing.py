@@ -529,3 +529,21 @@ def test_ray_gives_the_serial_plans(
         assert _summary(on_ray.plans) == _summary(serial.plans)
         assert on_ray.rejected == serial.rejected
         assert on_ray.stats.engine == "ray" and on_ray.stats.candidates == serial.stats.candidates
+
+
+def test_the_cheap_stage_checks_the_cycles_straight_moves_pose_for_pose() -> None:
+    """The search's IK waypoints near the die are the cycle's (`cycle_path._line`): the same
+    poses, so a grasp the search keeps does not fail the full cycle on the way in or out."""
+    from workbench.geometry.transforms import xyz_rpy_to_transform
+    from workbench.sheetmetal.bend_eval import _line_poses
+    from workbench.sheetmetal.cycle_path import LINE_STEP, _line
+
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        T = xyz_rpy_to_transform(rng.uniform(-1, 1, 3), rng.uniform(-np.pi, np.pi, 3))
+        offset = rng.uniform(-0.3, 0.3, 3) * rng.choice([0.0, 1.0], 3)
+        got = _line_poses(T[None], offset)[:, 0]
+        end = T.copy()
+        end[:3, 3] += offset
+        want = np.array(_line(T, end, LINE_STEP))
+        np.testing.assert_allclose(got, want, atol=1e-12)

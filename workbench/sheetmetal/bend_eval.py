@@ -10,9 +10,11 @@ the first failure is the reason:
    punch covers it (short by at most `PUNCH_SHORTFALL` at each end) and where the part
    clears the press and the cell at every checked fraction of the bend (`press_check`);
 2. the back-gauge: a stop within its axes at the placement (`bend_setup.gauge_stop`);
-Per grasp on that side: inverse kinematics at the placement and at the end of the bend in
-the search's one arm configuration, and the gripper's box clear of the press as the robot
-sees it (ram stroke, dies, frame, back-gauge reach).
+Per grasp on that side: inverse kinematics in the search's one arm configuration at the
+bend's following fractions and at every IK waypoint of the straight moves onto the die and
+out of it (lifted, then pulled back; as `cycle_path` moves them), the joints' speed while
+following, and the gripper's and the arm's boxes clear of the press as the robot sees it
+(ram stroke, dies, frame, back-gauge reach).
 
 Everything here is a pure function of a picklable `SweepContext` and the candidate keys, so
 the batch runner (`workbench.batch`) can send it to Ray workers.
@@ -44,7 +46,7 @@ from workbench.sheetmetal.bend_setup import (
     part_points,
     robot_obstacles,
 )
-from workbench.sheetmetal.cycle_path import clear_of_tools, follow_fractions
+from workbench.sheetmetal.cycle_path import LINE_STEP, clear_of_tools, follow_fractions
 from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
@@ -442,10 +444,15 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
             (along[j] @ np.c_[p, np.ones(len(p))].T).T[:, :3]
             for j, p in zip((0, -1), pts, strict=True)
         )
-        aside = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth, pts_die)  # type: ignore[arg-type]
-        reach, q = _reach(ctx, np.concatenate([tcp_f, aside]))
+        onto, out = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth, pts_die)  # type: ignore[arg-type]
+        reach, q = _reach(
+            ctx, np.concatenate([tcp_f, onto.reshape(-1, 4, 4), out.reshape(-1, 4, 4)])
+        )
         reach_f = reach[: nf * n].reshape(nf, n)
         q_f = q[: nf * n].reshape(nf, n, dof)
+        k0 = nf * n + onto.shape[0] * n
+        reach_onto: NDArray[np.bool_] = np.all(reach[nf * n : k0].reshape(-1, n), axis=0)
+        reach_out: NDArray[np.bool_] = np.all(reach[k0:].reshape(-1, n), axis=0)
         depth = [
             float(
                 apex_depth(
@@ -476,9 +483,11 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
                     f"{ctx.reach.configuration}"
                 )
                 continue
-            if not (reach[nf * n + m] and reach[nf * n + n + m]):
+            if not (reach_onto[m] and reach_out[m]):
                 when = (
-                    "in front of the die" if not reach[nf * n + m] else "pulled back from the die"
+                    "on the way onto the die"
+                    if not reach_onto[m]
+                    else "on the way out of the die (lifted, then pulled back)"
                 )
                 reasons[i] = (
                     f"bend {name!r}: grasp {label} unreachable {when} in the arm configuration "
@@ -525,22 +534,31 @@ def _following_speed(ctx: SweepContext, q: F64, depth: list[float]) -> F64:
 
 def _aside(
     ctx: SweepContext, at_stop: F64, at_end: F64, depth: float, points: tuple[F64, F64]
-) -> F64:
-    """Return the TCP poses in front of the die (before the stop) and lifted out and pulled
-    back after the bend (2N, 4, 4), as `cycle_path` moves them: the approach offset (die
-    frame, its y far enough for the whole part, `cycle_path.clear_of_tools`, from the part's
-    points (P, 3) in the die frame at the stop and at the end) from the stop; up by its z
-    plus the depth, back by its y, from the end."""
+) -> tuple[F64, F64]:
+    """Return the TCP poses of the straight moves near the die, as `cycle_path` moves them
+    (every `LINE_STEP` or less, ends included): onto the die from in front of it (the
+    approach offset in the die frame, its y far enough for the whole part,
+    `cycle_path.clear_of_tools`, from the part's points (P, 3) in the die frame at the stop
+    and at the end) and, after the bend, lifted out by its z plus the depth, then pulled back
+    by its y. Returns (onto (K0, N, 4, 4), out (K1, N, 4, 4))."""
     if ctx.approach is None:
-        return np.concatenate([at_stop, at_end])
+        return at_stop[None], at_end[None]
     R = ctx.press.T_world_die[:3, :3]
     a0 = clear_of_tools(ctx.approach, points[0])
     a1 = clear_of_tools(ctx.approach, points[1])
-    before = at_stop.copy()
-    before[:, :3, 3] += R @ a0
-    after = at_end.copy()
-    after[:, :3, 3] += R @ np.array([0.0, a1[1], a1[2] + depth])
-    return np.concatenate([before, after])
+    onto = _line_poses(at_stop, R @ a0)
+    lift = _line_poses(at_end, R @ np.array([0.0, 0.0, a1[2] + depth]))
+    back = _line_poses(lift[-1], R @ np.array([0.0, a1[1], 0.0]))
+    return onto, np.concatenate([lift, back[1:]])
+
+
+def _line_poses(T: F64, offset: F64) -> F64:
+    """Return poses (K, N, 4, 4) from `T` (N, 4, 4) to `T` moved by `offset` (3,) [m], the
+    orientation kept, every `LINE_STEP` or less, both ends included."""
+    k = max(1, int(np.ceil(float(np.linalg.norm(offset)) / LINE_STEP)))
+    out = np.repeat(T[None], k + 1, axis=0)
+    out[:, :, :3, 3] += np.linspace(0.0, 1.0, k + 1)[:, None, None] * offset
+    return out
 
 
 def _links_hit(ctx: SweepContext, q: F64, press_boxes: OBB) -> NDArray[np.bool_]:

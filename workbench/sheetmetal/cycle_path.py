@@ -39,6 +39,8 @@ F64 = NDArray[np.float64]
 
 #: How high [m] over the die the part slides in before it is put down on it.
 DROP = 0.005
+#: Default spacing [m] of the IK waypoints of the straight moves onto the die and out.
+LINE_STEP = 0.01
 
 #: Bend-following waypoints per bend: the robot's IK is solved at each (the search checks
 #: the same fractions).
@@ -76,7 +78,7 @@ class CycleCell:
     release: float = 0.3
     follow_steps: int = FOLLOW_STEPS
     frame_dt: float = 0.05
-    line_step: float = 0.01
+    line_step: float = LINE_STEP
     via_home: bool = True
 
 

@@ -19,6 +19,10 @@ first), so a time limit still returns the best found so far.
 Each complete sequence then goes to `verify` (the full cycle: robot motion, bend following,
 regrips, transfer, every frame checked; the caller supplies it). The first reason of every
 pruned branch is kept.
+
+Where the part rests (the blank stack, the regrip station, the pallet) a grasp counts only
+where the robot reaches it collision-free (`robot_free`, the part lying there): the station's
+check is made once per set of bends done, in this process.
 """
 
 from __future__ import annotations
@@ -39,6 +43,7 @@ from workbench.sheetmetal.bend_eval import (
     SweepContext,
     evaluate_batch,
     grasp_label,
+    ordered_part,
     reach_where_part_rests,
 )
 from workbench.sheetmetal.folding import fold_state
@@ -390,6 +395,21 @@ def _search(
             lying = (fold_state(part, nb, check=False).solid(), ctx.T_world_pallet)
             at_pallet &= _free(robot_free, q_pallet, at_pallet, lying)
     vmax = ctx.reach.model.max_velocity
+    station_free: dict[tuple[int, ...], NDArray[np.bool_]] = {}
+
+    def _at_free_station(
+        e: BendEval, done: tuple[int, ...], cache: dict[tuple[int, ...], NDArray[np.bool_]]
+    ) -> BendEval:
+        """Return `e` with only the grasps the robot takes collision-free at the regrip
+        station (the part lying there, folded by `done`) left in its `at_station`."""
+        if e.at_station is None or robot_free is None or ctx.T_world_regrip is None:
+            return e
+        if done not in cache:
+            p = ordered_part(part, done, e.bend)
+            reach, q = reach_where_part_rests(ctx, ctx.T_world_regrip, len(done), p)
+            lying = (fold_state(p, len(done), check=False).solid(), ctx.T_world_regrip)
+            cache[done] = _free(robot_free, q, reach, lying)
+        return replace(e, at_station=e.at_station & cache[done])
 
     def finish(node: _Node) -> None:
         """Add the move to the pallet to a complete sequence (grasps that reach it)."""
@@ -520,7 +540,7 @@ def _search(
             tally.runs.append(run.stats)
             for k, r in zip(needed, run.results, strict=True):
                 if r is not None:
-                    evals[k] = r
+                    evals[k] = _at_free_station(r, k[0], station_free)
             tally.candidates += sum(r is not None for r in run.results)
             report(
                 min(0.5, 0.5 * len(evals) / max(1, nb * 2 ** (nb - 1))),
