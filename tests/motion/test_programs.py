@@ -43,6 +43,30 @@ def test_angle_conventions_against_scipy():
     np.testing.assert_allclose(rotation_vector(np.eye(3)), 0.0)
 
 
+def test_orientations_are_canonical_where_the_convention_leaves_a_choice():
+    """Rounding noise must not flip what a program states: a half turn about z prints C = +180
+    (never -180) and a quaternion with w = 0 has its first printed component positive,
+    however the noise falls; the rotation stays the same."""
+    rng = np.random.default_rng(3)
+    for axis in (np.array([1.0, 0, 0]), np.array([0, 0.6, -0.8]), np.array([0, 0, -1.0])):
+        for _ in range(20):
+            noise = Rotation.from_rotvec(rng.normal(size=3) * 1e-15)
+            M = (noise * Rotation.from_rotvec(axis * np.pi)).as_matrix()
+            q = quaternion_wxyz(M)
+            lead = q[np.flatnonzero(np.abs(q) >= 5e-10)[0]]
+            assert lead > 0, q
+            np.testing.assert_allclose(
+                Rotation.from_quat(np.roll(q, -1)).as_matrix(), M, atol=1e-12
+            )
+            for angles in (abc_deg(M), wpr_deg(M)):
+                assert np.all(angles > -180.0 + 5e-7) and np.all(angles <= 180.0 + 5e-7), angles
+    # C of a tool pointing down with noise on either side of the branch cut
+    for eps in (1e-15, -1e-15, 0.0):
+        M = Rotation.from_euler("ZYX", [30.0, 0.0, 180.0 + eps], degrees=True).as_matrix()
+        assert abc_deg(M)[2] == pytest.approx(180.0, abs=1e-9)
+        assert wpr_deg(M)[0] == pytest.approx(180.0, abs=1e-9)
+
+
 def test_csv_and_json_round_trip(tmp_path):
     rng = np.random.default_rng(0)
     t = np.sort(rng.uniform(0, 5, 57))
