@@ -547,3 +547,21 @@ def test_the_cheap_stage_checks_the_cycles_straight_moves_pose_for_pose() -> Non
         end[:3, 3] += offset
         want = np.array(_line(T, end, LINE_STEP))
         np.testing.assert_allclose(got, want, atol=1e-12)
+
+
+def test_via_home_the_wrist_goes_halfway_and_the_arm_home() -> None:
+    from workbench.sheetmetal.cycle import ARM_JOINTS, _carry_the_wrist
+
+    home = np.zeros(6)
+    q = np.tile(home, (5, 1))
+    q[0] = [0.1, 0.2, 0.3, 1.0, -0.5, 2.0]
+    q[2] = [0.4, 0.5, 0.6, -1.0, 0.5, -2.5]
+    q[4] = [0.7, 0.8, 0.9, 3.0, 0.1, 0.0]
+    _carry_the_wrist(q, [0, 2, 4])
+    np.testing.assert_array_equal(q[1, :ARM_JOINTS], home[:ARM_JOINTS])
+    np.testing.assert_allclose(q[1, ARM_JOINTS:], [0.0, 0.0, -0.25])
+    np.testing.assert_allclose(q[3, ARM_JOINTS:], [1.0, 0.3, -1.25])
+    lone = np.tile(home, (2, 1))  # a via with nothing after it keeps home
+    lone[0] = [0.1, 0.2, 0.3, 1.0, -0.5, 2.0]
+    _carry_the_wrist(lone, [0])
+    np.testing.assert_array_equal(lone[1], home)

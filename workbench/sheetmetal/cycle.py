@@ -219,6 +219,7 @@ def plan_cycle_motion(
     )
     q = np.tile(np.asarray(q_home, float), (len(path.waypoints), 1))
     q[idx] = ik.q
+    _carry_the_wrist(q, idx)
     vmax = np.asarray(model.max_velocity, float)
     speeds = _segment_speeds(q, path, vmax, labels)
     stops = [i for i, w in enumerate(path.waypoints) if w.stop]
@@ -233,6 +234,29 @@ def plan_cycle_motion(
     )
     holds = [(i, w.hold) for i, w in enumerate(path.waypoints) if w.hold > 0]
     return q, ik.configuration, traj.with_holds(holds)
+
+
+#: The arm's joints (the first three) that a move via home takes to the home joints; the wrist
+#: joints after them go halfway between the poses before and after (`_carry_the_wrist`).
+ARM_JOINTS = 3
+
+
+def _carry_the_wrist(q: F64, idx: list[int]) -> None:
+    """Set the wrist at each via-home waypoint (rows of `q` (N, dof) not in `idx`, the IK
+    waypoints) halfway between the wrists of the IK waypoints before and after it, in place.
+
+    Via home the arm swings home but the wrist does not unwind to home's and back: a part
+    held out on the gripper would otherwise sweep round (a wrist turned 340 deg and back
+    swung a 300 mm part through the press). A robot without a wrist (dof <= 3) keeps home."""
+    if q.shape[1] <= ARM_JOINTS or not idx:
+        return
+    known = np.asarray(idx)
+    for i in range(len(q)):
+        if i in idx:
+            continue
+        before, after = known[known < i], known[known > i]
+        if len(before) and len(after):
+            q[i, ARM_JOINTS:] = 0.5 * (q[before[-1], ARM_JOINTS:] + q[after[0], ARM_JOINTS:])
 
 
 @dataclass(eq=False)
