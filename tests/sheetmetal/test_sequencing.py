@@ -35,13 +35,7 @@ import pytest
 
 from workbench import Workbench
 from workbench.errors import InputError
-from workbench.service.bending_process import (
-    GRASP_FACES,
-    GRASP_INSET,
-    GRASP_SPACING,
-    GRASP_YAWS,
-    sweep_context,
-)
+from workbench.service.bending_process import sweep_context
 from workbench.sheetmetal import SheetMetalPart, sequencing
 from workbench.sheetmetal.bend_eval import (
     BendEval,
@@ -50,7 +44,7 @@ from workbench.sheetmetal.bend_eval import (
     evaluate,
     reach_where_part_rests,
 )
-from workbench.sheetmetal.grasp_grid import grasp_grid
+from workbench.sheetmetal.grasp_grid import GridSettings, grasp_grid
 from workbench.sheetmetal.press import ram_time
 from workbench.sheetmetal.sequencing import (
     FLIP,
@@ -128,9 +122,8 @@ def short_ctx(base_ctx: SweepContext) -> SweepContext:
             poly[:, 1] = np.minimum(poly[:, 1], 0.04)
             f["polygon"] = poly
     part = SheetMetalPart.from_spec(spec)
-    grasps = grasp_grid(
-        part, spacing=GRASP_SPACING, inset=GRASP_INSET, yaws=GRASP_YAWS, faces=GRASP_FACES
-    )
+    g = GridSettings()  # the project's default grid
+    grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
     ctx = dataclasses.replace(base_ctx, part_spec=spec, grasps=tuple(grasps), key=uuid.uuid4().hex)
     return _screened(ctx, seed=41)
 

@@ -30,6 +30,7 @@ from workbench.errors import ProjectError
 from workbench.project import bounds as B
 from workbench.project.bend_steps import BendStepSI, BendStepSpec, GraspSpec, step_problems
 from workbench.project.common import Coordinate, Loc, Pose, StrictModel, Vec3mm, dotted, field_error
+from workbench.project.grasp_grid import GraspGridSpec
 from workbench.project.paths import ProjectFolders
 from workbench.project.press import (
     AxisRangeMM,
@@ -49,6 +50,7 @@ from workbench.project.press import (
 from workbench.project.units import DEG, MM
 from workbench.sheetmetal.die import Die
 from workbench.sheetmetal.grasp import Grasp
+from workbench.sheetmetal.grasp_grid import GridSettings
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T
 from workbench.sheetmetal.press import PressBrake
 from workbench.sheetmetal.sequence import sequence_problem
@@ -302,6 +304,7 @@ class BendingSpec(StrictModel):
     # mm, die frame: offset of the pose before the part slides against the back-gauge
     lift: Annotated[float, B.span(B.LIFT_MM_OPEN, "mm", lo_open=True)] = 80.0
     # mm: vertical approach / retreat at the blank stack, the regrip station and the pallet
+    grasp_grid: GraspGridSpec = Field(default_factory=GraspGridSpec)  # the search's candidates
     follow: bool = True  # the robot follows the rising flange (False: releases, re-grips)
     retract: Vec3mm = Field(default_factory=lambda: [0.0, -250.0, 60.0])  # in the die frame
     transfer: Annotated[list[Pose], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
@@ -450,6 +453,7 @@ class BendingSpec(StrictModel):
             approach=np.asarray(self.approach, float) * MM,
             lift=self.lift * MM,
             follow=bool(self.follow),
+            grasp_grid=self.grasp_grid.to_si(),
         )
 
 
@@ -470,3 +474,4 @@ class BendingSI:
     approach: NDArray[np.float64]  # (3,) [m] in the die frame, before the back-gauge
     lift: float  # [m] vertical approach / retreat at the stack, regrip station and pallet
     follow: bool  # the robot follows the rising flange during the bend
+    grasp_grid: GridSettings  # the sequence search's candidate grasps

@@ -69,6 +69,12 @@ DIE_LENGTH_MM = (1.0, 200_000.0)
 """The die's longest bend line [mm]."""
 LIFT_MM_OPEN = (0.0, 10_000.0)
 """Bending: vertical approach and retreat at the blank stack, the regrip station and the pallet [mm]: > 0."""
+GRASP_SPACING_MM_OPEN = (0.0, 1_000.0)
+"""Bending: the sequence search's grid of candidate grasps on each flange [mm]: > 0."""
+GRASP_INSET_MM = (0.0, 500.0)
+"""Bending: how far inside a flange's edge a candidate grasp lies at least [mm]."""
+GRASP_YAWS_MAX = 36
+"""Bending: the most gripper yaws a candidate grasp point is tried with."""
 
 # -- the press brake (bending.press) -------------------------------------------------------------------
 PRESS_TOOL_MM = (0.1, 2_000.0)

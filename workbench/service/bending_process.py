@@ -36,10 +36,6 @@ if TYPE_CHECKING:
 Progress = Callable[[float, str], None]
 
 #: Candidate grasps of a search: grid spacing and inset [m], yaws [rad], faces.
-GRASP_SPACING = 0.025
-GRASP_INSET = 0.008
-GRASP_YAWS = (0.0, np.pi / 2, np.pi, -np.pi / 2)
-GRASP_FACES = (1,)
 
 
 def press_of(si: BendingSI) -> PressBrake:
@@ -77,9 +73,11 @@ def sweep_context(svc: BendingService) -> SweepContext:
         setup.link_meshes,
     )
     part = svc.part
-    grasps = grasp_grid(
-        part, spacing=GRASP_SPACING, inset=GRASP_INSET, yaws=GRASP_YAWS, faces=GRASP_FACES
-    )
+    g = si.grasp_grid
+    try:
+        grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
+    except InputError as exc:
+        raise InputError(f"bending.grasp_grid: {str(exc).removeprefix('grasp grid: ')}") from None
     return SweepContext(
         si.part,
         press,

@@ -9,6 +9,7 @@ fixed (flange, then point, then yaw, then face), so a search is repeatable.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import shapely
@@ -19,6 +20,18 @@ from workbench.sheetmetal.part import SheetMetalPart
 
 #: Most candidates a search takes (each is checked by IK at every bend it could serve).
 MAX_GRASPS = 2000
+
+
+@dataclass(frozen=True)
+class GridSettings:
+    """The candidate grid of a search (SI): `spacing` and `inset` [m], the gripper's `yaws`
+    [rad] about the flange normal and the `faces` held (+1 top, -1 bottom); the project's
+    `bending.grasp_grid`."""
+
+    spacing: float = 0.025
+    inset: float = 0.008
+    yaws: tuple[float, ...] = (0.0, np.pi / 2, np.pi, -np.pi / 2)
+    faces: tuple[int, ...] = (1,)
 
 
 def grasp_grid(

@@ -1,0 +1,49 @@
+"""The project file's `bending.grasp_grid`: the candidate grasps a sequence search tries.
+
+Per flange its centroid and a square grid of `spacing` [mm] at least `inset` [mm] inside its
+polygon, each with every yaw [deg] and face listed (`workbench.sheetmetal.grasp_grid`).
+`GraspGridSpec.to_si` returns the `GridSettings` in SI units.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import AfterValidator, Field
+
+from workbench.project import bounds as B
+from workbench.project.common import Angle, StrictModel
+from workbench.project.units import DEG, MM
+from workbench.sheetmetal.grasp_grid import GridSettings
+
+Face = Literal["top", "bottom"]
+
+
+def _distinct(v: list[object]) -> list[object]:
+    if len(set(v)) != len(v):
+        raise ValueError(f"lists a value twice: {v}; give each once")
+    return v
+
+
+class GraspGridSpec(StrictModel):
+    """Candidate grasps of the sequence search: grid `spacing` and `inset` [mm], the gripper's
+    `yaws` [deg] about the flange normal, the `faces` held ("top": the flange's +z face)."""
+
+    # the defaults are `GridSettings()`'s in mm and deg (tested)
+    spacing: Annotated[float, B.span(B.GRASP_SPACING_MM_OPEN, "mm", lo_open=True)] = 25.0
+    inset: Annotated[float, B.span(B.GRASP_INSET_MM, "mm")] = 8.0
+    yaws: Annotated[
+        list[Angle], Field(min_length=1, max_length=B.GRASP_YAWS_MAX), AfterValidator(_distinct)
+    ] = Field(default_factory=lambda: [0.0, 90.0, 180.0, -90.0])
+    faces: Annotated[list[Face], Field(min_length=1, max_length=2), AfterValidator(_distinct)] = (
+        Field(default_factory=lambda: list[Face](["top"]))
+    )
+
+    def to_si(self) -> GridSettings:
+        """Return the grid in SI units (m, rad; faces +1 top, -1 bottom)."""
+        return GridSettings(
+            spacing=self.spacing * MM,
+            inset=self.inset * MM,
+            yaws=tuple(y * DEG for y in self.yaws),
+            faces=tuple(1 if f == "top" else -1 for f in self.faces),
+        )
