@@ -35,8 +35,6 @@ if TYPE_CHECKING:
 
 Progress = Callable[[float, str], None]
 
-#: Candidate grasps of a search: grid spacing and inset [m], yaws [rad], faces.
-
 
 def press_of(si: BendingSI) -> PressBrake:
     """Return the project's press; InputError naming `bending.press` when there is none."""
