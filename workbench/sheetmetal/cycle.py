@@ -250,13 +250,11 @@ def _carry_the_wrist(q: F64, idx: list[int]) -> None:
     swung a 300 mm part through the press). A robot without a wrist (dof <= 3) keeps home."""
     if q.shape[1] <= ARM_JOINTS or not idx:
         return
-    known = np.asarray(idx)
-    for i in range(len(q)):
-        if i in idx:
-            continue
-        before, after = known[known < i], known[known > i]
-        if len(before) and len(after):
-            q[i, ARM_JOINTS:] = 0.5 * (q[before[-1], ARM_JOINTS:] + q[after[0], ARM_JOINTS:])
+    known = np.asarray(idx)  # ascending
+    for i in np.setdiff1d(np.arange(len(q)), known):
+        k = int(np.searchsorted(known, i))
+        if 0 < k < len(known):
+            q[i, ARM_JOINTS:] = 0.5 * (q[known[k - 1], ARM_JOINTS:] + q[known[k], ARM_JOINTS:])
 
 
 @dataclass(eq=False)

@@ -397,19 +397,17 @@ def _search(
     vmax = ctx.reach.model.max_velocity
     station_free: dict[tuple[int, ...], NDArray[np.bool_]] = {}
 
-    def _at_free_station(
-        e: BendEval, done: tuple[int, ...], cache: dict[tuple[int, ...], NDArray[np.bool_]]
-    ) -> BendEval:
+    def _at_free_station(e: BendEval, done: tuple[int, ...]) -> BendEval:
         """Return `e` with only the grasps the robot takes collision-free at the regrip
         station (the part lying there, folded by `done`) left in its `at_station`."""
         if e.at_station is None or robot_free is None or ctx.T_world_regrip is None:
             return e
-        if done not in cache:
+        if done not in station_free:
             p = ordered_part(part, done, e.bend)
             reach, q = reach_where_part_rests(ctx, ctx.T_world_regrip, len(done), p)
             lying = (fold_state(p, len(done), check=False).solid(), ctx.T_world_regrip)
-            cache[done] = _free(robot_free, q, reach, lying)
-        return replace(e, at_station=e.at_station & cache[done])
+            station_free[done] = _free(robot_free, q, reach, lying)
+        return replace(e, at_station=e.at_station & station_free[done])
 
     def finish(node: _Node) -> None:
         """Add the move to the pallet to a complete sequence (grasps that reach it)."""
@@ -540,7 +538,7 @@ def _search(
             tally.runs.append(run.stats)
             for k, r in zip(needed, run.results, strict=True):
                 if r is not None:
-                    evals[k] = _at_free_station(r, k[0], station_free)
+                    evals[k] = _at_free_station(r, k[0])
             tally.candidates += sum(r is not None for r in run.results)
             report(
                 min(0.5, 0.5 * len(evals) / max(1, nb * 2 ** (nb - 1))),
