@@ -8,6 +8,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -65,6 +67,7 @@ def _closed_port() -> int:
         return int(s.getsockname()[1])
 
 
+@pytest.mark.slow
 def test_sweep_bending_prints_ranked_plans_and_first_reasons(tmp_path: Path) -> None:
     # The U-channel's known-bad order (the tall flange first) is rejected naming the punch;
     # the figures line names the engine. The plans printed are the service's.

@@ -57,8 +57,14 @@ def _workflows(path: Path) -> list[str]:
     ]
 
 
+def _slow_if_press(path: Path, workflow: str) -> tuple[pytest.MarkDecorator, ...]:
+    """A press cell's bending program replans its whole cycle (a minute of frames): slow."""
+    bending = load_project(path).bending
+    return (pytest.mark.slow,) if workflow == "bending" and bending and bending.press else ()
+
+
 CASES = [
-    pytest.param(path.name, wf, fmt, id=f"{path.stem}-{wf}-{fmt}")
+    pytest.param(path.name, wf, fmt, id=f"{path.stem}-{wf}-{fmt}", marks=_slow_if_press(path, wf))
     for path in PROJECTS
     for wf in _workflows(path)
     for fmt in EXPORT_FORMATS

@@ -62,12 +62,19 @@ def _workflows(path: Path) -> list[str]:
     return found
 
 
+def _slow_if_press(path: Path, workflow: str) -> tuple[pytest.MarkDecorator, ...]:
+    """A press cell's bending program replans its whole cycle (a minute of frames): slow."""
+    bending = load_project(path).bending
+    return (pytest.mark.slow,) if workflow == "bending" and bending and bending.press else ()
+
+
 CASES = [
     pytest.param(
         path.name,
         wf,
         fmt,
         id=f"{path.stem}-{wf}-{fmt}",
+        marks=_slow_if_press(path, wf),
     )
     for path in PROJECTS
     for wf in _workflows(path)

@@ -65,6 +65,7 @@ def test_the_best_plan_replays_collision_free_and_ray_agrees(path: Path) -> None
     assert on_ray.rejected == serial.rejected
 
 
+@pytest.mark.slow
 def test_the_pan_plans_with_regrips_and_the_short_segment() -> None:
     res = Workbench.open(PAN).bending.find_sequences(engine="serial")
     assert res.plans, res.note
@@ -88,6 +89,7 @@ def test_without_the_short_segment_the_pans_last_walls_hit_the_punch() -> None:
     assert any("hits the punch" in r for r in third)
 
 
+@pytest.mark.slow
 def test_a_regrip_counts_only_where_the_robot_takes_the_part_free() -> None:
     """The pan needs regrips; with the robot blocked at the station (and free elsewhere) the
     cheap stage finds no plan and says no regrip is possible."""

@@ -72,6 +72,7 @@ def test_an_unreachable_back_gauge_stop_names_the_bend_and_the_axis() -> None:
     assert "outside its range 5..20 mm (bending.press.backgauge.x)" in reasons
 
 
+@pytest.mark.slow
 def test_twelve_bends_are_bounded_by_the_time_limit() -> None:
     # A corrugated strip: 13 flanges in a chain, 12 gentle bends alternately up and down; far
     # more orders than the limit lets the search try.
