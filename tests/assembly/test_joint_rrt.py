@@ -22,14 +22,13 @@ from workbench.assembly.motion import path_samples
 from workbench.assembly.planners.joint_rrt import (
     CarriedPath,
     CarrySpace,
-    bisection_order,
     plan_carried_path,
-    plan_joint_rrt_connect,
 )
 from workbench.collision import RobotCollisionChecker, Solid
 from workbench.errors import CollisionError, PlanningError, UnreachableError
 from workbench.geometry.transforms import xyz_rpy_to_transform
 from workbench.kinematics import DHRobot, link_meshes
+from workbench.motion.joint_rrt import bisection_order, plan_joint_rrt_connect
 
 ROBOT = DHRobot.mz07()
 Q_HOME = np.array([0.0, 0.0, 0.0, 0.0, -np.pi / 2, 0.0])

@@ -43,6 +43,7 @@ from workbench.geometry import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import RobotModel
 from workbench.kinematics.configurations import branch_solutions
+from workbench.motion.joint_rrt import bisection_order, plan_joint_rrt_connect
 
 FloatArray = NDArray[np.float64]
 CARRIED_PART = "carried part"  # the held part's name among the bodies checked for contact
@@ -59,21 +60,6 @@ class CarriedPath(PartPath):
 
     joints: FloatArray | None = None
     branch: int = -1
-
-
-def bisection_order(n: int) -> NDArray[np.int64]:
-    """Return 0..n-1 coarse to fine: the last, the middle, the quarters, ... (each once)."""
-    order = [n - 1]
-    seen = {n - 1}
-    step = n
-    while step > 1:
-        step = (step + 1) // 2
-        for i in range(step - 1, n, step):
-            if i not in seen:
-                seen.add(i)
-                order.append(i)
-    order += [i for i in range(n) if i not in seen]
-    return np.asarray(order, dtype=np.int64)
 
 
 class CarrySpace:
@@ -239,120 +225,6 @@ class CarrySpace:
         return np.concatenate(
             [Q[:1]] + [self.edge_samples(Q[i], Q[i + 1]) for i in range(len(Q) - 1)]
         )
-
-
-# -- RRT-Connect ------------------------------------------------------------------------
-class _Tree:
-    def __init__(self, root: FloatArray) -> None:
-        self.q = np.empty((64, len(root)))
-        self.parent = np.empty(64, dtype=np.int64)
-        self.n = 0
-        self.add(root, -1)
-
-    def add(self, q: FloatArray, parent: int) -> int:
-        if self.n == len(self.q):
-            self.q = np.concatenate([self.q, np.empty_like(self.q)])
-            self.parent = np.concatenate([self.parent, np.empty_like(self.parent)])
-        self.q[self.n], self.parent[self.n] = q, parent
-        self.n += 1
-        return self.n - 1
-
-    def branch(self, i: int) -> list[FloatArray]:
-        out = []
-        while i >= 0:
-            out.append(self.q[i].copy())
-            i = int(self.parent[i])
-        return out
-
-
-_TRAPPED, _ADVANCED, _REACHED = 0, 1, 2
-
-
-def _extend(tree: _Tree, q: FloatArray, space: CarrySpace, step: float) -> tuple[int, int]:
-    """Grow `tree` one step of at most `step` [m] toward q; return (status, new node)."""
-    d = space.distance(tree.q[: tree.n], q)
-    i = int(np.argmin(d))
-    di = float(d[i])
-    if di < 1e-12:
-        return _REACHED, i
-    target = q if di <= step else tree.q[i] + (q - tree.q[i]) * (step / di)
-    if not space.motion_free(tree.q[i], target):
-        return _TRAPPED, -1
-    j = tree.add(target, i)
-    return (_REACHED if di <= step else _ADVANCED), j
-
-
-def shortcut_joints(
-    path: list[FloatArray], space: CarrySpace, rng: np.random.Generator, iterations: int = 50
-) -> list[FloatArray]:
-    """Return the joint path with random pairs of its configurations joined straight where free."""
-    path = list(path)
-    for _ in range(iterations):
-        if len(path) < 3:
-            break
-        i, j = sorted(rng.choice(len(path), 2, replace=False))
-        if j - i >= 2 and space.motion_free(path[i], path[j]):
-            path = path[: i + 1] + path[j:]
-    return path
-
-
-def plan_joint_rrt_connect(
-    space: CarrySpace,
-    q_start: ArrayLike,
-    q_goal: ArrayLike,
-    *,
-    seed: int = 0,
-    max_time: float = 10.0,
-    max_nodes: int = 20000,
-    range_: float | None = None,
-    shortcut_iterations: int = 50,
-) -> tuple[FloatArray, int]:
-    """Return (joints (K, dof) [rad] from q_start to q_goal, tree nodes) by RRT-Connect.
-
-    seed: rng seed; max_time [s]; range_: extension step [m] of the travel bound Σ|Δq|·w
-    (default 1/10 of the bound across the joint limits); samples are uniform within the
-    joint limits. Raises CollisionError if an end is not valid (saying what touches),
-    PlanningError if no path is found in time.
-    """
-    qs, qg = (np.asarray(q, float).reshape(-1) for q in (q_start, q_goal))
-    for name, q in (("q_start", qs), ("q_goal", qg)):
-        if q.shape != (space.dof,) or not np.all(np.isfinite(q)):
-            raise InputError(f"{name} must be {space.dof} finite joint values [rad], got {q}")
-        if not space.valid(q):
-            raise CollisionError(
-                f"{name.split('_')[1]} configuration {np.round(np.degrees(q), 1).tolist()} deg "
-                f"is not valid: {space.explain(q)}; move the {name.split('_')[1]} pose or the grasp"
-            )
-    lo, hi = space.limits[:, 0], space.limits[:, 1]
-    step = 0.1 * float(space.distance(lo, hi)) if range_ is None else float(range_)
-    if not (np.isfinite(step) and step > 0):
-        raise InputError(f"range_ must be > 0 m, got {range_!r}")
-    rng = np.random.default_rng(seed)
-    if space.motion_free(qs, qg):
-        return np.stack([qs, qg]), 2
-    ta, tb = _Tree(qs), _Tree(qg)
-    t0 = time.perf_counter()
-    while time.perf_counter() - t0 < max_time and ta.n + tb.n < max_nodes:
-        q = rng.uniform(lo, hi)
-        status, i = _extend(ta, q, space, step)
-        if status != _TRAPPED:
-            target = ta.q[i].copy()
-            while True:
-                status2, j = _extend(tb, target, space, step)
-                if status2 != _ADVANCED:
-                    break
-            if status2 == _REACHED:
-                path = ta.branch(i)[::-1] + tb.branch(j)[1:]
-                if not np.array_equal(path[0], qs):
-                    path = path[::-1]
-                path = shortcut_joints(path, space, rng, shortcut_iterations)
-                return np.asarray(path), ta.n + tb.n
-        ta, tb = tb, ta
-    raise PlanningError(
-        f"joint-space RRT-Connect found no path within max_time={max_time:g} s / "
-        f"max_nodes={max_nodes} ({ta.n + tb.n} nodes grown); raise max_time, or free the "
-        "robot's way (its links, tool and the carried part are all checked)"
-    )
 
 
 # -- ends by inverse kinematics ---------------------------------------------------------
