@@ -54,6 +54,13 @@ from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.part import SheetMetalPart
 from workbench.sheetmetal.press_check import PartHit, check_states
+from workbench.sheetmetal.transit import (
+    Carried,
+    TransitReport,
+    TransitSpace,
+    carried_hits_between,
+    route_transits,
+)
 
 F64 = NDArray[np.float64]
 Progress = Callable[[float, str], None]
@@ -95,6 +102,7 @@ class BendingCycle:
     robot_report: EnginePathReport
     first_problem: str | None
     first_step: int | None = None  # the step (bend) whose grasp was in use at the problem
+    transits: TransitReport = TransitReport()  # the moves between stations sent around
 
     @property
     def times(self) -> F64:
@@ -158,6 +166,8 @@ class BendingCycle:
             f"{len(self.frames.times)} frames checked ({self.configuration})."
         )
         tail = f" Robot: {self.robot_report.message}."
+        if self.transits.describe():
+            tail += f" Detours: {self.transits.describe()}."
         if self.first_problem is None:
             return head + " Collision-free." + tail
         return head + f" First collision: {self.first_problem}." + tail
@@ -192,16 +202,17 @@ def following_fraction(q_a: F64, q_b: F64, seconds: float, vmax: F64) -> float:
     return float(np.clip(np.ceil(need * 100.0 - 1e-9) / 100.0, 0.01, 1.0))
 
 
-def plan_cycle_motion(
+def cycle_joints(
     model: RobotModel,
     T_world_base: F64,
     T_flange_tcp: F64,
     path: CyclePath,
     q_home: F64,
     branch: int | None = None,
-) -> tuple[F64, str, Trajectory]:
-    """Return joints at every waypoint (N, dof), the configuration label and the trajectory
-    (`branch`: the arm configuration's IK branch to keep; None: the one nearest home)."""
+) -> tuple[F64, str]:
+    """Return joints at every waypoint (N, dof) and the configuration label (`branch`: the
+    arm configuration's IK branch to keep; None: the one nearest home); the home waypoints
+    take the home arm and the wrist carried between its neighbours (`_carry_the_wrist`)."""
     idx = [i for i, w in enumerate(path.waypoints) if w.T_world_tcp is not None]
     T = np.array([path.waypoints[i].T_world_tcp for i in idx])
     T_bf = invert_transform(T_world_base) @ T @ invert_transform(T_flange_tcp)
@@ -220,6 +231,13 @@ def plan_cycle_motion(
     q = np.tile(np.asarray(q_home, float), (len(path.waypoints), 1))
     q[idx] = ik.q
     _carry_the_wrist(q, idx)
+    return q, ik.configuration
+
+
+def cycle_trajectory(model: RobotModel, path: CyclePath, q: F64) -> Trajectory:
+    """Return the jerk-limited trajectory through the waypoints' joints q (N, dof) [rad]:
+    exact stops and holds where the path says, bend-following moves at the ram's pace."""
+    labels = [w.label for w in path.waypoints]
     vmax = np.asarray(model.max_velocity, float)
     speeds = _segment_speeds(q, path, vmax, labels)
     stops = [i for i, w in enumerate(path.waypoints) if w.stop]
@@ -233,7 +251,7 @@ def plan_cycle_motion(
         labels=labels,
     )
     holds = [(i, w.hold) for i, w in enumerate(path.waypoints) if w.hold > 0]
-    return q, ik.configuration, traj.with_holds(holds)
+    return traj.with_holds(holds)
 
 
 #: The arm's joints (the first three) that a move via home takes to the home joints; the wrist
@@ -302,11 +320,31 @@ def check_cycle(
     report = progress or (lambda f, m: None)
     report(0.0, "building the cycle's waypoints")
     path = cycle_path(part, steps, cell)
-    report(0.1, "inverse kinematics and the jerk-limited trajectory")
+    report(0.05, "inverse kinematics")
     branch = home_branch(model, cell.q_home)
-    q_wp, label, traj = plan_cycle_motion(
-        model, T_world_base, T_flange_tcp, path, cell.q_home, branch
+    q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
+    scene = _PressScene(part, path, cell, cell_obstacles(cell_bodies), PressObstacles(cell.press))
+    open_z = cell.press.ram.open + part.thickness
+    report(0.1, "checking the moves between stations (detours where one is blocked)")
+
+    def space_of(ph: Phase) -> TransitSpace:
+        carried = None
+        if ph.kind == "carried":
+            k = min(int(ph.step), len(steps) - 1)
+            g = ph.grasp or steps[k].grasp
+            station = ph.station or steps[k].station
+            carried = Carried(
+                fold_state(part, ph.step, check=False),
+                T_part_tcp(part, g, ph.step),
+                scene.at(station, open_z, _last_stop(path, ph), -1),
+            )
+        return TransitSpace(model, T_world_base, T_flange_tcp, checker, policy, carried)
+
+    path, q_wp, transits = route_transits(
+        path, q_wp, space_of, lambda q: T_world_base @ model.fk(q) @ T_flange_tcp
     )
+    report(0.2, "the jerk-limited trajectory")
+    traj = cycle_trajectory(model, path, q_wp)
     times = _frame_times(traj, cell.frame_dt)
     q = traj.at(times)[0]
     from workbench.sheetmetal.transfer import world_tcp
@@ -318,7 +356,6 @@ def check_cycle(
     # Hold times shift later waypoints: with_holds already moved waypoint_times; the hold at
     # waypoint i lasts [arrive[i], arrive[i] + hold].
     report(0.3, f"checking the part in {len(times)} frames")
-    scene = _PressScene(part, path, cell, cell_obstacles(cell_bodies), PressObstacles(cell.press))
     states: list[FoldedState] = []
     T_part = np.zeros((len(times), 4, 4))
     step = np.zeros(len(times))
@@ -327,7 +364,6 @@ def check_cycle(
     phase_idx = np.zeros(len(times), dtype=np.int64)
     obstacles: list[Obstacles] = []
     press = cell.press
-    open_z = press.ram.open + part.thickness
     fold_cache: dict[float, FoldedState] = {}
     follow_error = np.zeros(len(times))
 
@@ -369,11 +405,11 @@ def check_cycle(
             bp = bend_pose(state, k, steps[k].grasp, press, press.station(station))
             Tp = press.T_world_die @ bp.T_die_part
             if not ph.pressed:
-                T_grip = Tp @ T_part_tcp(part, steps[k].grasp, s)
+                T_grip = Tp @ T_part_tcp(part, steps[k].grasp, s, state)
                 follow_error[n] = float(np.linalg.norm(T_grip[:3, 3] - T_tcp[n][:3, 3]))
         else:
             grasp = ph.grasp or steps[min(int(np.floor(s + 1e-9)), len(steps) - 1)].grasp
-            Tp = T_tcp[n] @ invert_transform(T_part_tcp(part, grasp, s))
+            Tp = T_tcp[n] @ invert_transform(T_part_tcp(part, grasp, s, state))
         states.append(state)
         T_part[n] = Tp
         step[n] = s
@@ -381,6 +417,17 @@ def check_cycle(
         stop_idx[n] = last_stop
         obstacles.append(scene.at(station, z, last_stop, bend))
     hits = check_states(states, T_part, obstacles)
+    carried: dict[int, TransitSpace | None] = {}
+
+    def carried_space(k: int) -> TransitSpace | None:
+        if k not in carried:
+            ph = path.phases[k]
+            carried[k] = space_of(ph) if ph.kind == "carried" else None
+        return carried[k]
+
+    between = carried_hits_between(times, q, lambda t: traj.at(t)[0], phase_idx, carried_space)
+    for n, hit in between.items():
+        hits[n] = hits[n] or hit
     report(0.55, "checking the robot against the part where it rests")
     robot_part = _robot_vs_resting_part(checker, path, phase_idx, q, T_part, states)
     report(0.6, "checking the robot against the cell and the press")
@@ -404,7 +451,7 @@ def check_cycle(
     if first is not None:
         n = int(np.searchsorted(times, first[0], side="right")) - 1
         ph = path.phases[int(phase_idx[max(n, 0)])]
-        first_step = int(ph.bend) if ph.kind == "bend" else min(int(ph.step), len(steps) - 1)
+        first_step = int(ph.bend) if ph.kind == "bend" else _grasp_step(ph, steps)
     report(1.0, "done")
     return BendingCycle(
         part,
@@ -417,6 +464,7 @@ def check_cycle(
         robot,
         None if first is None else first[1],
         first_step,
+        transits,
     )
 
 
@@ -455,6 +503,31 @@ def _bend_fraction(
     span = float(np.linalg.norm(b - a))
     share = 1.0 if span < 1e-12 else float(np.clip(np.dot(q_t - a, b - a) / span**2, 0.0, 1.0))
     return float(fr[k] + share * (fr[k + 1] - fr[k]))
+
+
+def _grasp_step(ph: Phase, steps: list[CycleStep]) -> int:
+    """Return the step whose grasp is in use in phase `ph`: on the way to the regrip station
+    the part is still held by an earlier step's grasp than its fold step's."""
+    k = min(int(ph.step), len(steps) - 1)
+    if ph.grasp is not None:
+        for j in range(k, -1, -1):
+            if steps[j].grasp is ph.grasp:
+                return j
+    return k
+
+
+def _last_stop(path: CyclePath, ph: Phase) -> int:
+    """Return the back-gauge setting during phase `ph`: its own, else the last one set by a
+    phase before it (-1: none yet)."""
+    out = -1
+    for other in path.phases:
+        if other.start > ph.start:
+            break
+        k = _stop_of(path, other)
+        out = k if k >= 0 else out
+        if other is ph:
+            break
+    return out
 
 
 def _stop_of(path: CyclePath, ph: Phase) -> int:

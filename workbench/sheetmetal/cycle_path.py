@@ -29,7 +29,7 @@ from workbench.sheetmetal.bend_setup import (
     gauge_stop,
     part_points,
 )
-from workbench.sheetmetal.folding import fold_state
+from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
 from workbench.sheetmetal.part import SheetMetalPart
 from workbench.sheetmetal.press import PressBrake, ram_time
@@ -98,7 +98,9 @@ Action = Literal["", "grip", "release", "press_close", "press_open", "press_bend
 class Waypoint:
     """A robot target: TCP pose (4, 4) [m] in the world (None: the home joints), its label,
     whether the robot stops there, the hold [s] after it and what happens during the hold;
-    `bend_time` [s]: for a bend-following segment ending here, how long the ram takes for it."""
+    `bend_time` [s]: for a bend-following segment ending here, how long the ram takes for it;
+    `free`: the move to it is a transit between stations, not a straight or following move,
+    and may go around obstacles (`transit.route_transits`)."""
 
     T_world_tcp: F64 | None
     label: str
@@ -106,6 +108,7 @@ class Waypoint:
     hold: float = 0.0
     action: Action = ""
     bend_time: float = 0.0
+    free: bool = False
 
 
 @dataclass(frozen=True, eq=False)
@@ -158,9 +161,12 @@ def _shift(T: F64, R_world_die: F64, offset: F64) -> F64:
     return out
 
 
-def T_part_tcp(part: SheetMetalPart, grasp: Grasp, step: float) -> F64:
-    """Return the TCP (4, 4) [m] in the part frame at fold `step` (float: partway)."""
-    state = fold_state(part, step, check=False)
+def T_part_tcp(
+    part: SheetMetalPart, grasp: Grasp, step: float, state: FoldedState | None = None
+) -> F64:
+    """Return the TCP (4, 4) [m] in the part frame at fold `step` (float: partway); `state`:
+    the part folded to `step` where the caller has it."""
+    state = fold_state(part, step, check=False) if state is None else state
     g = part.flange_index(grasp.flange)
     return state.T_part_flange[g] @ T_flange_grasp(part, grasp)  # type: ignore[no-any-return]
 
@@ -201,7 +207,7 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     g0 = steps[0].grasp
     T_blank_tcp = cell.T_world_blank @ T_part_tcp(part, g0, 0)
     phases.append(Phase("rest", 0, 2, 0.0, None, cell.T_world_blank, label="blank on the stack"))
-    add(Waypoint(_lift(T_blank_tcp, lift), "above the blank", stop=True))
+    add(Waypoint(_lift(T_blank_tcp, lift), "above the blank", stop=True, free=True))
     i_pick = add(
         Waypoint(T_blank_tcp, "pick the blank", stop=True, hold=cell.settle, action="grip")
     )
@@ -217,8 +223,18 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             T_rest = cell.T_world_regrip
             T_put = T_rest @ T_part_tcp(part, prev, k)
             if cell.via_home:
-                add(Waypoint(None, f"via home to the regrip station (before bend {st.bend!r})"))
-            add(Waypoint(_lift(T_put, lift), f"above the regrip station (before bend {st.bend!r})"))
+                add(
+                    Waypoint(
+                        None, f"via home to the regrip station (before bend {st.bend!r})", free=True
+                    )
+                )
+            add(
+                Waypoint(
+                    _lift(T_put, lift),
+                    f"above the regrip station (before bend {st.bend!r})",
+                    free=True,
+                )
+            )
             i_put = add(
                 Waypoint(
                     T_put,
@@ -233,7 +249,7 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             )
             T_new = T_rest @ T_part_tcp(part, g, k)
             add(Waypoint(_lift(T_put, lift), "off the regrip station"))
-            add(Waypoint(_lift(T_new, lift), "above the new grasp"))
+            add(Waypoint(_lift(T_new, lift), "above the new grasp", free=True))
             i_take = add(
                 Waypoint(
                     T_new,
@@ -269,13 +285,13 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         # In front of the die, over to just above the stop, then straight down onto the die
         # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
         if cell.via_home and wps[-1].label.startswith(("lift the blank", "off the regrip")):
-            add(Waypoint(None, f"via home to the die for bend {st.bend!r}"))
+            add(Waypoint(None, f"via home to the die for bend {st.bend!r}", free=True))
         # in front: the approach offset, or farther until the whole part is in front of the
         # punch and beam (`CLEAR` before the bend line), so the moves to and from it do not
         # sweep the part through the press
         front = _shift(tcp[0], R_wd, clear_of_tools(cell.approach, pts_die[0]))
         over = _shift(tcp[0], R_wd, np.array([0.0, 0.0, DROP]))
-        add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True))
+        add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True, free=True))
         for j, T in enumerate(_line(front, over, cell.line_step)[1:]):
             add(Waypoint(T, f"onto the die for bend {st.bend!r} ({j + 1})"))
         wps[-1] = Waypoint(over, f"over the stop for bend {st.bend!r}", stop=True)
@@ -383,11 +399,11 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
         prev = g
     g_last = steps[-1].grasp
     for i, T in enumerate(cell.T_world_vias):
-        add(Waypoint(T, f"transfer via {i + 1}"))
+        add(Waypoint(T, f"transfer via {i + 1}", free=True))
     T_drop = cell.T_world_pallet @ T_part_tcp(part, g_last, nb)
     if cell.via_home and not len(cell.T_world_vias):
-        add(Waypoint(None, "via home to the pallet"))
-    add(Waypoint(_lift(T_drop, lift), "above the pallet"))
+        add(Waypoint(None, "via home to the pallet", free=True))
+    add(Waypoint(_lift(T_drop, lift), "above the pallet", free=True))
     i_drop = add(
         Waypoint(
             T_drop, "put the part on the pallet", stop=True, hold=cell.release, action="release"
@@ -395,7 +411,7 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     )
     phases.append(Phase("carried", start, i_drop, float(nb), g_last, label="to the pallet"))
     add(Waypoint(_lift(T_drop, lift), "off the pallet"))
-    i_home = add(Waypoint(None, "home", stop=True))
+    i_home = add(Waypoint(None, "home", stop=True, free=True))
     phases.append(
         Phase(
             "rest",

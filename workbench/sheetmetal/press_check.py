@@ -73,6 +73,23 @@ def _solid_hits(state: FoldedState, T_world_part: F64, obstacles: Obstacles, idx
     return shape.mesh is not None and bool(winding_number(shape.mesh, p)[0] > 0.5)
 
 
+def frame_hits(
+    state: FoldedState, T_world_part: F64, obstacles: Obstacles
+) -> list[tuple[int, int, int]]:
+    """Return (frame, flange, obstacle) index triples where the part folded as `state`, at
+    the poses `T_world_part` (F, 4, 4) [m], touches `obstacles`: its OBB tree batched over
+    the frames; the cell's non-box shapes and the press's tools confirmed exactly."""
+    T = np.asarray(T_world_part, float)
+    tree = state.obb_tree(0)
+    Tg = T @ state.T_part_flange[0]
+    rep = confirm_exact(tree, tree.collide_frames(obstacles.boxes, Tg), obstacles, Tg)
+    return [
+        (int(f), int(fl), int(o))
+        for f, fl, o in rep.hits
+        if not is_tool(obstacles.names[int(o)]) or _solid_hits(state, T[int(f)], obstacles, int(o))
+    ]
+
+
 def check_states(
     states: Sequence[FoldedState],
     T_world_part: F64,
@@ -85,15 +102,7 @@ def check_states(
     """
     out: list[PartHit | None] = []
     for state, T, obs in zip(states, T_world_part, obstacles, strict=True):
-        tree = state.obb_tree(0)
-        Tg = (T @ state.T_part_flange[0])[None]
-        rep = confirm_exact(tree, tree.collide_frames(obs.boxes, Tg), obs, Tg)
-        hits = [(int(f), int(o)) for _, f, o in rep.hits]
-        keep = []
-        for f, o in hits:
-            name = obs.names[o]
-            if not is_tool(name) or _solid_hits(state, T, obs, o):
-                keep.append((f, o))
+        keep = [(fl, o) for _, fl, o in frame_hits(state, T[None], obs)]
         if not keep:
             out.append(None)
             continue
