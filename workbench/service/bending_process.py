@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from workbench.collision.plan_check import shared_engine
 from workbench.errors import InputError
 from workbench.project.bending import BendingSI, BendStepSI
 from workbench.sheetmetal.airbend import short_flanges
@@ -195,14 +196,18 @@ def search(
             estimated=False,
         )
 
+    fast, _ = shared_engine(wb.checker, wb.collision_policy)
+
     def robot_free(q: np.ndarray, lying: tuple[Any, np.ndarray] | None) -> np.ndarray:
         scene = None if lying is None else PartScene(wb.checker, *lying)
+
+        def hits(qi: np.ndarray) -> bool:
+            if fast is not None:
+                return fast.check(qi).colliding
+            return bool(wb.checker.check(qi, distance=False).colliding)
+
         return np.array(
-            [
-                not wb.checker.check(qi, distance=False).colliding
-                and (scene is None or scene.link_hit(qi) is None)
-                for qi in q
-            ]
+            [not hits(qi) and (scene is None or scene.link_hit(qi) is None) for qi in q]
         )
 
     return find_sequences(

@@ -227,7 +227,8 @@ class BendEval:
 
     `sides[0]`: the child's side facing the robot, `sides[1]`: the parent's. Per grasp
     candidate: `grasp_ok` (G,), its first `grasp_reason`, and the joints (G, dof) [rad] at
-    the placement (`q0`) and at the end of the bend (`q1`), NaN where not reachable.
+    the placement (`q0`), at the end of the bend (`q1`) and in front of the die before it
+    (`q_front`), NaN where not reachable.
     """
 
     done: tuple[int, ...]
@@ -240,6 +241,7 @@ class BendEval:
     q0: F64
     q1: F64
     at_station: NDArray[np.bool_] | None = None  # (G,) reachable at the regrip station before it
+    q_front: F64 | None = None
 
     @property
     def feasible(self) -> bool:
@@ -414,7 +416,7 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
     gside = np.array([0 if in_child_side(part, k, f) else 1 for f in gflange], dtype=np.int64)
     ok = np.zeros(G, bool)
     reasons: list[str | None] = [None] * G
-    q0, q1 = nan_q.copy(), nan_q.copy()
+    q0, q1, q_front = nan_q.copy(), nan_q.copy(), nan_q.copy()
     robot_press = ctx.robot_press()
     for s in (0, 1):
         idx = np.flatnonzero(gside == s)
@@ -451,6 +453,7 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         reach_f = reach[: nf * n].reshape(nf, n)
         q_f = q[: nf * n].reshape(nf, n, dof)
         k0 = nf * n + onto.shape[0] * n
+        q_in_front = q[k0 - n : k0]  # onto's last row: in front of the die
         reach_onto: NDArray[np.bool_] = np.all(reach[nf * n : k0].reshape(-1, n), axis=0)
         reach_out: NDArray[np.bool_] = np.all(reach[k0:].reshape(-1, n), axis=0)
         depth = [
@@ -468,6 +471,9 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         speed = _following_speed(ctx, q_f, depth)
         hits = _tool_hits(ctx, tcp, robot_press)
         arm_hits = _links_hit(ctx, q_f.reshape(-1, dof), robot_press).reshape(nf, n)
+        arm_aside = _links_hit(ctx, q[nf * n :], robot_press).reshape(-1, n)
+        arm_onto: NDArray[np.bool_] = np.any(arm_aside[: k0 // n - nf], axis=0)
+        arm_out: NDArray[np.bool_] = np.any(arm_aside[k0 // n - nf :], axis=0)
         for m, i in enumerate(idx):
             g = ctx.grasps[i]
             label = grasp_label(g)
@@ -511,13 +517,29 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
                     f"{np.degrees(states_f[j].angles[k]):.0f}° of the bend"
                 )
                 continue
+            if arm_onto[m] or arm_out[m]:
+                when = "onto the die" if arm_onto[m] else "out of the die (lifted, pulled back)"
+                reasons[i] = (
+                    f"bend {name!r}: grasp {label}: the arm hits the press on the way {when}"
+                )
+                continue
             q_end = q_f[-1]
-            ok[i], q0[i], q1[i] = True, q_f[0, m], q_end[m]
+            ok[i], q0[i], q1[i], q_front[i] = True, q_f[0, m], q_end[m], q_in_front[m]
     station_ok = None
     if ctx.T_world_regrip is not None:
         station_ok = reach_where_part_rests(ctx, ctx.T_world_regrip, k, part)[0]
     return BendEval(
-        done, bend, None, (sides[0], sides[1]), gside, ok, tuple(reasons), q0, q1, station_ok
+        done,
+        bend,
+        None,
+        (sides[0], sides[1]),
+        gside,
+        ok,
+        tuple(reasons),
+        q0,
+        q1,
+        station_ok,
+        q_front,
     )
 
 

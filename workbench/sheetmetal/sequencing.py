@@ -228,7 +228,10 @@ against itself and the cell and, given `lying` = (mesh, T_world), its links agai
 
 
 def _free(
-    robot_free: RobotFree, q: F64, ok: NDArray[np.bool_], lying: tuple[trimesh.Trimesh, F64]
+    robot_free: RobotFree,
+    q: F64,
+    ok: NDArray[np.bool_],
+    lying: tuple[trimesh.Trimesh, F64] | None,
 ) -> NDArray[np.bool_]:
     """Return (G,) True where the robot at `q` (G, dof) is collision-free (only `ok` ones
     are checked; the others stay False)."""
@@ -409,6 +412,28 @@ def _search(
             station_free[done] = _free(robot_free, q, reach, lying)
         return replace(e, at_station=e.at_station & station_free[done])
 
+    def _robot_free_at_die(e: BendEval) -> BendEval:
+        """Return `e` with the grasps whose robot collides (with itself or the cell) in front
+        of the die, at the stop or at the end of the bend refused, naming where."""
+        if robot_free is None or e.q_front is None or not e.grasp_ok.any():
+            return e
+        ok = e.grasp_ok.copy()
+        reasons = list(e.grasp_reason)
+        name = names[e.bend]
+        for q, where in (
+            (e.q_front, "in front of the die"),
+            (e.q0, "at the stop"),
+            (e.q1, "at the end of the bend"),
+        ):
+            free = _free(robot_free, q, ok, None)
+            for i in np.flatnonzero(ok & ~free):
+                reasons[i] = (
+                    f"bend {name!r}: grasp {grasp_label(ctx.grasps[i])}: the robot collides "
+                    f"(with itself or the cell) {where}"
+                )
+            ok &= free
+        return replace(e, grasp_ok=ok, grasp_reason=tuple(reasons))
+
     def finish(node: _Node) -> None:
         """Add the move to the pallet to a complete sequence (grasps that reach it)."""
         to_pallet = transit_time(node.q1, q_pallet, vmax)
@@ -538,7 +563,7 @@ def _search(
             tally.runs.append(run.stats)
             for k, r in zip(needed, run.results, strict=True):
                 if r is not None:
-                    evals[k] = _at_free_station(r, k[0])
+                    evals[k] = _at_free_station(_robot_free_at_die(r), k[0])
             tally.candidates += sum(r is not None for r in run.results)
             report(
                 min(0.5, 0.5 * len(evals) / max(1, nb * 2 ** (nb - 1))),
@@ -588,6 +613,8 @@ def _search(
         compute=sum(r.compute_s for r in runs),
         rounds=tally.rounds,
     )
+    # found in order of the estimate; ranked by the planned cycles' times once verified
+    plans.sort(key=lambda p: (p.regrips, p.flips, p.cycle_time))
     if not plans:
         note += "no feasible sequence: every branch was pruned (see rejected for the first reasons)"
     report(1.0, "done")
