@@ -120,9 +120,11 @@ def select_solution(
     if controller_ranges is not None:
         rng = np.asarray(controller_ranges, float).reshape(model.dof, 2)
         qc = model.convention.to_controller(sols)
-        # half-open [lo, hi): the solutions inside win; only where none is (a joint on a
-        # boundary, moved across it by rounding) do those within RANGE_TOL of a range count
-        inside = keep & np.all((qc >= rng[:, 0]) & (qc < rng[:, 1]), axis=1)
+        # half-open [lo, hi): the solutions inside win, a joint within RANGE_TOL of a bound
+        # taken where the bound puts it (on lo inside, on hi outside: an IK's rounding moves
+        # a joint written as 0 to -1e-7 and its turn to 360 - 1e-7); only where none is (a
+        # joint written on a boundary) do those within RANGE_TOL of a range count
+        inside = keep & np.all((qc >= rng[:, 0] - RANGE_TOL) & (qc < rng[:, 1] - RANGE_TOL), axis=1)
         near = keep & np.all((qc >= rng[:, 0] - RANGE_TOL) & (qc <= rng[:, 1] + RANGE_TOL), axis=1)
         keep = near if q_near is not None or not inside.any() else inside
     found = sols[keep]
