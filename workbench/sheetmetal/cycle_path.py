@@ -279,9 +279,8 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             press.T_world_die @ p.T_die_part @ T_part_tcp(part, g, k + f)
             for p, f in zip(poses, fr, strict=True)
         ]
-        # the press's times as the program states them (ms): plan and program wait alike
-        close = round(ram.open / ram.approach_speed, 3)
-        opening = round((ram.open + poses[-1].depth) / ram.return_speed, 3)
+        close = press_wait(ram.open / ram.approach_speed)
+        opening = press_wait((ram.open + poses[-1].depth) / ram.return_speed)
         # In front of the die, over to just above the stop, then straight down onto the die
         # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
         if cell.via_home and wps[-1].label.startswith(("lift the blank", "off the regrip")):
@@ -345,7 +344,7 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             )
         else:
             # Let go, stand back along the tool, wait for the bend, grip the bent part again.
-            bend_total = round(ram_time(press, poses[-1].depth), 3)
+            bend_total = press_wait(ram_time(press, poses[-1].depth))
             wps[i_stop] = Waypoint(
                 tcp[0], wps[i_stop].label, stop=True, hold=cell.release, action="release"
             )
@@ -438,6 +437,17 @@ def clear_of_tools(approach: F64, points_die: F64) -> F64:
     out = np.asarray(approach, float).copy()
     out[1] = min(out[1], -(float(points_die[:, 1].max()) + CLEAR))
     return out
+
+
+#: The step [s] of the press's waits as every program can state them (FANUC's `WAIT t(sec)`
+#: has two decimals).
+WAIT_STEP = 0.01
+
+
+def press_wait(seconds: float) -> float:
+    """Return the robot's wait for a press motion of `seconds` [s]: rounded up to `WAIT_STEP`,
+    so plan and program wait alike and never less than the ram takes."""
+    return round(float(np.ceil(seconds / WAIT_STEP - 1e-9)) * WAIT_STEP, 6)
 
 
 def _line(T_a: F64, T_b: F64, step: float) -> list[F64]:
