@@ -19,6 +19,7 @@ import pytest
 
 from workbench import Workbench
 from workbench.service.bending_process import sweep_context
+from workbench.sheetmetal.bend_eval import evaluate
 from workbench.sheetmetal.sequencing import find_sequences
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -28,10 +29,11 @@ PRESS_CELLS = [
     if "press" in json.loads(p.read_text()).get("bending", {})
 ]
 PAN = ROOT / "projects" / "pan_cell.json"
+SEED = ROOT / "projects" / "seed_part_cell.json"
 
 
 def test_the_press_examples_are_the_u_channel_and_the_pan() -> None:
-    assert {p.stem for p in PRESS_CELLS} >= {"u_channel_cell", "pan_cell"}
+    assert {p.stem for p in PRESS_CELLS} >= {"u_channel_cell", "pan_cell", "seed_part_cell"}
 
 
 def _summary(plans: Any) -> list[tuple[Any, ...]]:
@@ -42,6 +44,7 @@ def _summary(plans: Any) -> list[tuple[Any, ...]]:
 
 
 @pytest.mark.slow
+@pytest.mark.timeout(900)  # the seed part's two searches and replay take about 3 minutes here
 @pytest.mark.parametrize("path", PRESS_CELLS, ids=lambda p: p.stem)
 def test_the_best_plan_replays_collision_free_and_ray_agrees(path: Path) -> None:
     wb = Workbench.open(path)
@@ -87,6 +90,73 @@ def test_without_the_short_segment_the_pans_last_walls_hit_the_punch() -> None:
     third = [r for b, r in res.rejected if len(b) == 3]
     assert third and all("hits the punch" in r or "no grasp" in r for r in third), third
     assert any("hits the punch" in r for r in third)
+
+
+def test_the_seed_parts_short_walls_cannot_follow_its_long_walls() -> None:
+    """Seed 000's part: once the long walls (2, 4) stand with their lips, a short wall (6, 7)
+    is bent between them, and every station's punch hits them; before them it is free."""
+    wb = Workbench.open(SEED)
+    ctx = sweep_context(wb.bending)
+    names = [b.name for b in ctx.part().bends]
+    i = {n: names.index(n) for n in names}
+    late = evaluate(ctx, tuple(sorted((i["b23"], i["b45"], i["b12"], i["b14"]))), i["b16"])
+    assert not late.feasible
+    assert "hits the punch" in late.reason() and "'2'" in late.reason(), late.reason()
+    early = evaluate(ctx, tuple(sorted((i["b23"], i["b45"]))), i["b16"])
+    assert early.feasible, early.reason()
+
+
+@pytest.mark.slow
+def test_the_seed_parts_saved_cycle_goes_round_where_the_straight_move_is_blocked() -> None:
+    """The saved plan replays collision-free with a detour; twins: the straight joint move it
+    replaces is blocked by a dense brute-force check (the carried part's tree every 1 mm of
+    its travel bound, the robot by python-fcl), and every leg of the detour is free by the
+    same dense check."""
+    import workbench.sheetmetal.cycle as cycle_module
+    from workbench.sheetmetal.press_check import frame_hits
+    from workbench.sheetmetal.transit import _phase_of
+
+    seen: dict[str, Any] = {}
+    route = cycle_module.route_transits
+
+    def spy(path: Any, q: Any, space_of: Any, fk: Any) -> Any:
+        seen.update(path=path, q=q, space_of=space_of)
+        out = route(path, q, space_of, fk)
+        seen.update(new_path=out[0], new_q=out[1])
+        return out
+
+    cycle_module.route_transits = spy
+    try:
+        wb = Workbench.open(SEED)
+        cycle = wb.bending.plan()
+    finally:
+        cycle_module.route_transits = route
+    assert cycle.ok, cycle.summary()
+    assert cycle.transits.rerouted and not cycle.transits.blocked
+    checker = wb.checker
+
+    def dense_free(space: Any, a: np.ndarray, b: np.ndarray) -> bool:
+        d = float(np.abs(b - a) @ np.maximum(space.part_lever, space.weights))
+        u = np.linspace(0.0, 1.0, max(2, int(np.ceil(d / 0.001)) + 1))[:, None]
+        qs = a + u * (b - a)
+        if space.carried is not None:
+            T = space.T_world_base @ space.model.fk(qs) @ space.T_flange_part
+            if frame_hits(space.carried.state, T, space.carried.obstacles):
+                return False
+        return not any(checker.check(qi, distance=False).colliding for qi in qs[::8])
+
+    path, q = seen["path"], seen["q"]
+    new_path, new_q = seen["new_path"], seen["new_q"]
+    for label, vias in cycle.transits.rerouted:
+        i = next(k for k, w in enumerate(path.waypoints) if w.label == label)
+        space = seen["space_of"](path.phases[_phase_of(path.phases, i)])
+        assert not dense_free(space, q[i - 1], q[i]), label
+        j = next(k for k, w in enumerate(new_path.waypoints) if w.label == label)
+        legs = new_q[j - vias - 1 : j + 1]
+        np.testing.assert_array_equal(legs[0], q[i - 1])
+        np.testing.assert_array_equal(legs[-1], q[i])
+        for a, b in zip(legs[:-1], legs[1:], strict=True):
+            assert dense_free(space, a, b), label
 
 
 @pytest.mark.slow

@@ -171,6 +171,7 @@ def test_the_transit_space_agrees_with_fcl_and_the_part_check(pan: Workbench) ->
     assert seen == {True, False}  # both verdicts occur among the samples
 
 
+@pytest.mark.slow
 def test_a_straight_move_is_free_only_if_its_dense_samples_are(pan: Workbench) -> None:
     space, carried, _ = _carried_space(pan)
     q_home = np.asarray(pan.joints, float)
