@@ -177,3 +177,16 @@ def test_a_regrip_counts_only_where_the_robot_takes_the_part_free() -> None:
     blocked = find_sequences(ctx, robot_free=free)
     assert not blocked.plans
     assert any("no regrip is possible" in r for _, r in blocked.rejected), blocked.rejected[:5]
+
+
+@pytest.mark.slow
+def test_a_grasp_whose_robot_collides_at_the_die_is_refused_by_the_cheap_stage() -> None:
+    """With the robot blocked wherever it stands at the die (and free at the stack and the
+    pallet), every first bend is refused in the cheap stage and no plan is left."""
+    ctx = sweep_context(Workbench.open(ROOT / "projects" / "u_channel_cell.json").bending)
+    free = find_sequences(ctx, robot_free=lambda q, lying: np.ones(len(q), bool))
+    assert free.plans
+    blocked = find_sequences(ctx, robot_free=lambda q, lying: np.full(len(q), lying is not None))
+    assert not blocked.plans and blocked.stats.verified == 0
+    names = {b.name for b in ctx.part().bends}
+    assert {branch for branch, _ in blocked.rejected} == {(n,) for n in names}

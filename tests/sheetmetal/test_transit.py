@@ -156,10 +156,7 @@ def test_the_transit_space_agrees_with_fcl_and_the_part_check(pan: Workbench) ->
     q[:20] = np.asarray(pan.joints) + rng.normal(0.0, 0.3, (20, model.dof))  # near home
     q = np.clip(q, lim[:, 0], lim[:, 1])
     T_part = (
-        setup.T_world_base
-        @ model.fk(q)
-        @ setup.T_flange_tcp
-        @ np.linalg.inv(carried.T_part_tcp)
+        setup.T_world_base @ model.fk(q) @ setup.T_flange_tcp @ np.linalg.inv(carried.T_part_tcp)
     )
     part_hit = check_states([carried.state] * len(q), T_part, [carried.obstacles] * len(q))
     seen = set()

@@ -413,8 +413,8 @@ def _search(
         return replace(e, at_station=e.at_station & station_free[done])
 
     def _robot_free_at_die(e: BendEval) -> BendEval:
-        """Return `e` with the grasps whose robot collides (with itself or the cell) in front
-        of the die, at the stop or at the end of the bend refused, naming where."""
+        """Return `e` with the grasps whose robot collides (with itself, the press or the
+        cell) in front of the die, at the stop or at the end of the bend refused, naming where."""
         if robot_free is None or e.q_front is None or not e.grasp_ok.any():
             return e
         ok = e.grasp_ok.copy()
@@ -429,7 +429,7 @@ def _search(
             for i in np.flatnonzero(ok & ~free):
                 reasons[i] = (
                     f"bend {name!r}: grasp {grasp_label(ctx.grasps[i])}: the robot collides "
-                    f"(with itself or the cell) {where}"
+                    f"(with itself, the press or the cell) {where}"
                 )
             ok &= free
         return replace(e, grasp_ok=ok, grasp_reason=tuple(reasons))
