@@ -149,7 +149,7 @@ def test_the_seed_parts_saved_cycle_goes_round_where_the_straight_move_is_blocke
     new_path, new_q = seen["new_path"], seen["new_q"]
     for label, vias in cycle.transits.rerouted:
         i = next(k for k, w in enumerate(path.waypoints) if w.label == label)
-        space = seen["space_of"](path.phases[_phase_of(path.phases, i)])
+        space = seen["space_of"](_phase_of(path.phases, i))
         assert not dense_free(space, q[i - 1], q[i]), label
         j = next(k for k, w in enumerate(new_path.waypoints) if w.label == label)
         legs = new_q[j - vias - 1 : j + 1]

@@ -71,7 +71,7 @@ def test_a_blocked_move_gets_vias_whose_every_leg_is_free() -> None:
     path = CyclePath(wps, phases, np.zeros(2), ())
     q = np.array([[-1.0, 0.0], [1.0, 0.0], [1.0, 1.0]])
     assert not _dense_free(space, q[0], q[1])
-    new, q2, rep = route_transits(path, q, lambda ph: space, lambda qi: T)  # type: ignore[arg-type, return-value]
+    new, q2, rep = route_transits(path, q, lambda k: space, lambda qi: T)  # type: ignore[arg-type, return-value]
     assert len(new.waypoints) == len(q2) > 3
     assert [label for label, _ in rep.rerouted] == ["across"] and not rep.blocked
     for a, b in zip(q2[:-1], q2[1:], strict=True):
@@ -87,7 +87,7 @@ def test_a_blocked_move_gets_vias_whose_every_leg_is_free() -> None:
         assert new.waypoints[ph.start] is wps[old.start]
         assert new.waypoints[ph.end] is wps[old.end]
     # the same inputs give the same detour (seeded, bounded by a node count)
-    again = route_transits(path, q, lambda ph: space, lambda qi: T)  # type: ignore[arg-type, return-value]
+    again = route_transits(path, q, lambda k: space, lambda qi: T)  # type: ignore[arg-type, return-value]
     np.testing.assert_array_equal(again[1], q2)
 
 
@@ -97,7 +97,7 @@ def test_a_free_move_is_left_alone_and_a_blocked_end_is_reported() -> None:
     wps = (Waypoint(T, "a"), Waypoint(T, "b", free=True), Waypoint(T, "c", free=True))
     path = CyclePath(wps, (Phase("carried", 0, 2, 0.0, None),), np.zeros(2), ())
     q = np.array([[-1.0, 0.0], [-1.0, 1.0], [0.0, 0.0]])  # the last end is in the wall
-    new, q2, rep = route_transits(path, q, lambda ph: space, lambda qi: T)  # type: ignore[arg-type, return-value]
+    new, q2, rep = route_transits(path, q, lambda k: space, lambda qi: T)  # type: ignore[arg-type, return-value]
     assert new is path and q2 is q
     assert not rep.rerouted and [label for label, _ in rep.blocked] == ["c"]
     assert "the wall" in rep.blocked[0][1]

@@ -327,18 +327,26 @@ def check_cycle(
     open_z = cell.press.ram.open + part.thickness
     report(0.1, "checking the moves between stations (detours where one is blocked)")
 
-    def space_of(ph: Phase) -> TransitSpace:
+    spaces: dict[int, TransitSpace] = {}
+
+    def space_of(k: int) -> TransitSpace:
+        """Return the transit space of phase k (one per phase: the routing and the check
+        between frames share it; a detour keeps the phases' order)."""
+        if k in spaces:
+            return spaces[k]
+        ph = path.phases[k]
         carried = None
         if ph.kind == "carried":
-            k = min(int(ph.step), len(steps) - 1)
-            g = ph.grasp or steps[k].grasp
-            station = ph.station or steps[k].station
+            j = min(int(ph.step), len(steps) - 1)
+            g = ph.grasp or steps[j].grasp
+            station = ph.station or steps[j].station
             carried = Carried(
                 fold_state(part, ph.step, check=False),
                 T_part_tcp(part, g, ph.step),
                 scene.at(station, open_z, _last_stop(path, ph), -1),
             )
-        return TransitSpace(model, T_world_base, T_flange_tcp, checker, policy, carried)
+        spaces[k] = TransitSpace(model, T_world_base, T_flange_tcp, checker, policy, carried)
+        return spaces[k]
 
     path, q_wp, transits = route_transits(
         path, q_wp, space_of, lambda q: T_world_base @ model.fk(q) @ T_flange_tcp
@@ -417,15 +425,13 @@ def check_cycle(
         stop_idx[n] = last_stop
         obstacles.append(scene.at(station, z, last_stop, bend))
     hits = check_states(states, T_part, obstacles)
-    carried: dict[int, TransitSpace | None] = {}
-
-    def carried_space(k: int) -> TransitSpace | None:
-        if k not in carried:
-            ph = path.phases[k]
-            carried[k] = space_of(ph) if ph.kind == "carried" else None
-        return carried[k]
-
-    between = carried_hits_between(times, q, lambda t: traj.at(t)[0], phase_idx, carried_space)
+    between = carried_hits_between(
+        times,
+        q,
+        lambda t: traj.at(t)[0],
+        phase_idx,
+        lambda k: space_of(k) if path.phases[k].kind == "carried" else None,
+    )
     for n, hit in between.items():
         hits[n] = hits[n] or hit
     report(0.55, "checking the robot against the part where it rests")

@@ -173,14 +173,14 @@ class TransitReport:
 def route_transits(
     path: CyclePath,
     q: F64,
-    space_of: Callable[[Phase], TransitSpace],
+    space_of: Callable[[int], TransitSpace],
     fk_tcp: Callable[[F64], F64],
 ) -> tuple[CyclePath, F64, TransitReport]:
     """Return the cycle's path and joints (N, dof) with every blocked free move replaced by
     a detour (via waypoints inserted before its target) and the report.
 
-    space_of(phase): the space of a move within `phase` (what the robot carries, among
-    which obstacles); fk_tcp(q (dof,)) -> the TCP pose (4, 4) in the world.
+    space_of(k): the space of a move within phase k of `path` (what the robot carries, among
+    which obstacles; the caller keeps one per phase: a detour keeps the phases' order); fk_tcp(q (dof,)) -> the TCP pose (4, 4) in the world.
     """
     wps = list(path.waypoints)
     rows = [q[0]]
@@ -188,14 +188,10 @@ def route_transits(
     rerouted: list[tuple[str, int]] = []
     blocked: list[tuple[str, str]] = []
     out_wps = [wps[0]]
-    spaces: dict[int, TransitSpace] = {}
     for i in range(1, len(wps)):
         w = wps[i]
         if w.free and np.any(np.abs(q[i] - q[i - 1]) > 1e-9):
-            k = _phase_of(path.phases, i)
-            if k not in spaces:
-                spaces[k] = space_of(path.phases[k])
-            space = spaces[k]
+            space = space_of(_phase_of(path.phases, i))
             if not space.motion_free(q[i - 1], q[i]):
                 try:
                     via, _ = plan_joint_rrt_connect(
