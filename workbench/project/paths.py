@@ -19,6 +19,7 @@ from __future__ import annotations
 import os
 import re
 import stat
+import sys
 import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -28,8 +29,11 @@ from workbench.errors import InputError, MeshError, ProjectError, WorkbenchError
 
 PathArg = str | os.PathLike[str]
 
-# The workbench's bundled meshes (parts, workpieces): the example projects name them.
+# The workbench's bundled meshes (parts, workpieces): the example projects name them. In a
+# checkout or an editable install they lie beside the package; a wheel or `pip install .` puts
+# them under <prefix>/share/workbench (pyproject.toml's data-files, beside the examples).
 BUNDLED_ASSETS = Path(__file__).resolve().parents[2] / "web_assets"
+INSTALLED_ASSETS = Path(sys.prefix) / "share" / "workbench" / "web_assets"
 
 MiB = 1 << 20
 # kind -> (environment variable, default bytes)
@@ -150,8 +154,7 @@ class ProjectFolders:
         """Return every folder a project path may resolve into, symlinks resolved."""
         out = [Path(os.path.realpath(self.base))]
         out += [Path(os.path.realpath(a)) for a in self.allowed]
-        if BUNDLED_ASSETS.is_dir():
-            out.append(Path(os.path.realpath(BUNDLED_ASSETS)))
+        out += [Path(os.path.realpath(a)) for a in (BUNDLED_ASSETS, INSTALLED_ASSETS) if a.is_dir()]
         return out
 
     def resolve(self, path: object, field: str) -> Path:

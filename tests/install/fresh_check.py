@@ -1,0 +1,87 @@
+"""Run inside a fresh virtual environment (tests/install/test_fresh_install.py): every import the
+package makes resolves there, and every example project installed with it opens and plans.
+
+Usage: python fresh_check.py SOURCE_TREE. Prints one line per check and exits 1 on the first
+failure. It must import `workbench` from the environment, never from the source tree.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import sys
+import sysconfig
+from pathlib import Path
+
+
+def imported_modules(package: Path) -> dict[str, str]:
+    """Return {top-level module: first file:line} of every absolute import under `package`,
+    function-level (lazy) imports included."""
+    found: dict[str, str] = {}
+    for path in sorted(package.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+            names: list[str] = []
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+                names = [node.module]
+            for name in names:
+                found.setdefault(
+                    name.split(".")[0], f"{path.relative_to(package.parent)}:{node.lineno}"
+                )
+    return found
+
+
+def main() -> int:
+    source = Path(sys.argv[1]).resolve()
+    import workbench
+
+    installed = Path(workbench.__file__).resolve().parent
+    if source in installed.parents:
+        print(f"FAIL workbench imported from the source tree: {installed}")
+        return 1
+    missing = [
+        f"{mod} (imported at {where})"
+        for mod, where in sorted(imported_modules(installed).items())
+        if mod not in sys.stdlib_module_names and importlib.util.find_spec(mod) is None
+    ]
+    if missing:
+        print("FAIL not installed by pyproject.toml's dependencies: " + "; ".join(missing))
+        return 1
+    print(f"ok every import of {installed} resolves")
+
+    from workbench import Workbench
+    from workbench.project import load_project
+    from workbench.service.programs import plan_workflow
+
+    projects_dir = Path(sysconfig.get_path("data")) / "share" / "workbench" / "projects"
+    shipped = sorted(p.name for p in (source / "projects").glob("*.json"))
+    projects = sorted(projects_dir.glob("*.json"))
+    if sorted(p.name for p in projects) != shipped:
+        print(f"FAIL installed examples {[p.name for p in projects]} != source's {shipped}")
+        return 1
+    for path in projects:
+        wb = Workbench.open(path)
+        p = load_project(path)
+        workflows = [
+            wf
+            for wf, has in (
+                ("motion", p.program is not None and bool(p.program.moves)),
+                ("bending", p.bending is not None),
+                ("assembly", p.assembly is not None and bool(p.assembly.parts)),
+                ("polishing", p.polishing is not None),
+            )
+            if has
+        ]
+        for wf in workflows:
+            plan_workflow(wb, wf)
+            exported = wb.export_program("json", wf)
+            if not exported.files:
+                print(f"FAIL {path.name} {wf}: the export wrote no file")
+                return 1
+            print(f"ok {path.name} {wf}: planned and exported")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
