@@ -13,7 +13,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from workbench import Workbench
+from workbench import Workbench, WorkbenchError
 
 PROJECT = Path(__file__).resolve().parents[1] / "projects" / "mz07_cell.json"
 # Export formats: ABB RAPID, KUKA KRL (.src + .dat), FANUC LS, URScript, NACHI FD, joint samples.
@@ -44,8 +44,15 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
     print(f"cycle time {plan.cycle_time:.3f} s; {'ready to run' if plan.ok else 'NOT ready'}")
 
     written: list[Path] = []
+    native = wb.default_program_format()  # the robot's vendor's language (NACHI FD here)
+    try:
+        wb.export_program("rapid")
+    except WorkbenchError as exc:  # another vendor's language is refused by default
+        print(f"refused: {exc}")
+    print(f"the {wb.project.robot.name}'s own language is {native}; the others for comparison")
     for fmt in FORMATS:
-        exported = wb.export_program(fmt)  # files (name -> text) and the post's notes
+        # files (name -> text) and the post's notes; any_vendor: another vendor's language
+        exported = wb.export_program(fmt, any_vendor=fmt != native)
         for path in exported.write_to(out):
             written.append(path)
             print(f"wrote {fmt:8s} {path} ({len(path.read_text().splitlines())} lines)")

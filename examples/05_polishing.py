@@ -39,7 +39,9 @@ def main(out_dir: str | Path | None = None) -> Path:
     motion = polishing.plan_motion()
     print(f"robot:      {motion.summary()}")
 
-    exported = wb.export_program("krl", "polishing")  # the .src and its .dat
+    # The .src and its .dat: KUKA's language for the NACHI cell's path, as a what-if (a program
+    # in another vendor's language is refused unless any_vendor; the MZ07's own is "nachi").
+    exported = wb.export_program("krl", "polishing", any_vendor=True)
     src, dat = exported.write_to(out)
     print(
         f"wrote the KRL program: {src} ({len(src.read_text().splitlines())} lines) and {dat.name}"

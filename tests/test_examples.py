@@ -207,12 +207,22 @@ def test_the_readme_project_example_is_a_valid_project() -> None:
     assert wb.project.program is not None and len(wb.project.program.moves) == 3
 
 
+def _anchors(markdown: str) -> set[str]:
+    """Return the anchors GitHub gives the headings of a markdown page."""
+    heads = re.findall(r"^#+ (.*)$", markdown, re.M)
+    return {re.sub(r"[^\w\- ]", "", h.strip().lower()).replace(" ", "-") for h in heads}
+
+
 def test_the_readme_links_stay_in_the_repository() -> None:
     text = (ROOT / "README.md").read_text()
     targets = re.findall(r"\]\(([^)]+)\)", text)
     local = [t for t in targets if not t.startswith("https://")]
-    assert local and all((ROOT / t).exists() for t in local), local
+    assert local and all((ROOT / t.split("#")[0]).exists() for t in local), local
     assert not [t for t in local if ".." in t]
+    for t in local:  # a section link names a heading of that page (GitHub's anchors)
+        if "#" in t:
+            page, anchor = t.split("#", 1)
+            assert anchor in _anchors((ROOT / page).read_text()), f"{t}: no such heading"
     for name in sorted(CHECKS):
         assert f"(examples/{name}.py)" in text, f"the README does not link examples/{name}.py"
 

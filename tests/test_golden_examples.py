@@ -39,7 +39,8 @@ def _exports(wb: Workbench, workflow: str) -> dict[str, str]:
     """Return every format's exported files as {"<format>/<file>": text}."""
     out = {}
     for fmt in EXPORT_FORMATS:
-        for name, text in wb.export_program(fmt, workflow, force=True).files.items():
+        exported = wb.export_program(fmt, workflow, force=True, any_vendor=True)
+        for name, text in exported.files.items():
             out[f"{fmt}/{name}"] = text
     return out
 

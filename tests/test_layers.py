@@ -14,7 +14,16 @@ from pathlib import Path
 import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "workbench"
-DOMAIN = ("geometry", "kinematics", "collision", "motion", "sheetmetal", "assembly", "polishing")
+DOMAIN = (
+    "geometry",
+    "kinematics",
+    "collision",
+    "motion",
+    "sheetmetal",
+    "assembly",
+    "polishing",
+    "cad",
+)
 SERVICE_MAX_LINES = 300
 
 

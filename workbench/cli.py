@@ -48,8 +48,8 @@ def _parser() -> argparse.ArgumentParser:
     )
     export.add_argument(
         "--format",
-        required=True,
         choices=["rapid", "krl", "ls", "urscript", "nachi", "csv", "json"],
+        help="default: the robot's vendor's language (a preset robot); required for DH/URDF robots",
     )
     export.add_argument(
         "--out",
@@ -60,6 +60,11 @@ def _parser() -> argparse.ArgumentParser:
         "--force",
         action="store_true",
         help="write the program even if the plan collides or breaks a limit",
+    )
+    export.add_argument(
+        "--any-vendor",
+        action="store_true",
+        help="write a robot program in another vendor's language than the preset robot's",
     )
     imp = sub.add_parser(
         "import", help="read a robot program written elsewhere into the project's program"
@@ -98,6 +103,16 @@ def _parser() -> argparse.ArgumentParser:
     sweep.add_argument(
         "--out", help="project JSON to write with --use (default: overwrite PROJECT)"
     )
+    part = sub.add_parser(
+        "import-part", help="recognise a bent part (STEP) or flat pattern (DXF) as a part JSON"
+    )
+    part.add_argument("file", help="a STEP (.step, .stp) of the bent part or a DXF flat pattern")
+    part.add_argument("--out", required=True, help="the part JSON to write (mm/deg)")
+    part.add_argument("--thickness", type=float, help="sheet thickness [mm] (needed for DXF)")
+    part.add_argument("--bend-layer", help="the DXF layer of the bend lines (default BEND)")
+    part.add_argument("--inner-radius", type=float, help="inner bend radius [mm]")
+    part.add_argument("--k-factor", type=float, help="K for every bend (default: Table 1)")
+    part.add_argument("--base", help="the base flange, e.g. F2 (STEP; default: the largest)")
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
@@ -139,9 +154,19 @@ class _Progress:
 def _export(args: argparse.Namespace) -> int:
     from workbench.atomic_file import atomic_write, atomic_write_text
     from workbench.service import Workbench
-    from workbench.service.programs import plan_workflow
+    from workbench.service.programs import check_vendor, plan_workflow
 
     wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
+    fmt = args.format or wb.default_program_format()
+    if fmt is None:
+        print(
+            "workbench export: error: the robot has no vendor (DH rows or a URDF): give"
+            " --format (rapid, krl, ls, urscript, nachi, csv, json)",
+            file=sys.stderr,
+        )
+        return 2
+    check_vendor(wb, fmt, any_vendor=args.any_vendor)  # before planning: refused early
+    args.format = fmt
     plan = plan_workflow(wb, args.workflow, progress=_Progress())
     print(f"{args.project}: {plan.summary()}")
     if not plan.ok and not args.force:
@@ -151,7 +176,7 @@ def _export(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return 1
-    exported = wb.export_program(args.format, args.workflow, force=True)
+    exported = wb.export_program(args.format, args.workflow, force=True, any_vendor=args.any_vendor)
     out = Path(args.out) if args.out else Path.cwd()
     if out.suffix.lower() == ".zip":
         data = exported.zip_bytes()
@@ -225,6 +250,26 @@ def _import(args: argparse.Namespace) -> int:
     return 0
 
 
+def _import_part(args: argparse.Namespace) -> int:
+    from workbench.project.part_import import write_part_json
+
+    settings = {
+        k: v
+        for k, v in (
+            ("thickness", args.thickness),
+            ("bend_layer", args.bend_layer),
+            ("inner_radius", args.inner_radius),
+            ("k_factor", args.k_factor),
+            ("base", args.base),
+        )
+        if v is not None
+    }
+    data = read_regular_file(args.file, kind="part", field=args.file)
+    for line in write_part_json(data, Path(args.file).name, settings, Path(args.out)):
+        print(line)
+    return 0
+
+
 def _serve(args: argparse.Namespace) -> int:
     from workbench.gui.app import serve
 
@@ -286,6 +331,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _import(args)
         if args.command == "sweep":
             return _sweep(args)
+        if args.command == "import-part":
+            return _import_part(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

@@ -108,16 +108,17 @@ def test_plan_a_part_show_interference_play_the_sequence_and_export(launch) -> N
     steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "assembly.png")
 
-    # Every robot's share of the sequence, as RAPID modules in one zip: the server's export.
-    assert app.assembly.prog_format.value == "rapid"
+    # Every robot's share of the sequence, as NACHI programs (the MZ07's vendor's language,
+    # the dropdown's default) in one zip: the server's export.
+    assert app.assembly.prog_format.value == "nachi" == app.wb.default_program_format()
     with page.expect_download() as dl:
         page.get_by_role("button", name="Download robot programs").click()
     with zipfile.ZipFile(io.BytesIO(Path(dl.value.path()).read_bytes())) as z:
         files = {name: z.read(name).decode() for name in z.namelist()}
-    exported = app.wb.export_program("rapid", "assembly")
+    exported = app.wb.export_program("nachi", "assembly")
     assert files == exported.files and len(files) == len(a.arms) >= 2
-    b_module = next(text for text in files.values() if text.startswith("MODULE assembly_MZ07_B"))
-    assert "MoveAbsJ" in b_module
+    b_program = next(t for t in files.values() if t.startswith("' PROGRAM assembly_MZ07_B"))
+    assert "MOVEX" in b_program and "M1J" in b_program
 
     # The joint-space planner: the carrying robot's joints, robot and part checked together.
     page.get_by_role("combobox", name="Planner").click()

@@ -63,9 +63,11 @@ def test_plan_play_scrub_and_export(page, app: WorkbenchApp) -> None:  # type: i
     assert app.timeline.time.value == pytest.approx(plan.cycle_time, abs=0.02)
     page.get_by_role("button", name="Play").wait_for()  # the button reads Play again
 
-    # Export: the downloaded RAPID module is the server's export.
+    # Export: the downloaded program is the server's export in the format the dropdown shows,
+    # by default the robot's vendor's (NACHI FD for the MZ07).
+    assert app.motion.format.value == "nachi" == app.wb.default_program_format()
     with page.expect_download() as dl:
         page.get_by_role("button", name="Download program").click()
     text = Path(dl.value.path()).read_text()
-    assert text == app.wb.export_program("rapid").text
-    assert text.startswith("MODULE ") and "MoveL" in text
+    assert text == app.wb.export_program("nachi").text
+    assert text.startswith("' PROGRAM ") and "M1J,L" in text

@@ -71,12 +71,14 @@ def test_teach_edit_undo_plan_and_export(page, app: WorkbenchApp) -> None:  # ty
     page.get_by_text(f"{times.durations[n + 1]:.3f}").first.wait_for()
     assert app.scene.path_node is not None  # the TCP path of the plan in 3D
 
-    # Download RAPID: the server's export, and the edited program read back.
+    # Download the program (NACHI FD, the MZ07's vendor's language): the server's export, and
+    # the edited program read back.
     with page.expect_download() as dl:
         page.get_by_role("button", name="Download program").click()
     text = Path(dl.value.path()).read_text()
-    assert text == wb.export_program("rapid").text
-    read = reader("rapid")({"pick_place.mod": text})
+    exported = wb.export_program("nachi")
+    assert text == exported.text
+    read = reader("nachi")(exported.files)
     assert not read.unknown
     names = [m.name for m in read.moves]
     assert names[-1] == "target1"

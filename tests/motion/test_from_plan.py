@@ -148,7 +148,10 @@ def test_bad_moves_name_their_item() -> None:
     model = DHRobot.mz07()
     q0 = np.radians([0, 0, 0, 0, -90, 0])
     with pytest.raises(
-        InputError, match=r"program.moves\[1\] \(far\).joints\[1\]: 200 deg is outside"
+        # Said in the controller's values: model J2 200 deg is the pendant's 290 (offset 90).
+        InputError,
+        match=r"program.moves\[1\] \(far\).joints\[1\]: 290 deg is outside the joint limits"
+        r" \[-45.0, 170.0\] deg",
     ):
         motion_program(
             "p", [Comment("x"), Mv("far", "joint", np.radians([0, 200, 0, 0, 0, 0]), None, 1.0, 0.0)],

@@ -40,7 +40,7 @@ def test_the_motion_program_is_the_plans(wb: Workbench) -> None:
 
 @pytest.mark.parametrize("fmt", sorted(EXPORT_FORMATS))
 def test_every_format_exports_files_with_names(wb: Workbench, fmt: str) -> None:
-    out = wb.export_program(fmt)
+    out = wb.export_program(fmt, any_vendor=True)  # the MZ07 is NACHI: every post
     assert out.files and all(name and text.strip() for name, text in out.files.items())
     if fmt in PROGRAM_FORMATS:
         text = "\n".join(out.files.values())
@@ -63,9 +63,9 @@ def test_a_colliding_plan_is_refused_unless_forced() -> None:
     )
     wb = Workbench.from_dict(data, base_dir=MZ07.parent)
     with pytest.raises(PlanningError, match="the plan has problems: .*crate.*force=True"):
-        wb.export_program("rapid")
+        wb.export_program("rapid", any_vendor=True)
     assert wb.last_plan is not None and not wb.last_plan.ok
-    assert "MoveL" in wb.export_program("rapid", force=True).text
+    assert "MoveL" in wb.export_program("rapid", force=True, any_vendor=True).text
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess[str]:
@@ -76,19 +76,32 @@ def _cli(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_cli_writes_a_file_a_folder_or_a_zip(tmp_path: Path) -> None:
-    res = _cli("--format", "rapid", "--out", str(tmp_path / "cell.mod"))
+    res = _cli("--format", "rapid", "--any-vendor", "--out", str(tmp_path / "cell.mod"))
     assert res.returncode == 0, res.stderr
     assert (tmp_path / "cell.mod").read_text().startswith("MODULE pick_place")
-    res = _cli("--format", "krl", "--out", str(tmp_path / "krl"))
+    res = _cli("--format", "krl", "--any-vendor", "--out", str(tmp_path / "krl"))
     assert res.returncode == 0, res.stderr
     assert sorted(p.name for p in (tmp_path / "krl").iterdir()) == [
         "pick_place.dat",
         "pick_place.src",
     ]
-    res = _cli("--format", "krl", "--workflow", "motion", "--out", str(tmp_path / "krl.zip"))
+    res = _cli(
+        "--format", "krl", "--any-vendor", "--workflow", "motion", "--out", str(tmp_path / "krl.zip")
+    )  # fmt: skip
     assert res.returncode == 0, res.stderr
     with zipfile.ZipFile(tmp_path / "krl.zip") as zf:
         assert sorted(zf.namelist()) == ["pick_place.dat", "pick_place.src"]
         assert (
             zf.read("pick_place.src").decode() == (tmp_path / "krl" / "pick_place.src").read_text()
         )
+
+
+def test_cli_takes_the_vendors_format_and_refuses_another_unless_any_vendor(
+    tmp_path: Path,
+) -> None:
+    res = _cli("--out", str(tmp_path / "nachi"))  # no --format: the MZ07's NACHI
+    assert res.returncode == 0, res.stderr
+    assert "(motion, nachi)" in res.stdout
+    res = _cli("--format", "rapid", "--out", str(tmp_path / "cell.mod"))
+    assert res.returncode != 0 and not (tmp_path / "cell.mod").exists()
+    assert "'NACHI MZ07'" in res.stderr and "'nachi'" in res.stderr and "--any-vendor" in res.stderr

@@ -155,7 +155,9 @@ class AssemblyPanel:
         )
         self.download = g.add_button("Download key points", icon=viser.Icon.DOWNLOAD, disabled=True)
         self.prog_format = g.add_dropdown(
-            "Program format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+            "Program format",
+            options=tuple(EXPORT_FORMATS),
+            initial_value=self.wb.default_program_format() or "rapid",
         )
         self.prog_download = g.add_button(
             "Download robot programs",

@@ -42,7 +42,9 @@ class MotionPanel:
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
         self.format = g.add_dropdown(
-            "Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+            "Export format",
+            options=tuple(EXPORT_FORMATS),
+            initial_value=wb.default_program_format() or "rapid",
         )
         self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
         self.upload = g.add_upload_button(

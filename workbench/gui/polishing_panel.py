@@ -35,7 +35,7 @@ GAP_COLOR = (220, 30, 30)
 #: Most tool axes drawn along a path, and most samples sent per plot series.
 MAX_AXES = 250
 MAX_PLOT_POINTS = 4000
-MESH_TYPES = (".stl", ".obj", ".ply")
+MESH_TYPES = (".stl", ".obj", ".ply", ".step", ".stp")
 
 
 def _segments(points: NDArray[np.float64]) -> NDArray[np.float32]:
@@ -129,7 +129,9 @@ class PolishingPanel:
         self.path_info = g.add_markdown("")
         self.sim_info = g.add_markdown("")
         self.format = g.add_dropdown(
-            "Export format", options=tuple(EXPORT_FORMATS), initial_value="rapid"
+            "Export format",
+            options=tuple(EXPORT_FORMATS),
+            initial_value=app.wb.default_program_format() or "rapid",
         )
         self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
         self.plot_folder = g.add_folder("Force control", expand_by_default=True)
@@ -252,7 +254,9 @@ class PolishingPanel:
         up = self.upload.value
         name = safe_name(up.name, "workpiece.stl")
         if Path(name).suffix.lower() not in MESH_TYPES:
-            raise InputError(f"workpiece {name!r}: give an STL, OBJ or PLY file")
+            raise InputError(
+                f"workpiece {name!r}: give an STL, OBJ, PLY or STEP file (the face to polish)"
+            )
         with WORKPIECES.new_file(self.app.wb, name, up.content) as path:
             self.svc.load_workpiece(path, units=str(self.units.value))
         self._show_workpiece()

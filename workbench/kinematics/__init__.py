@@ -10,6 +10,7 @@ from workbench.kinematics.link_shapes import flange_mesh, link_meshes
 from workbench.kinematics.model import RobotModel
 from workbench.kinematics.path_ik import PathIK, follow_path
 from workbench.kinematics.presets import MZ07_SEED_DH, MZ07_SEED_TOOL
+from workbench.kinematics.robot_library import ROBOT_NAMES, LibraryRobot, library_robot
 from workbench.kinematics.singularity import Singularities
 from workbench.kinematics.urdf_robot import URDFRobot
 
@@ -17,8 +18,10 @@ __all__ = [
     "IK_TOL",
     "MZ07_SEED_DH",
     "MZ07_SEED_TOOL",
+    "ROBOT_NAMES",
     "DHRobot",
     "JointConvention",
+    "LibraryRobot",
     "PathIK",
     "RobotModel",
     "Singularities",
@@ -27,5 +30,6 @@ __all__ = [
     "flange_mesh",
     "follow_path",
     "labelled_solutions",
+    "library_robot",
     "link_meshes",
 ]

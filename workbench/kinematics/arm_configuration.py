@@ -16,7 +16,10 @@ Definitions (model frames of a 6R arm with a spherical wrist; frame i of `link_t
   1 -> frame 2 origins) and w = axis 3 -> wrist centre, (u x w) . y_arm > 0, where
   y_arm = z_base x x_1 is the arm plane's normal. A function of q3 only (the stretched arm is
   the boundary), as ABB's "wrist centre relative to the lower arm" and KUKA's bit 1 are.
-- wrist flip: the controller's J5 is negative (ABB "axis 5 negative", KUKA bit 2 set).
+- wrist flip: the controller's J5 has the sign its vendor calls flipped,
+  `JointConvention.flip_sign`: negative for ABB ("axis 5 negative"), KUKA (bit 2 set) and
+  NACHI; positive for FANUC, whose J5 turns the other way (its usual tool-down posture,
+  J5 = -90 deg, is "N", no flip, as ABB's J5 = +90 deg is cfx 0).
 """
 
 from __future__ import annotations
@@ -68,7 +71,8 @@ def arm_configurations(model: RobotModel, q_model: ArrayLike) -> list[ArmConfigu
     front = np.einsum("ij,ij->i", pc - o0, x1) >= 0.0
     y_arm = np.cross(base_z, x1)
     elbow = np.einsum("ij,ij->i", np.cross(o2 - o1, pc - o2), y_arm) > 0.0
-    j5 = model.convention.to_controller(q)[:, 4]
+    conv = model.convention
+    j5 = conv.to_controller(q)[:, 4] * -conv.flip_sign  # < 0: flipped
     return [
         ArmConfiguration(bool(f), bool(e), bool(w < 0.0))
         for f, e, w in zip(front, elbow, j5, strict=True)

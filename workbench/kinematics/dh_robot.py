@@ -29,6 +29,7 @@ from workbench.kinematics.opw import opw_geometry, solve_batch
 from workbench.kinematics.opw_single import solve_single
 from workbench.kinematics.pinocchio_dh import build_dh_model
 from workbench.kinematics.singularity import Singularities, arm_singularities
+from workbench.kinematics.ur_ik import ur_geometry, ur_solutions
 
 FloatArray = NDArray[np.float64]
 IK_TOL = 1e-9
@@ -73,6 +74,7 @@ class DHRobot:
         max_acceleration: ArrayLike | None = None,
         max_jerk: ArrayLike | None = None,
         convention: JointConvention | None = None,
+        controller_limits: ArrayLike | None = None,
     ) -> None:
         self.dh, self.limits = validate_dh(dh, limits)
         if not isinstance(name, str) or not name:
@@ -81,6 +83,7 @@ class DHRobot:
         self.dof = int(self.dh.shape[0])
         n = self.dof
         self.convention = model_convention(convention, n)
+        self.controller_limits = self._controller_limits(controller_limits)
         self.max_velocity = _rate(
             max_velocity, np.full(n, presets.DEFAULT_MAX_VELOCITY), "max_velocity", "rad/s"
         )
@@ -94,6 +97,7 @@ class DHRobot:
             max_jerk, self.max_acceleration / presets.JERK_TIME, "max_jerk", "rad/s^3"
         )
         self.opw = opw_geometry(self.dh)
+        self.ur = ur_geometry(self.dh) if self.opw is None else None
         self._pin: tuple[pin.Model, pin.Data] | None = None
         self._flange_id = -1
         self._lo = self.limits[:, 0].tolist()
@@ -105,6 +109,35 @@ class DHRobot:
         ]
         self._zeros = np.zeros(n)
         self._zeros.flags.writeable = False
+
+    def _controller_limits(self, value: ArrayLike | None) -> FloatArray | None:
+        """Return the controller's limits (n, 2) [rad] when they are not the model box's image."""
+        if value is None:
+            return None
+        lim = as_finite_array(value, "controller_limits", (self.dof, 2))
+        if np.any(lim[:, 0] >= lim[:, 1]):
+            raise InputError("controller_limits: every row needs lower < upper [rad]")
+        lim.flags.writeable = False
+        return lim
+
+    def within_limits(self, q: ArrayLike, tol: float = 0.0) -> NDArray[np.bool_]:
+        """Return whether joints (..., n) [rad] lie within the limits: the model's box and,
+        where a coupled convention makes it slanted, the controller's (`controller_limits`)."""
+        qa = joint_array(q, self.dof)
+        ok = np.all((qa >= self.limits[:, 0] - tol) & (qa <= self.limits[:, 1] + tol), axis=-1)
+        if self.controller_limits is not None:
+            ok &= self.convention.within_controller_limits(qa, self.controller_limits, tol)
+        return np.asarray(ok)
+
+    @classmethod
+    def preset(cls, name: str) -> DHRobot:
+        """Return the robot of the library called `name` (see `robot_library.ROBOT_NAMES`).
+
+        Raises InputError listing the library's names when there is none of that name.
+        """
+        from workbench.kinematics.robot_library import library_robot
+
+        return library_robot(name).dh_robot()
 
     @classmethod
     def mz07(cls) -> DHRobot:
@@ -165,6 +198,8 @@ class DHRobot:
         T_arr, T_rows = self._single_pose(T)
         ref = self._ref(q_near)
         if self.opw is None:
+            if self.ur is not None:
+                return self._ur(T_arr, ref, q_near is not None)
             return self._numeric(T_arr, ref, q_near is not None)
         ref_l = ref.tolist()
         specs = self._specs
@@ -180,6 +215,8 @@ class DHRobot:
                 wrist = turns_scalar(sol, specs, ref_l, 3, 6)
                 if wrist is not None:
                     rows.append(arm + wrist)
+        if rows and self.controller_limits is not None:
+            rows = [r for r, ok in zip(rows, self.within_limits(np.array(rows)), strict=True) if ok]
         if not rows:
             raise UnreachableError(unreachable_reason(self, T_arr))
         out = np.array(rows)
@@ -234,6 +271,8 @@ class DHRobot:
 
             q[sl], err = solve_batch(self.opw, T_arr[sl], ref_t[3] + off[3], to_joint)
             valid[sl] = err < IK_TOL
+        if self.controller_limits is not None:
+            valid &= self.within_limits(np.nan_to_num(q))
         q[~valid] = np.nan
         return q, valid
 
@@ -247,10 +286,28 @@ class DHRobot:
         sols = numeric_ik(model, data, model.getFrameId("flange"), T, seeds)
         if len(sols):
             dev = np.abs(self.fk(sols) - T).max(axis=(1, 2))
-            sols = sols[dev < 1e-8]
+            sols = sols[(dev < 1e-8) & self.within_limits(sols)]
         if not len(sols):
             raise UnreachableError(unreachable_reason(self, T))
         return sols[np.argsort(np.linalg.norm(sols - ref, axis=1), kind="stable")] if sort else sols
+
+    def _ur(self, T: FloatArray, ref: FloatArray, sort: bool) -> FloatArray:
+        assert self.ur is not None
+        cand = ur_solutions(self.ur, T, float(ref[5]))
+        rows: list[list[float]] = []
+        ref_l = ref.tolist()
+        if len(cand):
+            dev = np.abs(dh_fk(self.dh, cand - self.dh[:, 0]) - T).max(axis=(1, 2))
+            for sol in cand[dev < IK_TOL]:
+                q = turns_scalar(tuple(sol.tolist()), self._specs, ref_l, 0, self.dof)
+                if q is not None and not any(np.allclose(q, r, atol=1e-9) for r in rows):
+                    rows.append(q)
+        if rows and self.controller_limits is not None:
+            rows = [r for r, ok in zip(rows, self.within_limits(np.array(rows)), strict=True) if ok]
+        if not rows:
+            raise UnreachableError(unreachable_reason(self, T))
+        out = np.array(rows)
+        return out[np.argsort(np.linalg.norm(out - ref, axis=1), kind="stable")] if sort else out
 
     def _single_pose(self, T: ArrayLike) -> tuple[FloatArray, list[list[float]]]:
         """Return (T (4, 4), its rows as lists) after scalar checks (numpy calls cost ~us each)."""

@@ -109,6 +109,14 @@ def unreachable_reason(robot: DHRobot, T: NDArray[np.float64]) -> str:
                 f"{branch_name(robot, q)}: joint {j + 1} = {math.degrees(q[j]):.1f} deg outside "
                 f"[{math.degrees(lo[j]):.1f}, {math.degrees(hi[j]):.1f}] deg"
             )
+        elif robot.controller_limits is not None and not robot.within_limits(q):
+            # a coupled convention (FANUC's J3 from the horizontal): the controller's values
+            qc, lim = robot.convention.to_controller(q), robot.controller_limits
+            j = int(np.flatnonzero((qc < lim[:, 0]) | (qc > lim[:, 1]))[0])
+            problems.append(
+                f"{branch_name(robot, q)}: the controller's J{j + 1} = {math.degrees(qc[j]):.1f}"
+                f" deg outside [{math.degrees(lim[j, 0]):.1f}, {math.degrees(lim[j, 1]):.1f}] deg"
+            )
     if problems:
         return (
             head + "every configuration is outside the joint limits (" + "; ".join(problems) + ")"

@@ -1,7 +1,9 @@
 """The example free-form workpiece: a doubly-curved panel about 300 x 200 mm.
 
 Run ``python -m workbench.polishing.example_workpiece`` to (re)write
-``web_assets/workpieces/panel.stl`` (in mm, as industrial STL files are). Deterministic.
+``web_assets/workpieces/panel.stl`` (in mm, as industrial STL files are) and
+``web_assets/workpieces/panel.step`` (the same panel as one B-spline face through the heights
+on a 10 mm grid, for ``projects/step_cell.json``). Deterministic.
 """
 
 from __future__ import annotations
@@ -38,8 +40,22 @@ def make_panel(
     return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
 
 
+def panel_step(grid_mm: float = 10.0) -> bytes:
+    """Return the panel as a STEP file (one B-spline face [mm] through `panel_height` sampled
+    every `grid_mm` over the panel, interpolated within 1e-3 mm of the samples)."""
+    from workbench.cad.example_parts import height_field_face
+    from workbench.cad.step import write_step
+
+    hx, hy = HALF_X * 1000.0, HALF_Y * 1000.0  # mm
+    xs = np.arange(-hx, hx + 1e-9, grid_mm)
+    ys = np.arange(-hy, hy + 1e-9, grid_mm)
+    gx, gy = np.meshgrid(xs, ys, indexing="ij")
+    z = panel_height(gx / 1000.0, gy / 1000.0) * 1000.0
+    return write_step(height_field_face(z, -hx, grid_mm, -hy, grid_mm), "panel.step")
+
+
 def main(out: str | Path | None = None) -> Path:
-    """Write the example panel STL (in mm) and return its path."""
+    """Write the example panel STL (in mm) and its STEP file beside it; return the STL's path."""
     path = (
         Path(out)
         if out
@@ -49,6 +65,7 @@ def main(out: str | Path | None = None) -> Path:
     mesh = make_panel()
     mesh_mm = trimesh.Trimesh(vertices=mesh.vertices * 1000.0, faces=mesh.faces, process=False)
     mesh_mm.export(str(path))
+    path.with_suffix(".step").write_bytes(panel_step())
     return path
 
 

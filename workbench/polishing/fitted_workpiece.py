@@ -7,8 +7,9 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
+from workbench.cad.step import StepTolerance
 from workbench.polishing.bezier import BezierSurface, fit_bezier_triangles
 from workbench.polishing.chart import SurfaceChart, build_chart
 from workbench.polishing.choices import MeshUnits
@@ -27,15 +28,36 @@ class FittedWorkpiece:
 
 
 def fit_workpiece(
-    path: str | Path, units: MeshUnits, T_world_workpiece: ArrayLike
+    path: str | Path,
+    units: MeshUnits,
+    T_world_workpiece: ArrayLike,
+    tolerance: StepTolerance | None = None,
 ) -> FittedWorkpiece:
     """Return the `FittedWorkpiece` of the mesh file `path` read in `units`, placed at
-    `T_world_workpiece` (4, 4) [m].
+    `T_world_workpiece` (4, 4) [m]; a STEP file is tessellated with `tolerance`.
+
+    A STEP file's mesh carries the exact surface normals at its vertices
+    (``vertex_attributes["surface_normals"]``): the Bézier fit uses them instead of the
+    area-weighted ones (on a tessellation's long triangles those are off by up to ~0.7 deg).
 
     Raises `MeshError` for a missing, empty or non-mesh file or a part in the wrong units
     (`load_workpiece`), and the chart's errors for a part that folds over (`build_chart`)."""
-    mesh, report = load_workpiece(path, units=units)
-    mesh.apply_transform(np.asarray(T_world_workpiece, dtype=float))
+    mesh, report = load_workpiece(path, units=units, tolerance=tolerance)
+    T = np.asarray(T_world_workpiece, dtype=float)
+    mesh.apply_transform(T)
     chart = build_chart(mesh)
-    surface = fit_bezier_triangles(mesh, vertex_normals=chart.vertex_normals)
+    normals = chart.vertex_normals
+    exact = mesh.vertex_attributes.get("surface_normals")
+    if exact is not None:  # a STEP file: fit with the surface's own normals
+        normals = _oriented(np.asarray(exact) @ T[:3, :3].T, chart.vertex_normals)
+        mesh.vertex_attributes["surface_normals"] = normals
+    surface = fit_bezier_triangles(mesh, vertex_normals=normals)
     return FittedWorkpiece(mesh, report, chart, surface)
+
+
+def _oriented(exact: NDArray[np.float64], area: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Return the exact unit normals on the side of the area-weighted ones; the area-weighted
+    one where an exact normal is missing (zero length: a singular point of the surface)."""
+    length = np.linalg.norm(exact, axis=1, keepdims=True)
+    unit = np.where(length > 0.5, exact / np.maximum(length, 1e-300), area)
+    return np.where(np.einsum("ij,ij->i", unit, area)[:, None] < 0, -unit, unit)

@@ -1,4 +1,9 @@
-"""Workpiece import: load a mesh file, settle its units, and report its defects."""
+"""Workpiece import: load a mesh or STEP file, settle its units, and report its defects.
+
+A STEP file (.step, .stp) is tessellated by `workbench.cad.step` with the given tolerances;
+it carries its own length unit and is read in mm, so its units are "mm" ("auto" reads it so,
+"m" is refused).
+"""
 
 from __future__ import annotations
 
@@ -10,6 +15,7 @@ import trimesh
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
+from workbench.cad.step import STEP_SUFFIXES, StepTolerance, read_step_mesh
 from workbench.errors import InputError, MeshError
 from workbench.polishing.choices import MESH_UNITS, MeshUnits
 
@@ -38,7 +44,7 @@ class WorkpieceReport:
     warnings: tuple[str, ...]
 
 
-def _read(path: Path) -> trimesh.Trimesh:
+def _read(path: Path, tolerance: StepTolerance) -> trimesh.Trimesh:
     if not path.is_file():
         raise MeshError(
             f"workpiece file {str(path)!r} does not exist; give the path of an STL, OBJ or PLY file"
@@ -47,6 +53,8 @@ def _read(path: Path) -> trimesh.Trimesh:
         raise MeshError(
             f"workpiece file {str(path)!r} is empty; give an STL, OBJ or PLY file with triangles"
         )
+    if path.suffix.lower() in STEP_SUFFIXES:
+        return read_step_mesh(path.read_bytes(), str(path), "workpiece", tolerance)
     try:
         loaded = trimesh.load(str(path), force="mesh", process=True)
     except Exception as exc:  # trimesh raises many types for unreadable files
@@ -146,7 +154,11 @@ def inspect_mesh(
         )
     if n_holes:
         found.append(f"{n_holes} holes (boundary loops besides the outer rim)")
-    cleaned = trimesh.Trimesh(vertices=vertices, faces=good, process=False)
+    # vertex_attributes: a STEP file's exact surface normals, masked with the vertices
+    attributes = dict(mesh.vertex_attributes)
+    cleaned = trimesh.Trimesh(
+        vertices=vertices, faces=good, vertex_attributes=attributes, process=False
+    )
     cleaned.remove_unreferenced_vertices()
     report = WorkpieceReport(
         path=path,
@@ -167,23 +179,35 @@ def inspect_mesh(
 
 
 def load_workpiece(
-    path: str | Path, *, units: MeshUnits = "auto"
+    path: str | Path, *, units: MeshUnits = "auto", tolerance: StepTolerance | None = None
 ) -> tuple[trimesh.Trimesh, WorkpieceReport]:
     """Return the workpiece mesh in metres (degenerate faces removed) and a `WorkpieceReport`.
 
-    path: an STL, OBJ or PLY file. units: "mm", "m", or "auto" (metres unless the part would
-    then be larger than 20 m, in which case millimetres). Raises `MeshError` for a missing,
-    empty or non-mesh file and for a part whose size in the chosen units is implausible
-    (bounding-box diagonal outside [2 mm, 20 m]); `InputError` for an unknown `units`.
-    Vertex normals of the result (``mesh.vertex_normals``) follow the face winding.
+    path: an STL, OBJ or PLY file, or a STEP file tessellated with `tolerance` (None: the
+    defaults). units: "mm", "m", or "auto" (metres unless the part would then be larger than
+    20 m, in which case millimetres; a STEP file: mm). Raises `MeshError` for a missing,
+    empty or non-mesh file, a STEP file read in "m", and a part whose size in the chosen
+    units is implausible (bounding-box diagonal outside [2 mm, 20 m]); `InputError` for an
+    unknown `units`. Vertex normals of the result (``mesh.vertex_normals``) follow the face
+    winding.
     """
     p = Path(path)
     if units not in MESH_UNITS:
         raise InputError(f"units must be 'auto', 'mm' or 'm', got {units!r}")
-    raw = _read(p)
+    if p.suffix.lower() in STEP_SUFFIXES:
+        if units == "m":
+            raise MeshError(
+                f"workpiece {str(p)!r} is a STEP file: it carries its own length unit and is read"
+                " in mm, so units='m' would make it 1000x too large; pass units='mm' or 'auto'"
+            )
+        units = "mm"
+    raw = _read(p, tolerance or StepTolerance())
     raw_diag = _diagonal(np.asarray(raw.vertices))
     chosen, scale, warnings = _choose_scale(raw_diag, units, str(p))
     scaled = trimesh.Trimesh(
-        vertices=np.asarray(raw.vertices) * scale, faces=raw.faces, process=False
+        vertices=np.asarray(raw.vertices) * scale,
+        faces=raw.faces,
+        vertex_attributes=dict(raw.vertex_attributes),
+        process=False,
     )
     return inspect_mesh(scaled, path=str(p), units=chosen, scale=scale, warnings=tuple(warnings))

@@ -19,6 +19,7 @@ from pydantic import Field, ValidationError, model_validator
 from workbench.errors import InputError
 from workbench.project import bounds as B
 from workbench.project import program_io as io_
+from workbench.project.cad import check_step_scale
 from workbench.project.common import (
     Color,
     Joints,
@@ -178,6 +179,7 @@ class AssemblyPartSpec(StrictModel):
             raise ValueError(f"a {self.shape} part needs {', '.join(repr(k) for k in missing)}")
         if self.size is not None and any(s <= 0 for s in self.size):
             raise ValueError(f"box size must be positive [mm], got {self.size}")
+        check_step_scale(self.path, self.scale, "scale")
         return self
 
     def to_si(self) -> AssemblyPartSI:

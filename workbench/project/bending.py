@@ -1,7 +1,8 @@
 """The project file's `bending` section: press-brake bending (seed 000): part, bend sequence, grasp, cell.
 
 Millimetres and degrees. The part is given inline (`part`) or as a path to a part JSON
-(`part_file`, e.g. ``parts/seed_part.json``) with the same fields. `BendingSpec.to_si`
+(`part_file`, e.g. ``parts/seed_part.json``) with the same fields, or to a CAD file: a STEP of
+the bent part or a DXF flat pattern, read with the settings `part_import` (`part_import.py`). `BendingSpec.to_si`
 returns the section in SI units (`BendingSI`), the only form the service uses.
 
 Two fields hold a bend sequence, with one meaning: the part's `sequence` is the order the
@@ -31,6 +32,7 @@ from workbench.project import bounds as B
 from workbench.project.bend_steps import BendStepSI, BendStepSpec, GraspSpec, step_problems
 from workbench.project.common import Coordinate, Loc, Pose, StrictModel, Vec3mm, dotted, field_error
 from workbench.project.grasp_grid import GraspGridSpec
+from workbench.project.part_import import PartImportSpec, cad_kind, import_part
 from workbench.project.paths import ProjectFolders
 from workbench.project.press import (
     AxisRangeMM,
@@ -291,7 +293,9 @@ class BendingSpec(StrictModel):
     transfer to the pallet."""
 
     part: PartSpec | None = None
-    part_file: str | None = None  # path to a part JSON (mm/deg), relative to the project file
+    part_file: str | None = None  # path to a part JSON (mm/deg), relative to the project file,
+    # or a CAD file: a STEP of the bent part (.step/.stp) or a DXF flat pattern (.dxf)
+    part_import: PartImportSpec | None = None  # what a CAD part file does not say (mm)
     sequence: Annotated[list[str], AfterValidator(_unique)] | None = None  # overrides the part's
     grasp: GraspSpec = Field(default_factory=GraspSpec)
     die: DieSpec = Field(default_factory=DieSpec)
@@ -317,6 +321,11 @@ class BendingSpec(StrictModel):
         if (self.part is None) == (self.part_file is None):
             raise ValueError(
                 "give exactly one of 'part' (flanges, bends, thickness) or 'part_file' (a path)"
+            )
+        if self.part_import is not None and cad_kind(self.part_file) is None:
+            raise ValueError(
+                "part_import: only for a CAD part_file (.step, .stp or .dxf); remove it, or"
+                " name a CAD file in part_file"
             )
         if self.part is not None:
             if self.sequence is not None:
@@ -367,10 +376,12 @@ class BendingSpec(StrictModel):
         return step_problems(self.steps, stations, self.sequence_of(part), flanges)
 
     def read_part(self, base_dir: Path | ProjectFolders) -> PartSpec:
-        """Return the part section: inline, or read from `part_file` (relative to `base_dir`).
+        """Return the part section: inline, or read from `part_file` (relative to `base_dir`):
+        a part JSON, or a STEP / DXF file recognised with `part_import` (`project.part_import`).
 
-        ProjectError names `bending.part_file` when the file cannot be read or is invalid;
-        InputError when it leaves the project's folders (`ProjectFolders.read`).
+        ProjectError names `bending.part_file` when the file cannot be read or is invalid
+        (MeshError, naming the face, when a STEP solid is not sheet metal); InputError when it
+        leaves the project's folders (`ProjectFolders.read`).
         """
         if self.part is not None:
             return self.part
@@ -379,6 +390,8 @@ class BendingSpec(StrictModel):
         assert self.part_file is not None
         p = self.part_file
         raw = ProjectFolders.of(base_dir).read(p, "bending.part_file", kind="part")[1]
+        if cad_kind(p) is not None:
+            return import_part(raw, p, self.part_import)
         try:
             data = json.loads(raw)
         except (UnicodeDecodeError, RecursionError):

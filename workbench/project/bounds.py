@@ -152,6 +152,12 @@ NOISE_N = (0.0, 10_000.0)
 CUTOFF_HZ = (0.1, 100_000.0)
 """Polishing contact: the force sensor's low-pass cutoff [Hz]."""
 
+# -- CAD import ---------------------------------------------------------------------------------------
+LINEAR_TOLERANCE_MM = (0.001, 10.0)
+"""STEP tessellation: the chordal deviation, the largest distance from a triangle to the exact surface [mm]."""
+ANGULAR_TOLERANCE_DEG = (0.5, 60.0)
+"""STEP tessellation: the largest angle between the normals of neighbouring triangles on one face [deg]."""
+
 # -- work budgets (refused before the work starts, with the estimate) ---------------------------------
 LATENCY_MAX_CYCLES = 100
 """Polishing: latency x control rate, in whole control cycles (the orientation loop's
@@ -167,6 +173,7 @@ BUDGETS = (
     "workbench.polishing.process_path.MAX_PATH_POINTS",
     "workbench.polishing.force_control.MAX_STEPS",
     "workbench.collision.shapes.SOLID_SIZE",
+    "workbench.cad.brep_mesh.MAX_TRIANGLES",
 )
 """The work budgets, each a named setting next to the work it bounds (the domain packages
 cannot import the project's modules): work whose estimate exceeds one is refused before it

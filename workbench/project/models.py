@@ -18,11 +18,12 @@ from numpy.typing import ArrayLike, NDArray
 from pydantic import Field, model_validator
 
 from workbench.kinematics.joint_convention import JointConvention
-from workbench.kinematics.presets import MZ07_CONVENTION
+from workbench.kinematics.robot_library import LIBRARY, ROBOT_NAMES
 from workbench.project import bounds as B
 from workbench.project import program_io as io_
 from workbench.project.assembly import AssemblySpec
 from workbench.project.bending import BendingSpec
+from workbench.project.cad import CadSpec, check_step_scale
 from workbench.project.collision import CollisionSpec
 from workbench.project.common import (
     Angle,
@@ -46,8 +47,11 @@ JointAccel = Annotated[float, B.span(B.JOINT_ACCEL_DEG_S2, "deg/s²")]
 JointJerk = Annotated[float, B.span(B.JOINT_JERK_DEG_S3, "deg/s³")]
 
 SCHEMA_VERSION = 2
-PRESETS = ("mz07",)
-PRESET_CONVENTIONS = {"mz07": MZ07_CONVENTION}
+PRESETS = ROBOT_NAMES
+"""The robot presets: the robot library's names (`workbench.kinematics.robot_library`)."""
+PresetName = Literal["irb1200_7_70", "kr6_r900_2", "m10ia", "ur5e", "mz07"]
+"""The preset names as a type (the schema's enum); a test checks it lists `PRESETS`."""
+PRESET_CONVENTIONS = {name: robot.convention for name, robot in LIBRARY.items()}
 """Each preset's controller joint convention (robots given by DH rows or a URDF: identity)."""
 
 
@@ -112,7 +116,7 @@ class Robot(StrictModel):
     """
 
     name: str = "robot"
-    preset: Literal["mz07"] | None = None
+    preset: PresetName | None = None  # a robot of the library, see PRESETS
     dh: Annotated[list[DHRow], Field(max_length=B.MAX_DOF)] | None = None
     urdf: str | None = None  # path, relative to the project file
     base: Pose = Field(default_factory=Pose)
@@ -130,8 +134,9 @@ class Robot(StrictModel):
         given = [k for k in ("preset", "dh", "urdf") if getattr(self, k) is not None]
         if len(given) != 1:
             raise ValueError(
-                "give exactly one of 'preset' (e.g. \"mz07\"), 'dh' (rows of theta_offset, d, a,"
-                f" alpha, min, max) or 'urdf' (a file path); got {given or 'none'}"
+                f"give exactly one of 'preset' (one of {', '.join(PRESETS)}), 'dh' (rows of"
+                " theta_offset, d, a, alpha, min, max) or 'urdf' (a file path);"
+                f" got {given or 'none'}"
             )
         if self.dh is not None and len(self.dh) == 0:
             raise ValueError("'dh' needs at least one row")
@@ -198,6 +203,11 @@ class Tool(StrictModel):
     mass: io_.Mass | None = None  # kg (RAPID's tooldata needs it)
     cog: io_.Cog | None = None  # mm, centre of gravity in the flange frame
 
+    @model_validator(mode="after")
+    def _step_scale(self) -> Tool:
+        check_step_scale(self.mesh, self.mesh_scale, "mesh_scale")
+        return self
+
     def to_si(self) -> ToolSI:
         """Return the tool in SI."""
         return ToolSI(
@@ -249,6 +259,7 @@ class CellObject(StrictModel):
             raise ValueError(f"a {self.shape} needs {', '.join(repr(k) for k in missing)}")
         if self.size is not None and any(s <= 0 for s in self.size):
             raise ValueError(f"box size must be positive [mm], got {self.size}")
+        check_step_scale(self.path, self.scale, "scale")
         return self
 
     def to_si(self) -> CellObjectSI:
@@ -405,6 +416,7 @@ class Project(StrictModel):
     collision: CollisionSpec | None = None  # plan collision policy; absent: spheres + SDF
     work_objects: Annotated[list[io_.WorkObjectSpec], Field(max_length=B.MAX_ITEMS)] | None = None
     io: io_.IOSpec | None = None  # digital I/O, gripper, sync signals
+    cad: CadSpec | None = None  # STEP tessellation tolerances; absent: 0.05 mm, 5 deg
 
     @model_validator(mode="after")
     def _references(self) -> Project:

@@ -30,6 +30,7 @@ from workbench.collision.engine import EnginePathReport
 from workbench.errors import InputError, ProjectError, WorkbenchError
 from workbench.geometry import check_transform
 from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec, AssemblyTaskSI
+from workbench.project.cad import step_tolerance
 from workbench.project.program_io import program_settings
 from workbench.service.mesh_files import load_mesh_file
 from workbench.service.robot_setup import build_robot
@@ -111,7 +112,10 @@ class AssemblyService(SectionService[AssemblySpec]):
         where = f"assembly.parts[{i}]"
         if p.shape == "mesh":
             assert p.path is not None
-            mesh = load_mesh_file(p.path, self.wb.folders, p.scale, f"{where}.path")
+            tolerance = step_tolerance(self.wb.project.cad)
+            mesh = load_mesh_file(
+                p.path, self.wb.folders, p.scale, f"{where}.path", tolerance=tolerance
+            )
         else:
             mesh = primitive_mesh(p.shape, p.size, p.radius, p.height)
         part = AssemblyPart(p.name, mesh, p.start, p.goal, p.grasp, p.robot, p.color)
@@ -137,7 +141,7 @@ class AssemblyService(SectionService[AssemblySpec]):
                             f"{field}: {r.name!r} is already the project's robot; rename it",
                             [(field, "duplicate robot name")],
                         )
-                    setup = build_robot(r.robot, r.tool, wb.folders)
+                    setup = build_robot(r.robot, r.tool, wb.folders, wb.project.cad)
                     arms[r.name] = AssemblyArm.build(r.name, setup, setup.q0, cell, r.color)
                 self._arms = arms
             return self._arms

@@ -11,6 +11,7 @@ import trimesh
 from numpy.typing import NDArray
 
 from workbench.collision import Solid
+from workbench.project.cad import CadSpec, step_tolerance
 from workbench.project.models import CellObject, CellObjectSI
 from workbench.project.paths import ProjectFolders
 from workbench.service.mesh_files import load_mesh_file
@@ -36,9 +37,13 @@ class CellBody:
 
 
 def build_cell(
-    objects: Sequence[CellObject | CellObjectSI], base_dir: Path | ProjectFolders
+    objects: Sequence[CellObject | CellObjectSI],
+    base_dir: Path | ProjectFolders,
+    cad: CadSpec | None = None,
 ) -> list[CellBody]:
-    """Return the cell bodies of the project's objects; meshes are loaded relative to `base_dir`."""
+    """Return the cell bodies of the project's objects; meshes are loaded relative to `base_dir`
+    (STEP files tessellated with the project's `cad` tolerances)."""
+    tolerance = step_tolerance(cad)
     bodies = []
     for i, spec in enumerate(objects):
         obj = spec.to_si() if isinstance(spec, CellObject) else spec
@@ -51,7 +56,9 @@ def build_cell(
             solid = Solid(obj.name, "cylinder", radius=obj.radius, height=obj.height)
         else:
             assert obj.path is not None
-            mesh = load_mesh_file(obj.path, base_dir, obj.scale, f"{where}.path")
+            mesh = load_mesh_file(
+                obj.path, base_dir, obj.scale, f"{where}.path", tolerance=tolerance
+            )
             solid = Solid(obj.name, "mesh", mesh=mesh)
         bodies.append(
             CellBody(

@@ -35,6 +35,7 @@ from workbench.polishing import (
 from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.process_path import check_path_lengths, point_labels
 from workbench.polishing.program import RobotProgram, polishing_program
+from workbench.project.cad import step_tolerance
 from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
@@ -53,7 +54,7 @@ class PolishingService(SectionService[PolishingSpec]):
     """`Workbench.polishing`: the polishing workflow of the open project (SI units)."""
 
     section = "polishing"
-    missing = "add one with at least 'workpiece' (an STL, OBJ or PLY file)"
+    missing = "add one with at least 'workpiece' (an STL, OBJ, PLY or STEP file)"
     #: The path patterns and workpiece units the section accepts (the GUI's option lists).
     patterns = PATTERNS
     mesh_units = MESH_UNITS
@@ -96,7 +97,8 @@ class PolishingService(SectionService[PolishingSpec]):
             raise InputError(f"polishing.units: must be 'auto', 'mm' or 'm', got {u!r}")
         real = self._resolve(file)  # InputError naming polishing.workpiece if it leaves
         try:
-            fitted = fit_workpiece(real, u, self.T_world_workpiece)  # type: ignore[arg-type]
+            tol = step_tolerance(self.wb.project.cad)
+            fitted = fit_workpiece(real, u, self.T_world_workpiece, tol)  # type: ignore[arg-type]
         except WorkbenchError as exc:
             msg = str(exc)
             units_off = isinstance(exc, MeshError) and "units" in msg and "1000x" in msg

@@ -10,6 +10,8 @@ from pathlib import PurePosixPath
 from typing import TYPE_CHECKING
 
 from workbench.errors import InputError
+from workbench.kinematics.robot_library import library_robot
+from workbench.motion.programs.controller_base import in_model_base
 from workbench.motion.programs.formats import format_of, reader
 from workbench.motion.programs.readback import solve_moves
 from workbench.project.io import project_from_dict
@@ -37,6 +39,9 @@ def import_program(wb: Workbench, files: dict[str, str], fmt: str | None = None)
     read_fn = reader(fmt)
     source = ", ".join(files)
     read = read_fn(files)
+    preset = wb.project.robot.preset
+    if preset is not None:  # work objects as the controller states them: into the model's base
+        read = in_model_base(read, library_robot(preset).T_base_controller)
     joints = solve_moves(read, wb.robot)
     result = imported_project(wb.project, read, joints, wb.robot.convention, source=source)
     wb.replace_project(project_from_dict(result.data, source=source))

@@ -1,13 +1,21 @@
 """Robot programs of every workflow and their export: the plan (planned now if none, refused
-when it breaks a check unless forced), each workflow's `robot_programs(plan)`, the registry."""
+when it breaks a check unless forced), each workflow's `robot_programs(plan)`, the registry.
+
+A library robot (`robot.preset`) runs its vendor's language only: `default_format` is it, and
+a robot program in another vendor's language is refused (InputError naming the robot, its
+vendor and the format to use) unless `any_vendor`. Robots given by DH rows or a URDF have
+no vendor and export any format. Joint samples (csv, json) are never refused."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
 from workbench.errors import InputError, PlanningError
+from workbench.kinematics.robot_library import LibraryRobot, library_robot
+from workbench.motion.programs.controller_base import in_controller_base
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.formats import (
+    PROGRAM_FORMATS,
     SAMPLE_FORMATS,
     check_format,
     write_programs,
@@ -71,7 +79,7 @@ def motion_programs(wb: Workbench, plan: MotionPlan | None = None) -> list[Robot
     return [program]
 
 
-def robot_programs(wb: Workbench, workflow: str, plan: Any = None) -> list[RobotProgram]:
+def robot_programs(wb: Workbench, workflow: str = "motion", plan: Any = None) -> list[RobotProgram]:
     """Return the robot programs (one per robot) of a workflow's plan (default: the latest)."""
     if _check_workflow(workflow) == "motion":
         return motion_programs(wb, plan)
@@ -92,13 +100,48 @@ def _samples(workflow: str, plan: Any) -> list[tuple[str, Any, Any]]:
     return [(workflow, plan.times, plan.joints)]
 
 
+def library_entry(wb: Workbench) -> LibraryRobot | None:
+    """Return the robot library's record of the project's robot (None: a DH or URDF robot)."""
+    preset = wb.project.robot.preset
+    return None if preset is None else library_robot(preset)
+
+
+def default_format(wb: Workbench) -> str | None:
+    """Return the robot's vendor's program format ("rapid", "krl", "ls", "urscript",
+    "nachi"), or None for a robot without a vendor (DH rows, URDF: any format)."""
+    entry = library_entry(wb)
+    return None if entry is None else entry.program_format
+
+
+def check_vendor(wb: Workbench, fmt: str, *, any_vendor: bool = False) -> None:
+    """Raise InputError when `fmt` is a robot-program format the robot's controller does not
+    run (a library robot of another vendor), unless `any_vendor`."""
+    entry = library_entry(wb)
+    if any_vendor or entry is None or fmt not in PROGRAM_FORMATS:
+        return
+    if fmt != entry.program_format:
+        raise InputError(
+            f"format: the robot {entry.title!r} (preset {entry.name!r}) is a {entry.vendor}"
+            f" robot; its controller runs {entry.program_format!r} programs, not {fmt!r}:"
+            f" export as {entry.program_format!r}, or pass any_vendor=True (--any-vendor)"
+            f" to write {fmt!r} anyway"
+        )
+
+
 def export(
-    wb: Workbench, fmt: str, workflow: str = "motion", *, force: bool = False
+    wb: Workbench,
+    fmt: str,
+    workflow: str = "motion",
+    *,
+    force: bool = False,
+    any_vendor: bool = False,
 ) -> ExportedProgram:
     """Return the workflow's latest plan exported as `fmt` (robot programs, or csv/json joint
     samples). A plan that collides or breaks a limit is refused (PlanningError with its
-    summary) unless `force`."""
+    summary) unless `force`; a program in another vendor's language than the library robot's
+    is refused (InputError, `check_vendor`) unless `any_vendor`."""
     check_format(fmt)
+    check_vendor(wb, fmt, any_vendor=any_vendor)
     plan = latest_plan(wb, workflow)
     if not plan.ok and not force:
         raise PlanningError(
@@ -107,4 +150,22 @@ def export(
         )
     if fmt in SAMPLE_FORMATS:
         return write_samples(fmt, _samples(workflow, plan))
-    return write_programs(fmt, robot_programs(wb, workflow, plan))
+    written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
+    return write_programs(fmt, written)
+
+
+def controller_programs(
+    wb: Workbench, workflow: str, programs: list[RobotProgram]
+) -> list[RobotProgram]:
+    """Return the programs with the project robot's work objects in its controller's base frame
+    (`LibraryRobot.T_base_controller`; the same frame but for FANUC's world at J2 height)."""
+    entry = library_entry(wb)
+    if entry is None:
+        return programs
+    main = wb.project.robot.name
+    return [
+        in_controller_base(p, entry.T_base_controller)
+        if workflow != "assembly" or p.robot == main
+        else p
+        for p in programs
+    ]

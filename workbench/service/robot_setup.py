@@ -11,6 +11,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import ProjectError
 from workbench.kinematics.model import RobotModel
+from workbench.project.cad import CadSpec, step_tolerance
 from workbench.project.models import Robot, RobotSI, Tool, ToolSI
 from workbench.project.paths import ProjectFolders
 from workbench.project.units import to_deg
@@ -49,7 +50,7 @@ def build_robot_model(spec: Robot | RobotSI, base_dir: Path | ProjectFolders) ->
     if isinstance(spec, Robot):
         spec = spec.to_si()
     if spec.preset is not None:
-        return DHRobot.mz07()
+        return DHRobot.preset(spec.preset)
     if spec.dh is not None and spec.limits is not None:
         return DHRobot(spec.dh, spec.limits, name=spec.name)
     from workbench.kinematics import URDFRobot
@@ -60,10 +61,16 @@ def build_robot_model(spec: Robot | RobotSI, base_dir: Path | ProjectFolders) ->
     )
 
 
-def build_tool_mesh(tool: ToolSI, base_dir: Path | ProjectFolders) -> trimesh.Trimesh | None:
-    """Return the tool's mesh in the flange frame [m]: the file, a box, or a rod to the TCP."""
+def build_tool_mesh(
+    tool: ToolSI, base_dir: Path | ProjectFolders, cad: CadSpec | None = None
+) -> trimesh.Trimesh | None:
+    """Return the tool's mesh in the flange frame [m]: the file (a STEP file tessellated with
+    the `cad` tolerances), a box, or a rod to the TCP."""
     if tool.mesh is not None:
-        return load_mesh_file(tool.mesh, base_dir, tool.mesh_scale, "tool.mesh")
+        tolerance = step_tolerance(cad)
+        return load_mesh_file(
+            tool.mesh, base_dir, tool.mesh_scale, "tool.mesh", tolerance=tolerance
+        )
     if tool.size is not None:
         ext = tool.size
         box = trimesh.creation.box(extents=ext)
@@ -82,10 +89,13 @@ def build_tool_mesh(tool: ToolSI, base_dir: Path | ProjectFolders) -> trimesh.Tr
 
 
 def build_robot(
-    spec: Robot | RobotSI, tool: Tool | ToolSI, base_dir: Path | ProjectFolders
+    spec: Robot | RobotSI,
+    tool: Tool | ToolSI,
+    base_dir: Path | ProjectFolders,
+    cad: CadSpec | None = None,
 ) -> RobotSetup:
     """Return the robot setup for the project's robot and tool sections (SI specs, or the
-    sections themselves, converted here)."""
+    sections themselves, converted here); STEP meshes tessellated with the `cad` tolerances."""
     if isinstance(spec, Robot):
         spec = spec.to_si()
     if isinstance(tool, Tool):
@@ -105,7 +115,12 @@ def build_robot(
             if "max_velocity" not in given:
                 given["max_velocity"] = model.max_velocity
             model = DHRobot(
-                model.dh, model.limits, name=model.name, convention=model.convention, **given
+                model.dh,
+                model.limits,
+                name=model.name,
+                convention=model.convention,
+                controller_limits=model.controller_limits,
+                **given,
             )
         else:
             for name, values in rates.items():
@@ -122,17 +137,26 @@ def build_robot(
         for i, path in enumerate(spec.link_meshes):
             if path is not None:
                 meshes[i] = load_mesh_file(
-                    path, base_dir, spec.link_mesh_scale, f"robot.link_meshes[{i}]"
+                    path,
+                    base_dir,
+                    spec.link_mesh_scale,
+                    f"robot.link_meshes[{i}]",
+                    tolerance=step_tolerance(cad),
                 )
     q0 = _per_joint(spec.joints, dof, "robot.joints")  # model convention (RobotSI)
     if q0 is None:
         q0 = np.clip(np.zeros(dof), model.limits[:, 0], model.limits[:, 1])
     lo, hi = model.limits[:, 0], model.limits[:, 1]
     bad = np.flatnonzero((q0 < lo - 1e-12) | (q0 > hi + 1e-12))
+    conv = model.convention  # the message shows the values of the file: controller's
+    qc, lim = conv.to_controller(q0), conv.limits_to_controller(model.limits)
+    from workbench.kinematics import DHRobot
+
+    if not bad.size and isinstance(model, DHRobot) and model.controller_limits is not None:
+        lim = model.controller_limits  # a coupled convention (FANUC's J3): the exact limits
+        bad = np.flatnonzero((qc < lim[:, 0] - 1e-12) | (qc > lim[:, 1] + 1e-12))
     if bad.size:
         j = int(bad[0])
-        conv = model.convention  # the message shows the values of the file: controller's
-        qc, lim = conv.to_controller(q0), conv.limits_to_controller(model.limits)
         msg = (
             f"{to_deg(qc[j]):.3f} deg is outside the joint limits"
             f" [{to_deg(lim[j, 0]):.3f}, {to_deg(lim[j, 1]):.3f}] deg; move it inside"
@@ -143,6 +167,6 @@ def build_robot(
         link_meshes=meshes,
         T_world_base=spec.T_world_base,
         T_flange_tcp=tool.T_flange_tcp,
-        tool_mesh=build_tool_mesh(tool, base_dir),
+        tool_mesh=build_tool_mesh(tool, base_dir, cad),
         q0=q0,
     )

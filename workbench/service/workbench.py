@@ -18,7 +18,7 @@ from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import DHRobot, RobotModel, Singularities
 from workbench.kinematics.configurations import labelled_solutions, pick_solution
 from workbench.kinematics.dh_chain import joint_vector
-from workbench.motion.programs import ExportedProgram, RobotProgram
+from workbench.motion.programs import ExportedProgram
 from workbench.project import (
     Project,
     load_project,
@@ -75,8 +75,8 @@ class Workbench:
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
-        setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders)
-        cell = build_cell(project.cell.to_si(), self.folders)
+        setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders, project.cad)
+        cell = build_cell(project.cell.to_si(), self.folders, project.cad)
         cell += press_cell(None if project.bending is None else project.bending.press_si())
         checker = RobotCollisionChecker(
             setup.model,
@@ -184,10 +184,9 @@ class Workbench:
         `move_tcp` accepts them.
         """
         T = check_transform(T_world_tcp, "T_world_tcp")
+        setup = self._setup
         T_base_flange = (
-            invert_transform(self._setup.T_world_base)
-            @ T
-            @ invert_transform(self._setup.T_flange_tcp)
+            invert_transform(setup.T_world_base) @ T @ invert_transform(setup.T_flange_tcp)
         )
         found = labelled_solutions(self.robot, T_base_flange, self._q)
         return [IKSolution(q=q, label=label) for label, q in found]
@@ -205,10 +204,8 @@ class Workbench:
         return self.joints
 
     def singularities(self) -> Singularities:
-        """Return the singularity report of the current joints (wrist, elbow, shoulder).
-
-        DH arms only (the analysis reads the DH frames); other models raise WorkbenchError.
-        """
+        """Return the singularity report of the current joints (wrist, elbow, shoulder); DH arms
+        only (the analysis reads the DH frames), other models raise WorkbenchError."""
         model = self.robot
         if not isinstance(model, DHRobot):
             raise WorkbenchError("this robot model has no singularity analysis")
@@ -264,11 +261,8 @@ class Workbench:
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
-        """Plan the project's program: IK through its moves, a jerk-limited trajectory, checks.
-
-        `progress(fraction, message)` is called as the work advances. The plan is kept as
-        `last_plan` for playback and export.
-        """
+        """Return the plan of the project's program (IK, jerk-limited trajectory, checks), kept as
+        `last_plan`; `progress(fraction, message)` is called as the work advances."""
         plan = plan_project(
             self._project, self._setup, self._checker, self._q,
             policy=self.collision_policy, dt=dt, progress=progress,
@@ -282,19 +276,18 @@ class Workbench:
         """Return the most recent motion plan, or None before the first `plan_motion`."""
         return self._plan
 
-    def robot_programs(self, workflow: str = "motion", plan: Any = None) -> list[RobotProgram]:
-        """Return a workflow's robot programs (one per robot) of `plan` (default: the latest)."""
-        return programs.robot_programs(self, workflow, plan)
+    robot_programs = programs.robot_programs  # (workflow="motion", plan=None) -> list[RobotProgram]
+    default_program_format = programs.default_format  # the robot's vendor's format, or None
 
     def export_program(
-        self, fmt: str, workflow: str = "motion", *, force: bool = False
+        self, fmt: str, workflow: str = "motion", *, force: bool = False, any_vendor: bool = False
     ) -> ExportedProgram:
         """Return a workflow's latest plan (planned now if none) as robot programs (rapid, krl,
-        ls, urscript, nachi) or joint samples (csv, json); a plan that collides or breaks a
-        limit is refused (PlanningError) unless `force`."""
-        return programs.export(self, fmt, workflow, force=force)
+        ls, urscript, nachi) or joint samples (csv, json), refused unless `force` if it collides or
+        breaks a limit (PlanningError), unless `any_vendor` if not a library robot's language."""
+        return programs.export(self, fmt, workflow, force=force, any_vendor=any_vendor)
 
     def import_program(self, files: dict[str, str], fmt: str | None = None) -> tuple[str, ...]:
-        """Replace the project's program by a robot program written elsewhere (`files`: name ->
-        text); return the notes (lines not understood, by line). See `service.program_import`."""
+        """Return the notes (lines not understood) of replacing the project's program by a robot
+        program written elsewhere (`files`: name -> text; `service.program_import`)."""
         return program_import.import_program(self, files, fmt)

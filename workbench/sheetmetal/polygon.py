@@ -1,9 +1,9 @@
-"""Planar polygon helpers for flanges: area, ear-clipping triangulation, minimum-area rectangle."""
+"""Planar polygon helpers for flanges: area, clean-up, ear-clipping triangulation, minimum-area rectangle."""
 
 from __future__ import annotations
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 from scipy.spatial import ConvexHull, QhullError
 
 
@@ -11,6 +11,32 @@ def signed_area(poly: NDArray[np.float64]) -> float:
     """Return the signed area [m²] of a polygon (n, 2); positive when counter-clockwise."""
     x, y = poly[:, 0], poly[:, 1]
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def clean_ring(
+    points: ArrayLike, tol: float = 1e-9, keep: ArrayLike | None = None
+) -> NDArray[np.float64]:
+    """Return (n, 2) ring points without repeats or collinear vertices (except those in `keep`)."""
+    p = np.asarray(points, dtype=float).reshape(-1, 2)
+    kept = np.zeros((0, 2)) if keep is None else np.asarray(keep, dtype=float).reshape(-1, 2)
+    changed = True
+    while changed and len(p) >= 3:
+        changed = False
+        keep_mask = np.linalg.norm(p - np.roll(p, -1, axis=0), axis=1) > tol
+        if not keep_mask.all():
+            p, changed = p[keep_mask], True
+            continue
+        prev, nxt = np.roll(p, 1, axis=0), np.roll(p, -1, axis=0)
+        u, v = p - prev, nxt - p
+        cross = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+        off = np.abs(cross) / np.maximum(np.linalg.norm(nxt - prev, axis=1), 1e-300)
+        straight = (off < tol) & (np.sum(u * v, axis=1) > 0)
+        if len(kept):
+            near = np.linalg.norm(p[:, None, :] - kept[None, :, :], axis=2).min(axis=1)
+            straight &= near > 10 * tol
+        if straight.any():
+            p, changed = np.delete(p, int(np.argmax(straight)), axis=0), True
+    return p
 
 
 def triangulate(poly: NDArray[np.float64]) -> NDArray[np.int64]:

@@ -20,8 +20,12 @@ controller_joints`). Cartesian targets: X, Y, Z [mm] and W, P, R [deg] (R = Rz(R
 Rx(W), fixed axes x, y, z) of the TCP in the move's user frame, with
 ``CONFIG : 'F/N U/D T/B, t1, t4, t6'``:
 
-- F (flip) / N (no flip): the wrist is flipped, i.e. the controller's J5 is negative
-  (`ArmConfiguration.wrist_flip`);
+- F (flip) / N (no flip): the wrist is flipped (`ArmConfiguration.wrist_flip`): for a FANUC
+  arm (`JointConvention.flip_sign` +1) the controller's J5 is positive, so the usual
+  tool-down posture (J4 ~ 0, J5 ~ -90 deg) is N, as it is ABB's cfx 0 and KUKA's Status
+  'B010' (geometrically the same wrist; RoboDK computes its flip bit on joints whose J5 turns
+  the ABB way, FANUC's negated); for robots of other conventions the flip their convention
+  says (NACHI's MZ07: J5 negative);
 - U (up) / D (down): the elbow is up (`ArmConfiguration.elbow_up`);
 - T (top, i.e. front) / B (bottom, i.e. back): the wrist centre lies in front of J1
   (`ArmConfiguration.front`);

@@ -141,10 +141,13 @@ def motion_program(
                 raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
             bad = np.flatnonzero((q < lo) | (q > hi))
             if bad.size:
-                j = int(bad[0])
+                # Said in the controller's values: what the project file and the GUI show.
+                j, conv = int(bad[0]), model.convention
+                qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
                 raise InputError(
-                    f"{where}.joints[{j}]: {np.degrees(q[j]):g} deg is outside"
-                    f" [{np.degrees(lo[j]):.1f}, {np.degrees(hi[j]):.1f}] deg (model convention)"
+                    f"{where}.joints[{j}]: {np.degrees(qc[j]):g} deg is outside the joint"
+                    f" limits [{np.degrees(lim[j, 0]):.1f}, {np.degrees(lim[j, 1]):.1f}] deg;"
+                    " move it inside"
                 )
             moves.append(Move.joint(q, speed=mv.speed, zone=zone, name=mv.name))
             q_prev = q
