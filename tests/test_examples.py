@@ -145,6 +145,25 @@ def check_06_bending_sweep(capsys: pytest.CaptureFixture[str], tmp_path: Path) -
         assert "planned: 2 bends (" in out and "Collision-free." in out, out
 
 
+def check_07_own_cell(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    _, out = _run("07_own_cell", capsys)
+    assert "part: recognised from the STEP solid 'parts/u_channel.step': 3 flanges, 2 bends;" in out
+    # The STEP's flat blank is the hand-written U-channel's (projects/parts/u_channel.json).
+    twin = Workbench.open(ROOT / "projects" / "u_channel_cell.json").bending.part.blank_area()
+    assert f"flat blank: {twin * 1e6:.1f} mm^2" in out
+    assert "2 bends (B1 B2), 0 regrip(s)" in out and "Collision-free." in out
+    assert "refused: bending.part_import.thickness: missing" in out
+    assert "thickness 1.5 mm\n  flanges F1, F2, F3, F4, F5" in out
+    assert "obstacle fixture_block: 6 cell bodies; it touches tool" in out
+    for choice in Workbench.robot_choices():
+        found = re.search(
+            rf"{re.escape(choice.label)}: (\d+) configuration\(s\) reach above_left;"
+            rf" exports {choice.program_format}\n",
+            out,
+        )
+        assert found is not None and int(found.group(1)) >= 1, choice.name
+
+
 CHECKS: dict[str, Callable[[pytest.CaptureFixture[str], Path], None]] = {
     "01_jog_and_ik": check_01_jog_and_ik,
     "02_plan_and_export": check_02_plan_and_export,
@@ -152,6 +171,7 @@ CHECKS: dict[str, Callable[[pytest.CaptureFixture[str], Path], None]] = {
     "04_assembly": check_04_assembly,
     "05_polishing": check_05_polishing,
     "06_bending_sweep": check_06_bending_sweep,
+    "07_own_cell": check_07_own_cell,
 }
 SLOW = {"04_assembly", "06_bending_sweep"}  # over 5 s here
 

@@ -19,6 +19,7 @@ from workbench.gui import project_upload, uploads
 from workbench.gui.assembly_panel import AssemblyPanel
 from workbench.gui.bending_panel import BendingPanel
 from workbench.gui.collision_panel import CollisionPanel
+from workbench.gui.import_panel import ImportPanel
 from workbench.gui.jog_panel import JogPanel
 from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.picker import Picker
@@ -34,6 +35,7 @@ from workbench.gui.server_guard import (
     new_token,
 )
 from workbench.gui.timeline import Timeline
+from workbench.gui.uploads import WORKPIECES
 from workbench.service import Workbench
 from workbench.service.memory import release_memory
 from workbench.service.project_files import open_into
@@ -148,6 +150,7 @@ class WorkbenchApp:
         self._build_panels()
         with self.project_tab:
             self.project_panel = ProjectPanel(self)
+            self.import_panel = ImportPanel(self)
 
     def _build_panels(self) -> None:
         with self.robot_tab:
@@ -199,6 +202,14 @@ class WorkbenchApp:
             self.tabs.visible = True
         self.rebuild()
 
+    def upload_folders(self) -> list[Path]:
+        """Return the upload folders the project's files may lie in (Save as copies them): the
+        uploaded project's, the imported obstacles', the Polishing tab's workpiece."""
+        folders = [self.upload_root, WORKPIECES.folder]
+        if hasattr(self, "import_panel"):
+            folders += self.import_panel.folders
+        return [f for f in folders if f is not None]
+
     def rebuild(self) -> None:
         """Recreate the scene and every panel after the workbench switched projects.
 
@@ -217,6 +228,8 @@ class WorkbenchApp:
             self.views.frame_all()
             if hasattr(self, "project_panel"):
                 self.project_panel.refresh()
+            if hasattr(self, "import_panel"):
+                self.import_panel.refresh()
         release_memory()  # the replaced project's memory back to the OS
 
 

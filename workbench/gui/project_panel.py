@@ -192,7 +192,7 @@ class ProjectPanel:
                 self.wb,
                 target,
                 overwrite=bool(self.overwrite.value),
-                temporary=self.app.upload_root,
+                temporary=self.app.upload_folders(),
             )
         self.overwrite.value = False  # type: ignore[misc]
         self.refresh()

@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 import re
 import shutil
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -127,7 +128,11 @@ def save_target(folder: Path, name: str) -> Path:
 
 
 def save_as(
-    wb: Workbench, target: Path, *, overwrite: bool, temporary: Path | None = None
+    wb: Workbench,
+    target: Path,
+    *,
+    overwrite: bool,
+    temporary: Path | Sequence[Path | None] | None = None,
 ) -> list[str]:
     """Save `wb`'s project atomically to `target` and make `target` its file; return notes.
 
@@ -146,12 +151,14 @@ def save_as(
     plan: list[tuple[Any, str, str]] = []  # (model, attribute, new path)
     copies: list[tuple[Path, Path]] = []
     notes: list[str] = []
-    tmp = Path(os.path.realpath(temporary)) if temporary is not None else None
+    given_tmp = [temporary] if isinstance(temporary, Path) else list(temporary or [])
+    temps = [Path(os.path.realpath(t)) for t in given_tmp if t is not None]
     for where, given, model, attr in _named(project):
-        if os.path.isabs(given) or given.startswith("~"):
-            continue  # stays as it is: allowed folders are named absolutely
         src = wb.folders.resolve(given, where)
-        if tmp is not None and src.is_relative_to(tmp):
+        tmp = next((t for t in temps if src.is_relative_to(t)), None)
+        if tmp is None and (os.path.isabs(given) or given.startswith("~")):
+            continue  # stays as it is: allowed folders are named absolutely
+        if tmp is not None:
             dst = real_folder / src.relative_to(tmp)
             if dst.exists() and dst.read_bytes() != src.read_bytes() and not overwrite:
                 raise InputError(

@@ -29,7 +29,7 @@ from workbench.project import (
 )
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
-from workbench.service import program_import, programs
+from workbench.service import program_import, programs, project_imports
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell, press_cell
@@ -286,6 +286,12 @@ class Workbench:
         ls, urscript, nachi) or joint samples (csv, json), refused unless `force` if it collides or
         breaks a limit (PlanningError), unless `any_vendor` if not a library robot's language."""
         return programs.export(self, fmt, workflow, force=force, any_vendor=any_vendor)
+
+    # -- your own cell (service.project_imports): the whole project checked, or nothing changes
+    robot_choices = staticmethod(project_imports.robot_choices)  # () -> the robot library
+    use_robot = project_imports.use_robot  # (preset): the library's robot at the same base
+    add_cell_file = project_imports.add_cell_file  # (path, *, name, xyz_mm) -> its name
+    import_part = project_imports.import_bending_part  # (name, data, settings) -> summary
 
     def import_program(self, files: dict[str, str], fmt: str | None = None) -> tuple[str, ...]:
         """Return the notes (lines not understood) of replacing the project's program by a robot
