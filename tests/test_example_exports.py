@@ -44,17 +44,7 @@ PROJECTS = sorted((ROOT / "projects").glob("*.json"))
 
 
 def _workflows(path: Path) -> list[str]:
-    p = load_project(path)
-    return [
-        wf
-        for wf, has in (
-            ("motion", p.program is not None and bool(p.program.moves)),
-            ("bending", p.bending is not None),
-            ("assembly", p.assembly is not None and bool(p.assembly.parts)),
-            ("polishing", p.polishing is not None),
-        )
-        if has
-    ]
+    return load_project(path).workflows()
 
 
 def _slow_if_press(path: Path, workflow: str) -> tuple[pytest.MarkDecorator, ...]:

@@ -51,7 +51,6 @@ def main() -> int:
     print(f"ok every import of {installed} resolves")
 
     from workbench import Workbench
-    from workbench.project import load_project
     from workbench.service.programs import plan_workflow
 
     projects_dir = Path(sysconfig.get_path("data")) / "share" / "workbench" / "projects"
@@ -62,24 +61,15 @@ def main() -> int:
         return 1
     for path in projects:
         wb = Workbench.open(path)
-        p = load_project(path)
-        workflows = [
-            wf
-            for wf, has in (
-                ("motion", p.program is not None and bool(p.program.moves)),
-                ("bending", p.bending is not None),
-                ("assembly", p.assembly is not None and bool(p.assembly.parts)),
-                ("polishing", p.polishing is not None),
-            )
-            if has
-        ]
-        for wf in workflows:
+        native = wb.default_program_format()  # the robot's vendor's language
+        for wf in wb.project.workflows():
             plan_workflow(wb, wf)
-            exported = wb.export_program("json", wf)
-            if not exported.files:
-                print(f"FAIL {path.name} {wf}: the export wrote no file")
-                return 1
-            print(f"ok {path.name} {wf}: planned and exported")
+            for fmt in ("json", native):  # refused if the plan collides or breaks a limit
+                exported = wb.export_program(fmt, wf)
+                if not exported.files:
+                    print(f"FAIL {path.name} {wf}: the {fmt} export wrote no file")
+                    return 1
+            print(f"ok {path.name} {wf}: planned and exported ({native}, json)")
     return 0
 
 

@@ -175,6 +175,19 @@ class PartSpec(StrictModel):
             _check_sequence(self.sequence, [b.name for b in self.bends], "sequence")
         return self
 
+    @classmethod
+    def checked(cls, data: object, field: str, shown: str) -> PartSpec:
+        """Return the part `data` (parsed JSON, mm/deg) validated; ProjectError names each bad
+        field as `field`:path (``bending.part_file:flanges[1].polygon``), `shown` the source."""
+        from workbench.project.io import problems_from  # io imports the models: not at the top
+
+        try:
+            return cls.model_validate(data)
+        except ValidationError as exc:
+            problems = [(f"{field}:{path}", m) for path, m in problems_from(exc)]
+            lines = "; ".join(f"{a}: {b}" for a, b in problems)
+            raise ProjectError(f"{shown}: {lines}", problems) from None
+
     def radius_problem(
         self, air_radius: float | None, v_opening: float | None = None
     ) -> str | None:
@@ -385,7 +398,6 @@ class BendingSpec(StrictModel):
         """
         if self.part is not None:
             return self.part
-        from workbench.project.io import problems_from  # io imports the models: not at the top
 
         assert self.part_file is not None
         p = self.part_file
@@ -398,12 +410,7 @@ class BendingSpec(StrictModel):
             raise ProjectError(f"bending.part_file: {p} is not UTF-8 JSON text") from None
         except json.JSONDecodeError as exc:
             raise ProjectError(f"bending.part_file: {p} is not valid JSON: {exc}") from None
-        try:
-            return PartSpec.model_validate(data)
-        except ValidationError as exc:
-            problems = [(f"bending.part_file:{path}", m) for path, m in problems_from(exc)]
-            lines = "; ".join(f"{a}: {b}" for a, b in problems)
-            raise ProjectError(f"bending.part_file ({p}): {lines}", problems) from None
+        return PartSpec.checked(data, "bending.part_file", f"bending.part_file ({p})")
 
     def _die_si(self) -> Die:
         return Die(self.die.pose.to_si(), self.die.length * MM, "bending.die.length")

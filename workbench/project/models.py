@@ -422,3 +422,14 @@ class Project(StrictModel):
     def _references(self) -> Project:
         io_.check_references(self)
         return self
+
+    def workflows(self) -> list[str]:
+        """Return the workflows this project has the inputs of, in order: "motion" (a program
+        with moves), "bending", "assembly" (with parts), "polishing"."""
+        has = {
+            "motion": self.program is not None and bool(self.program.moves),
+            "bending": self.bending is not None,
+            "assembly": self.assembly is not None and bool(self.assembly.parts),
+            "polishing": self.polishing is not None,
+        }
+        return [name for name, present in has.items() if present]

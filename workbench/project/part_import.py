@@ -67,7 +67,6 @@ def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str)
     the model's 1e-3 mm edge-length check). ProjectError names `where` if it is invalid.
     """
     from workbench.project.bending import PartSpec
-    from workbench.project.io import problems_from
 
     def mm(v: Any) -> float:
         return round(float(v) / MM, 6)
@@ -105,12 +104,7 @@ def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str)
     }
     if spec.get("sequence") is not None:
         data["sequence"] = [str(s) for s in spec["sequence"]]
-    try:
-        return PartSpec.model_validate(data)
-    except ValidationError as exc:
-        problems = [(f"{where}:{path}", m) for path, m in problems_from(exc)]
-        lines = "; ".join(f"{a}: {b}" for a, b in problems)
-        raise ProjectError(f"{where}: {lines}", problems) from None
+    return PartSpec.checked(data, where, where)
 
 
 def _from_step(data: bytes, name: str, settings: PartImportSpec, where: str) -> dict[str, Any]:
