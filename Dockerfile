@@ -4,6 +4,9 @@
 FROM python:3.11-slim
 
 ENV PIP_NO_CACHE_DIR=1 PYTHONDONTWRITEBYTECODE=1 PYTHONUNBUFFERED=1
+# Open CASCADE (OCP, for STEP files) links libGL and libX11 even without a display.
+RUN apt-get update && apt-get install -y --no-install-recommends libgl1 \
+    && rm -rf /var/lib/apt/lists/*
 RUN useradd --create-home --uid 1000 workbench
 WORKDIR /app
 COPY pyproject.toml README.md ./

@@ -258,6 +258,20 @@ def test_a_step_file_over_the_mesh_limit_is_refused_before_it_is_read(
         load_mesh_file("big.step", tmp_path, 0.001, "tool.mesh")
 
 
+def test_open_cascade_that_does_not_load_is_refused_with_the_fix(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # What a machine without libGL sees: importing OCP's modules fails (an OSError from the
+    # loader; a None entry in sys.modules raises ImportError the same way).
+    import sys
+
+    from workbench.cad.step import read_step_shape
+
+    monkeypatch.setitem(sys.modules, "OCP.STEPControl", None)
+    with pytest.raises(MeshError, match=r"cell.objects\[0\].path: .*apt-get install libgl1"):
+        read_step_shape(b"ISO-10303-21;\nHEADER;", "x.step", "cell.objects[0].path")
+
+
 def test_too_many_triangles_are_refused_with_the_fix(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

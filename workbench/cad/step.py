@@ -58,9 +58,16 @@ def read_step_shape(data: bytes, name: str, field: str) -> Any:
             f"{field}: {name!r} is not a STEP file (it does not start with 'ISO-10303-21;');"
             " export the part as STEP AP214 or AP242"
         )
-    from OCP.IFSelect import IFSelect_RetDone
-    from OCP.Interface import Interface_Static
-    from OCP.STEPControl import STEPControl_Reader
+    try:  # OCP's libraries link libGL and libX11 (Debian: libgl1), even without a display
+        from OCP.IFSelect import IFSelect_RetDone
+        from OCP.Interface import Interface_Static
+        from OCP.STEPControl import STEPControl_Reader
+    except (ImportError, OSError) as exc:
+        raise MeshError(
+            f"{field}: cannot read STEP file {name!r}: Open CASCADE (OCP) does not load here"
+            f" ({exc}); install the package 'cadquery-ocp-novtk' and the system library"
+            " libGL (Debian: apt-get install libgl1)"
+        ) from None
 
     _quiet()
     Interface_Static.SetCVal_s("xstep.cascade.unit", "MM")
