@@ -50,7 +50,9 @@ def main(out_dir: str | Path | None = None) -> list[Path]:
             f" placed at {task.t_place:6.2f} s ({route.planner}, {len(route.poses)} key points)"
         )
 
-    exported = wb.export_program("rapid", "assembly")  # one RAPID task per robot, synced
+    # One RAPID task per robot, synced (ABB MultiMove's WaitSyncTask): the MZ07s' cell written
+    # as an ABB cell would run it; the MZ07's own language is "nachi", so any_vendor says so.
+    exported = wb.export_program("rapid", "assembly", any_vendor=True)
     written = exported.write_to(out)
     for path in written:
         print(f"wrote a robot's program: {path}")

@@ -125,8 +125,7 @@ class SequenceSearch:
             self.detail = g.add_markdown("")
             self.use = g.add_button("Use plan", icon=viser.Icon.CHECK, disabled=True)
         self.handles: list[Removable] = [
-            self.engine,
-            *self.limit_field.handles,
+            self.engine,  # the time limit's widgets go with `limit_field.remove` (its timer too)
             self.find,
             self.cancel,
             self.progress,
