@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import fcl
 import numpy as np
 import pytest
 import trimesh
+from mesh_overlap import fcl_overlap
 
 from workbench.kinematics import DHRobot
 from workbench.kinematics.link_shapes import flange_mesh, link_meshes
@@ -23,20 +23,6 @@ def meshes(robot: DHRobot) -> list[trimesh.Trimesh]:
 
 def placed(meshes: list[trimesh.Trimesh], frames: np.ndarray) -> list[trimesh.Trimesh]:
     return [m.copy().apply_transform(F) for m, F in zip(meshes, frames, strict=False)]
-
-
-def fcl_overlap(a: trimesh.Trimesh, b: trimesh.Trimesh) -> bool:
-    """Twin: python-fcl surface collision plus containment (fcl meshes are surfaces)."""
-
-    def obj(m: trimesh.Trimesh) -> fcl.CollisionObject:
-        bvh = fcl.BVHModel()
-        bvh.beginModel(len(m.vertices), len(m.faces))
-        bvh.addSubModel(m.vertices, m.faces)
-        bvh.endModel()
-        return fcl.CollisionObject(bvh, fcl.Transform())
-
-    hit = fcl.collide(obj(a), obj(b), fcl.CollisionRequest(), fcl.CollisionResult()) > 0
-    return bool(hit or a.contains(b.vertices[:1]).any() or b.contains(a.vertices[:1]).any())
 
 
 def test_meshes_are_watertight_and_non_empty(robot: DHRobot, meshes: list[trimesh.Trimesh]) -> None:

@@ -19,11 +19,10 @@ from __future__ import annotations
 import math
 import time
 
-import fcl
 import numpy as np
 import pinocchio as pin
 import pytest
-import trimesh
+from mesh_overlap import fcl_overlap
 
 from workbench.errors import InputError
 from workbench.kinematics import IK_TOL, DHRobot, JointConvention
@@ -60,20 +59,6 @@ FLANGE_AT = {  # controller joints [deg] -> flange position [mm] (sources in the
     "ur5e": [((0, 0, 0, 0, 0, 0), (-817.2, -232.9, 62.8))],
     "mz07": [((0, 90, 0, 0, 0, 0), (480.0, 0.0, 715.0))],
 }
-
-
-def fcl_overlap(a: trimesh.Trimesh, b: trimesh.Trimesh) -> bool:
-    """Twin (as tests/kinematics/test_link_shapes.py): fcl surface collision plus containment."""
-
-    def obj(m: trimesh.Trimesh) -> fcl.CollisionObject:
-        bvh = fcl.BVHModel()
-        bvh.beginModel(len(m.vertices), len(m.faces))
-        bvh.addSubModel(m.vertices, m.faces)
-        bvh.endModel()
-        return fcl.CollisionObject(bvh, fcl.Transform())
-
-    hit = fcl.collide(obj(a), obj(b), fcl.CollisionRequest(), fcl.CollisionResult()) > 0
-    return bool(hit or a.contains(b.vertices[:1]).any() or b.contains(a.vertices[:1]).any())
 
 
 def opw_forward(params, offsets, signs, q_ros) -> np.ndarray:  # noqa: ANN001
