@@ -23,6 +23,7 @@ __all__ = [
     "StepProperties",
     "StepTolerance",
     "faces_of",
+    "is_step",
     "read_step_mesh",
     "read_step_shape",
     "step_properties",
@@ -32,6 +33,12 @@ __all__ = [
 
 STEP_SUFFIXES = (".step", ".stp")
 """File name endings read as STEP."""
+
+
+def is_step(path: str | os.PathLike[str] | None) -> bool:
+    """Return whether `path` names a STEP file (.step or .stp, any case)."""
+    return path is not None and os.fspath(path).lower().endswith(STEP_SUFFIXES)
+
 
 MM_PER_M = 1000.0  # OCP's shapes are in mm; tolerances arrive in m
 DEFAULT_LINEAR_MM = 0.05

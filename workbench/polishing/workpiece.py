@@ -15,7 +15,7 @@ import trimesh
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from workbench.cad.step import STEP_SUFFIXES, StepTolerance, read_step_mesh
+from workbench.cad.step import StepTolerance, is_step, read_step_mesh
 from workbench.errors import InputError, MeshError
 from workbench.polishing.choices import MESH_UNITS, MeshUnits
 
@@ -53,7 +53,7 @@ def _read(path: Path, tolerance: StepTolerance) -> trimesh.Trimesh:
         raise MeshError(
             f"workpiece file {str(path)!r} is empty; give an STL, OBJ or PLY file with triangles"
         )
-    if path.suffix.lower() in STEP_SUFFIXES:
+    if is_step(path):
         return read_step_mesh(path.read_bytes(), str(path), "workpiece", tolerance)
     try:
         loaded = trimesh.load(str(path), force="mesh", process=True)
@@ -194,7 +194,7 @@ def load_workpiece(
     p = Path(path)
     if units not in MESH_UNITS:
         raise InputError(f"units must be 'auto', 'mm' or 'm', got {units!r}")
-    if p.suffix.lower() in STEP_SUFFIXES:
+    if is_step(p):
         if units == "m":
             raise MeshError(
                 f"workpiece {str(p)!r} is a STEP file: it carries its own length unit and is read"

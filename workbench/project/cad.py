@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from typing import Annotated
 
-from workbench.cad.step import DEFAULT_ANGULAR_DEG, DEFAULT_LINEAR_MM, STEP_SUFFIXES, StepTolerance
+from workbench.cad.step import DEFAULT_ANGULAR_DEG, DEFAULT_LINEAR_MM, StepTolerance, is_step
 from workbench.project import bounds as B
 from workbench.project.common import StrictModel, field_error
 from workbench.project.units import DEG, MM
@@ -41,11 +41,6 @@ class CadSpec(StrictModel):
 def step_tolerance(spec: CadSpec | None) -> StepTolerance:
     """Return the STEP tolerances of a project's `cad` section (None: the defaults) in SI."""
     return (spec or CadSpec()).to_si()
-
-
-def is_step(path: str | None) -> bool:
-    """Return whether `path` names a STEP file (.step or .stp, any case)."""
-    return path is not None and path.lower().endswith(STEP_SUFFIXES)
 
 
 def check_step_scale(path: str | None, scale: float, field: str) -> None:

@@ -148,11 +148,9 @@ def _from_dxf(data: bytes, name: str, settings: PartImportSpec, where: str) -> d
             f"missing: a DXF flat pattern ({name!r}) has no thickness; give it in mm,"
             ' e.g. "part_import": {"thickness": 2} (workbench import-part: --thickness 2)',
         )
-    try:
-        from workbench.cad.dxf import read_flat_pattern
-        from workbench.sheetmetal.flat_pattern import part_spec_from_flat_pattern
-    except ImportError:  # the DXF reader lands separately
-        raise ProjectError(f"{where}: DXF parts are not available in this build") from None
+    from workbench.cad.dxf import read_flat_pattern
+    from workbench.sheetmetal.flat_pattern import part_spec_from_flat_pattern
+
     if settings.base is not None:
         raise _setting("base", "only for a STEP part file; a DXF's base is its largest flange, F1")
     pattern = read_flat_pattern(data, name, where, bend_layer=settings.bend_layer)
