@@ -17,8 +17,9 @@ or the face) nothing changes. The service does the work (`service.project_import
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 import viser
 
@@ -38,6 +39,8 @@ from workbench.service.project_imports import (
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
+
+T = TypeVar("T")
 
 
 class ImportPanel:
@@ -127,38 +130,36 @@ class ImportPanel:
         labels = [c.label for c in self.choices]
         return self.choices[labels.index(str(self.robot.value))].name
 
-    def _apply(self, what: str, work, event: viser.GuiEvent, done: str) -> None:  # type: ignore[no-untyped-def]
-        with self.app.jobs.job(what):
-            work()
-            self.app.rebuild()
-        self.refresh()
+    def _apply(self, what: str, work: Callable[[], T], event: viser.GuiEvent, done: str) -> T:
+        """Run `work` as the session's job and rebuild the tabs on its project; return its result.
+
+        A refused import changes nothing; either way the panel shows what is in use.
+        """
+        try:
+            with self.app.jobs.job(what):
+                result = work()
+                self.app.rebuild()
+        finally:
+            self.refresh()  # a refused robot: the dropdown shows the one still in use
         notify(self.server, event.client, "Imported", done, color="green")
+        return result
 
     def _on_use_robot(self, event: viser.GuiEvent) -> None:
         name = self._choice()
-        try:
-            self._apply(
-                "changing the robot",
-                lambda: use_robot(self.app.wb, name),
-                event,
-                f"robot {name}",
-            )
-        finally:
-            self.refresh()  # a refused robot: the dropdown shows the one still in use
+        self._apply(
+            "changing the robot", lambda: use_robot(self.app.wb, name), event, f"robot {name}"
+        )
 
     def _on_part(self, event: viser.GuiEvent) -> None:
         up = self.part.value
         name = safe_name(up.name, "part.step")
-        summary: list[str] = []
-        self._apply(
+        summary = self._apply(
             "importing a part",
-            lambda: summary.append(
-                import_bending_part(self.app.wb, name, up.content, self.settings())
-            ),
+            lambda: import_bending_part(self.app.wb, name, up.content, self.settings()),
             event,
             name,
         )
-        self.info.content = f"Part **{name}**: {summary[0]}"
+        self.info.content = f"Part **{name}**: {summary}"
 
     def _on_obstacle(self, event: viser.GuiEvent) -> None:
         up = self.obstacle.value
@@ -167,13 +168,12 @@ class ImportPanel:
         path = folder / name
         path.write_bytes(up.content)
         wb = self.app.wb
-        added: list[str] = []
         try:
             wb.folders = wb.folders.with_allowed(folder)
             xyz = [float(v) for v in self.at.value]
-            self._apply(
+            added = self._apply(
                 "importing an obstacle",
-                lambda: added.append(add_cell_file(wb, path, xyz_mm=xyz)),
+                lambda: add_cell_file(wb, path, xyz_mm=xyz),
                 event,
                 name,
             )
@@ -182,4 +182,4 @@ class ImportPanel:
             project_upload.remove_folder(folder)
             raise
         self.folders.append(folder)
-        self.info.content = f"Obstacle **{added[0]}** from `{name}` in the cell"
+        self.info.content = f"Obstacle **{added}** from `{name}` in the cell"
