@@ -66,6 +66,7 @@ def test_import_a_robot_a_step_part_a_dxf_part_and_an_obstacle(launch, tmp_path:
     close_notifications(page)
     type_number(page, "Sheet thickness [mm]", "-2")  # out of bounds: refused, the box reverts
     page.get_by_text("Sheet thickness [mm]: refused").first.wait_for()
+    page.get_by_text("kept the box blank").first.wait_for()  # what the box shows
     wait_for(lambda: number_box(page, "Sheet thickness [mm]").input_value() == "", what="revert")
     assert panel.numbers == {}
     close_notifications(page)
@@ -90,3 +91,8 @@ def test_import_a_robot_a_step_part_a_dxf_part_and_an_obstacle(launch, tmp_path:
     _upload(page, "Import obstacle", broken)
     page.get_by_text("cannot read STEP file").first.wait_for()
     assert len(app.wb.project.cell.objects) == n + 1
+
+    # Each import rebuilt the tabs: the Bending tab shows its widgets once, none left behind.
+    page.get_by_role("tab", name="Bending").click()
+    page.get_by_text("Level 0 (root)").first.wait_for()
+    assert page.get_by_text("OBB tree levels", exact=True).count() == 1

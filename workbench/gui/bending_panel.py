@@ -108,7 +108,8 @@ class BendingPanel:
         self.offset_x, self.offset_y = (f.text for f in self.offset_fields)
         self.levels = []
         depth = svc.tree_depth()
-        with g.add_folder("OBB tree levels"):
+        self.levels_folder = g.add_folder("OBB tree levels")  # kept: `remove` removes it
+        with self.levels_folder:
             for lvl in range(depth):
                 name = "root" if lvl == 0 else ("flanges" if lvl == depth - 1 else f"split {lvl}")
                 cb = g.add_checkbox(f"Level {lvl} ({name})", initial_value=lvl == 0)
@@ -139,6 +140,7 @@ class BendingPanel:
             self.progress,
             self.result,
             self.plot_folder,
+            self.levels_folder,  # after its checkboxes and markdown
         ]
         self.apply_sequence.on_click(guarded(s, "Bend sequence")(self._on_sequence))
         self.step.on_update(guarded(s, "Fold step")(self._on_step_set))
