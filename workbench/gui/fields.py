@@ -220,7 +220,8 @@ class NumberField:
             self.server,
             client,
             f"{self.label}: refused",
-            f"{message.rstrip('.')}. Allowed: {self.allowed()}; kept {self.text.value}.",
+            f"{message.rstrip('.')}. Allowed: {self.allowed()};"
+            f" kept {self.text.value or 'the box blank'}.",
         )
 
 
