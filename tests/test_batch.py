@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from workbench.batch import ENGINES, BatchRun, BatchStats, batches_of, run_batches
+from workbench.batch import ENGINES, BatchRun, BatchStats, batches_of, engine_session, run_batches
 from workbench.errors import InputError, PlanningError, UnreachableError, WorkbenchError
 
 ray = pytest.importorskip("ray")
@@ -184,21 +184,9 @@ def test_a_run_built_by_hand_counts_non_none_results_as_done() -> None:
 
 @pytest.fixture(scope="module")
 def local_ray() -> Iterator[None]:
-    """Start one local Ray (2 CPUs) for this module's Ray tests; shut it down after."""
-    auth_mode = os.environ.get("RAY_AUTH_MODE")  # ray.init sets it for the process
-    ray.init(
-        address="local",  # a new instance, whatever RAY_ADDRESS or `ray start` say
-        num_cpus=2,
-        include_dashboard=False,
-        log_to_driver=False,
-        configure_logging=False,
-    )
-    yield
-    ray.shutdown()
-    if auth_mode is None:
-        os.environ.pop("RAY_AUTH_MODE", None)
-    else:
-        os.environ["RAY_AUTH_MODE"] = auth_mode
+    """Start one local Ray for this module's Ray tests, as a search does; shut it down after."""
+    with engine_session("ray"):  # as a search starts it: local, on all cores, a token
+        yield
 
 
 @pytest.fixture(params=ENGINES)

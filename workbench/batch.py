@@ -16,9 +16,6 @@ time limit, keeping the results finished so far. Ray is imported only by the Ray
 
 from __future__ import annotations
 
-import os
-import socket
-import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -26,11 +23,21 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from workbench.errors import InputError, PlanningError, WorkbenchError
+from workbench.ray_session import access as ray_access
+from workbench.ray_session import check_ray_version, start_ray, stop_ray
 
 if TYPE_CHECKING:
     from ray.exceptions import RayTaskError
 
-__all__ = ["ENGINES", "BatchRun", "BatchStats", "batches_of", "run_batches"]
+__all__ = [
+    "ENGINES",
+    "BatchRun",
+    "BatchStats",
+    "batches_of",
+    "check_engine",
+    "engine_session",
+    "run_batches",
+]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -39,7 +46,6 @@ C = TypeVar("C")
 ENGINES = ("serial", "ray")
 
 _TICK_S = 0.1  # how often the Ray engine polls cancel() and the time limit [s]
-_FIX = "start a cluster with `ray start --head` or leave the address out for a local Ray"
 
 
 def batches_of(items: Sequence[T], size: int) -> list[list[T]]:
@@ -75,6 +81,9 @@ class BatchStats:
     overhead_per_batch_s: float
     """``(wall_s * min(workers, batches) - compute_s) / batches``, at least 0 [s]:
     scheduling and transfer per batch."""
+    access: str = ""
+    """Ray only: who may use the Ray the run used (`workbench.ray_session.access`: token
+    authentication, or a warning that any client may attach); empty for serial."""
 
     def describe(self) -> str:
         """Return one line for a log or a status bar, e.g.
@@ -84,8 +93,9 @@ class BatchStats:
         """
         where = "" if self.engine == "serial" else f"{self.address or 'local'}, "
         workers = f"{self.workers} worker{'s' if self.workers != 1 else ''}"
+        guard = f", {self.access}" if self.access else ""
         line = (
-            f"{self.engine} ({where}{workers}): {self.batches} batches, {self.items} items "
+            f"{self.engine} ({where}{workers}{guard}): {self.batches} batches, {self.items} items "
             f"in {self.wall_s:.3g} s; overhead {self.overhead_per_batch_s:.3g} s per batch"
         )
         if self.batches and self.compute_s > 0:
@@ -259,6 +269,7 @@ class _Tally(Generic[R]):
         *,
         cancelled: bool,
         timed_out: bool,
+        access: str = "",
     ) -> BatchRun[R]:
         """Return the run: results so far and stats."""
         overhead = 0.0
@@ -277,6 +288,7 @@ class _Tally(Generic[R]):
             startup_s=startup_s,
             compute_s=self.compute_s,
             overhead_per_batch_s=overhead,
+            access=access,
         )
         return BatchRun(self.results, stats, cancelled, timed_out, _done=tuple(self.done))
 
@@ -316,13 +328,14 @@ def _run_ray(
     connect_timeout: float,
 ) -> BatchRun[R]:
     """Return the run of `batches` as Ray tasks, all submitted up front."""
+    started = time.perf_counter()
+    owned = start_ray(address, connect_timeout)  # refuses a Ray too old to authenticate
+    startup = time.perf_counter() - started
     import ray
     from ray.exceptions import RayTaskError
 
-    started = time.perf_counter()
-    owned = _start_ray(address, connect_timeout)
-    startup = time.perf_counter() - started
     try:
+        access = ray_access()
         workers = max(1, int(ray.cluster_resources().get("CPU", 1)))
         start = time.perf_counter()
         deadline = None if time_limit is None else start + time_limit
@@ -357,21 +370,23 @@ def _run_ray(
         wall = time.perf_counter() - start
     finally:
         if owned:
-            ray.shutdown()
+            stop_ray()
     return tally.finish(
-        "ray", address, workers, wall, startup, cancelled=cancelled, timed_out=timed_out
+        "ray",
+        address,
+        workers,
+        wall,
+        startup,
+        cancelled=cancelled,
+        timed_out=timed_out,
+        access=access,
     )
 
 
-@contextmanager
-def engine_session(
-    engine: str, address: str | None = None, *, connect_timeout: float = 10.0
-) -> Iterator[None]:
-    """Start (or attach to) Ray once for a job of several `run_batches` calls, and shut it
-    down after, if this call started it; a no-op for the serial engine.
-
-    The runs inside reuse the session, so a search's rounds pay Ray's start-up once.
-    """
+def check_engine(engine: str, address: str | None = None) -> None:
+    """Raise InputError for an unknown engine, an address without Ray, or an installed Ray too
+    old to authenticate (`ray_session.check_ray_version`): a job checks this before its
+    set-up, and no Ray process starts for a refused one."""
     if engine not in ENGINES:
         raise InputError(f"engine: must be one of {list(ENGINES)}, got {engine!r}")
     if engine == "serial":
@@ -379,16 +394,30 @@ def engine_session(
             raise InputError(
                 f"address: {address!r} is for the ray engine; leave it out with engine='serial'"
             )
-        yield
         return
-    import ray
+    check_ray_version()
 
-    owned = _start_ray(address, connect_timeout)
+
+@contextmanager
+def engine_session(
+    engine: str, address: str | None = None, *, connect_timeout: float = 10.0
+) -> Iterator[str]:
+    """Start (or attach to) Ray once for a job of several `run_batches` calls, and shut it
+    down after, if this call started it; a no-op for the serial engine.
+
+    Yields who may use that Ray (`BatchStats.access`; empty for serial). The runs inside
+    reuse the session, so a search's rounds pay Ray's start-up once.
+    """
+    check_engine(engine, address)
+    if engine == "serial":
+        yield ""
+        return
+    owned = start_ray(address, connect_timeout)
     try:
-        yield
+        yield ray_access()
     finally:
         if owned:
-            ray.shutdown()
+            stop_ray()
 
 
 def _original(err: RayTaskError) -> BaseException:
@@ -413,103 +442,3 @@ def _remote_timed_call() -> Any:
 
         _REMOTE.append(ray.remote(_timed_call))
     return _REMOTE[0]
-
-
-def _start_ray(address: str | None, connect_timeout: float) -> bool:
-    """Return whether this call started (or attached) Ray and so must shut it down.
-
-    A Ray already initialised in this process is reused (False). On any failure Ray is
-    shut down again, so no half-initialised Ray is left behind.
-    """
-    import ray
-
-    if ray.is_initialized():
-        return False
-    if address is None:
-        # "local": a new instance even where RAY_ADDRESS is set or `ray start` ran on this
-        # machine (a bare ray.init() would attach to that cluster, or to its stale address).
-        options: dict[str, Any] = {
-            "address": "local",
-            "num_cpus": os.cpu_count(),
-            "include_dashboard": False,
-        }
-    else:
-        _check_answers(address, connect_timeout)
-        options = {"address": address}
-    try:
-        ray.init(**options, log_to_driver=False, configure_logging=False)
-    except Exception as err:
-        ray.shutdown()
-        if address is None:
-            raise
-        raise InputError(_attach_failure(address, err)) from err
-    return True
-
-
-def _attach_failure(address: str, err: BaseException) -> str:
-    """Return the message for a failed ``ray.init(address=...)``, naming the address and fix."""
-    chain: list[BaseException] = []
-    link: BaseException | None = err
-    while link is not None and link not in chain:
-        chain.append(link)
-        link = link.__cause__ or link.__context__
-    if any(_wants_token(e) for e in chain):
-        return (
-            f"the Ray cluster at {address!r} answers but wants an authentication token: set "
-            "RAY_AUTH_MODE=token and make the cluster's token available (~/.ray/auth_token or "
-            "RAY_AUTH_TOKEN), or leave the address out for a local Ray"
-        )
-    return f"could not attach to the Ray cluster at {address!r} ({err}); {_FIX}"
-
-
-def _wants_token(err: BaseException) -> bool:
-    """Return whether `err` says the cluster refused this process's (missing) auth token."""
-    # Ray raises AuthenticationError, or, from its connect loop, a RuntimeError whose text
-    # holds that error's traceback.
-    return "AuthenticationError" in f"{type(err).__name__} {err}" or "InvalidAuthToken" in str(err)
-
-
-def _check_answers(address: str, timeout: float) -> None:
-    """Raise InputError unless a Ray head (GCS) answers at `address` within `timeout` [s].
-
-    ``ray.init(address=...)`` retries for minutes against a port that is closed or held by
-    something else, so the port is tried with a plain socket first, then with Ray's GCS
-    client in a thread that is given up on (not waited for) after the timeout.
-    """
-    host, _, port = address.rpartition(":")
-    if not host or not port.isdigit():
-        raise InputError(
-            f"Ray address {address!r} is not host:port (e.g. '127.0.0.1:6379'); {_FIX}"
-        )
-    deadline = time.perf_counter() + timeout
-    try:
-        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout):
-            pass
-    except OSError as err:
-        why = err.strerror or type(err).__name__
-        raise InputError(
-            f"no Ray cluster answers at {address!r} ({why}, waited up to {timeout:g} s); {_FIX}"
-        ) from None
-    # Any reply, even an error, shows a Ray GCS is there; only silence means something else
-    # holds the port. A refused token is reported now (ray.init would retry it for ~20 s);
-    # anything else is left to ray.init, which does the real handshake.
-    replied = threading.Event()
-    failures: list[Exception] = []
-
-    def probe() -> None:
-        try:
-            from ray._raylet import GcsClient  # type: ignore[attr-defined]
-
-            GcsClient(address=address)
-        except Exception as err:
-            failures.append(err)
-        replied.set()
-
-    threading.Thread(target=probe, name="ray-gcs-probe", daemon=True).start()
-    if not replied.wait(max(0.5, deadline - time.perf_counter())):
-        raise InputError(
-            f"something answers at {address!r} but it is not a Ray cluster head (no GCS reply "
-            f"within {timeout:g} s); {_FIX}"
-        )
-    if failures and _wants_token(failures[0]):
-        raise InputError(_attach_failure(address, failures[0])) from failures[0]

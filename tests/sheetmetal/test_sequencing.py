@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
-import os
 import sys
 import uuid
 from collections.abc import Callable, Iterator
@@ -34,6 +33,7 @@ import numpy as np
 import pytest
 
 from workbench import Workbench
+from workbench.batch import engine_session
 from workbench.errors import InputError
 from workbench.service.bending_process import sweep_context
 from workbench.sheetmetal import SheetMetalPart, sequencing
@@ -483,23 +483,11 @@ def test_cancel_returns_with_the_note(base_ctx: SweepContext) -> None:
 
 @pytest.fixture(scope="module")
 def local_ray() -> Iterator[None]:
-    """Start one local Ray (2 CPUs) for this module's Ray tests; shut it down after."""
+    """Start one local Ray for this module's Ray tests, as a search does; shut it down after."""
     ray = pytest.importorskip("ray")
     ray.cloudpickle.register_pickle_by_value(sys.modules[__name__])
-    auth_mode = os.environ.get("RAY_AUTH_MODE")  # ray.init sets it for the process
-    ray.init(
-        address="local",
-        num_cpus=2,
-        include_dashboard=False,
-        log_to_driver=False,
-        configure_logging=False,
-    )
-    yield
-    ray.shutdown()
-    if auth_mode is None:
-        os.environ.pop("RAY_AUTH_MODE", None)
-    else:
-        os.environ["RAY_AUTH_MODE"] = auth_mode
+    with engine_session("ray"):  # as a search starts it: local, on all cores, a token
+        yield
 
 
 def _summary(plans: list[SequencePlan]) -> list[tuple[object, ...]]:

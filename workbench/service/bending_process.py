@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from workbench.batch import check_engine
 from workbench.collision.plan_check import shared_engine
 from workbench.errors import InputError
 from workbench.project.bending import BendingSI, BendStepSI
@@ -152,6 +153,7 @@ def search(
     settings: SearchSettings | None,
 ) -> SearchResult:
     """Return the ranked plans of the project's part; each is checked as a full cycle."""
+    check_engine(engine, address)  # before the set-up: an unusable engine fails at once
     ctx = sweep_context(svc)
     wb = svc.wb
     setup = wb.setup

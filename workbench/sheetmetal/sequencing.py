@@ -121,14 +121,17 @@ class SearchStats:
     overhead_per_batch: float
     compute: float
     rounds: int
+    access: str = ""
+    """Ray: who may use the Ray the search ran on (`BatchStats.access`); empty for serial."""
 
     def describe(self) -> str:
-        """Return one line of the figures."""
-        return (
+        """Return one line of the figures (and, on Ray, who may use that Ray)."""
+        line = (
             f"{self.candidates} bend candidates and {self.verified} full cycles checked in "
             f"{self.time:.1f} s ({self.engine}, {self.workers} worker(s), {self.batches} batches, "
             f"overhead {self.overhead_per_batch * 1e3:.1f} ms per batch)"
         )
+        return f"{line}; Ray: {self.access}" if self.access else line
 
 
 @dataclass(frozen=True, eq=False)
@@ -341,10 +344,11 @@ def find_sequences(
     cycle fails; None keeps the cheap stage's verdict. `time_limit` [s] (None: none) stops
     the search and returns what was found, with a note; `cancel()` True stops it too.
     """
-    with engine_session(engine, address):
-        return _search(
+    with engine_session(engine, address) as ray_access:
+        found = _search(
             ctx, verify, engine, address, time_limit, progress, cancel, settings, robot_free
         )
+    return replace(found, stats=replace(found.stats, access=ray_access))
 
 
 def _search(
