@@ -158,7 +158,7 @@ def test_cache_clear_removes_entries_only(
 
 def test_upload_folders_go_when_replaced_failed_or_at_exit(tmp_path: Path) -> None:
     wb = Workbench.open(CELL)
-    slot = UploadSlot("workbench-workpiece-test-")
+    slot = UploadSlot("workpiece")
     with slot.new_file(wb, "a.stl", b"solid a") as first:
         assert wb.folders.resolve(str(first), "polishing.workpiece") == first.resolve()
     with slot.new_file(wb, "b.stl", b"solid b") as second:
@@ -173,3 +173,74 @@ def test_upload_folders_go_when_replaced_failed_or_at_exit(tmp_path: Path) -> No
     assert not third.parent.exists() and second.exists()  # a failed one goes, the last stays
     remove_all()  # what runs at exit
     assert not second.parent.exists()
+
+
+def test_upload_folders_left_by_a_server_that_is_gone_are_removed_at_the_next_start() -> None:
+    import subprocess
+    import sys
+    import tempfile
+
+    from workbench.gui.uploads import remove_stale
+
+    gone = subprocess.run(
+        [sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True
+    )
+    dead = int(gone.stdout)
+    root = Path(tempfile.gettempdir())
+    started = time.time()
+    left = root / f"workbench-project-{dead}-test"  # its server was killed (SIGKILL, a crash)
+    mine = root / f"workbench-workpiece-{os.getpid()}-test"  # a running server's: stays
+    old = root / "workbench-project-legacytest"  # named before the pid was: by its age
+    new = root / "workbench-project-newtest"
+    other = root / "workbench-cache-test"  # not an upload folder
+    for folder in (left, mine, old, new, other):
+        folder.mkdir(exist_ok=True)
+        (folder / "a.stl").write_text("solid a")
+    os.utime(old, (started - 3600, started - 3600))
+    os.utime(new, (started + 60, started + 60))
+    try:
+        removed = remove_stale(started)
+        assert set(removed) >= {left, old}
+        assert not left.exists() and not old.exists()
+        assert mine.exists() and new.exists() and other.exists()
+        remove_all()  # at exit: this process's own folders go too
+        assert not mine.exists() and new.exists()
+    finally:
+        import shutil
+
+        for folder in (left, mine, old, new, other):
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_sigterm_stops_the_server_and_removes_its_upload_folders(tmp_path: Path) -> None:
+    """`docker stop` sends SIGTERM: the server exits normally, and its upload folders go."""
+    import signal
+    import socket
+    import subprocess
+    import sys
+    import tempfile
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "workbench", "serve", str(CELL), "--port", str(port)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        cwd=tmp_path,
+    )
+    try:
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            if "serving" in line:
+                break
+        upload = Path(tempfile.gettempdir()) / f"workbench-project-{proc.pid}-sigterm"
+        upload.mkdir()
+        (upload / "block.stl").write_text("solid a")
+        proc.send_signal(signal.SIGTERM)
+        code = proc.wait(timeout=60)
+    finally:
+        proc.kill()
+    assert code == 128 + signal.SIGTERM
+    assert not upload.exists()

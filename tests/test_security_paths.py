@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 from pathlib import Path
 
 import pytest
@@ -131,20 +132,22 @@ def test_the_bending_part_file_stays_inside(tree: dict[str, Path]) -> None:
     (proj / "part.json").write_text(part)
     for given, ok in (("part.json", True), ("../outside/part.json", False), ("/dev/zero", False)):
         data["bending"]["part_file"] = given
-        wb = Workbench.from_dict(data, base_dir=proj)
         if ok:
+            wb = Workbench.from_dict(data, base_dir=proj)
             assert wb.bending.part_spec().thickness > 0
-        else:
+        else:  # refused at open: the part file is checked with the project
             with pytest.raises(InputError, match=r"bending\.part_file: .*outside the project"):
-                wb.bending.part_spec()
+                Workbench.from_dict(data, base_dir=proj)
     (proj / "part.json").write_text('{"thickness": ')  # broken JSON names the field only
     data["bending"]["part_file"] = "part.json"
     with pytest.raises(ProjectError, match=r"bending\.part_file"):
-        Workbench.from_dict(data, base_dir=proj).bending.part_spec()
+        Workbench.from_dict(data, base_dir=proj)
 
 
 def test_the_polishing_workpiece_stays_inside(tree: dict[str, Path]) -> None:
     data = json.loads((ROOT / "projects" / "polishing_cell.json").read_text())
+    shutil.copyfile(ROOT / "web_assets" / "workpieces" / "panel.stl", tree["proj"] / "panel.stl")
+    data["polishing"]["workpiece"] = "panel.stl"
     wb = Workbench.from_dict(data, base_dir=tree["proj"])
     with pytest.raises(InputError, match=r"polishing\.workpiece: .*outside the project"):
         wb.polishing.load_workpiece(tree["outside"] / "secret.stl")

@@ -7,7 +7,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from workbench.errors import ServerError, WorkbenchError
+from workbench.errors import InputError, ServerError, WorkbenchError
 from workbench.project.paths import read_regular_file
 
 DEFAULT_PROJECT = Path(__file__).resolve().parent.parent / "projects" / "mz07_cell.json"
@@ -166,6 +166,8 @@ def _export(args: argparse.Namespace) -> int:
         )
         return 2
     check_vendor(wb, fmt, any_vendor=args.any_vendor)  # before planning: refused early
+    if args.out and Path(args.out).suffix:  # a file (or .zip): its folder must exist
+        _out_file(args.out)
     args.format = fmt
     plan = plan_workflow(wb, args.workflow, progress=_Progress())
     print(f"{args.project}: {plan.summary()}")
@@ -179,11 +181,12 @@ def _export(args: argparse.Namespace) -> int:
     exported = wb.export_program(args.format, args.workflow, force=True, any_vendor=args.any_vendor)
     out = Path(args.out) if args.out else Path.cwd()
     if out.suffix.lower() == ".zip":
+        out = _out_file(args.out)
         data = exported.zip_bytes()
         atomic_write(out, lambda fh: fh.write(data), binary=True)
         written = [f"{out} ({', '.join(exported.files)})"]
     elif len(exported.files) == 1 and args.out and not out.is_dir():
-        atomic_write_text(out, exported.text)
+        atomic_write_text(_out_file(args.out), exported.text)
         written = [str(out)]
     else:
         written = [str(p) for p in exported.write_to(out)]
@@ -250,6 +253,15 @@ def _import(args: argparse.Namespace) -> int:
     return 0
 
 
+def _out_file(out: str) -> Path:
+    """Return `--out` as a path; InputError when its folder does not exist (none is created)."""
+    path = Path(out)
+    folder = path.parent
+    if not folder.is_dir():
+        raise InputError(f"--out {out}: the folder {folder} does not exist; create it first")
+    return path
+
+
 def _import_part(args: argparse.Namespace) -> int:
     from workbench.project.part_import import write_part_json
 
@@ -264,8 +276,9 @@ def _import_part(args: argparse.Namespace) -> int:
         )
         if v is not None
     }
+    out = _out_file(args.out)
     data = read_regular_file(args.file, kind="part", field=args.file)
-    for line in write_part_json(data, Path(args.file).name, settings, Path(args.out)):
+    for line in write_part_json(data, Path(args.file).name, settings, out):
         print(line)
     return 0
 

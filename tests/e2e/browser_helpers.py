@@ -9,6 +9,7 @@ end is reported; they are generous because the browser renders in software on a 
 from __future__ import annotations
 
 import os
+import socket
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -19,6 +20,13 @@ from playwright.sync_api import Error as PlaywrightError
 SERVER_TIMEOUT = 60.0  # [s] limit of a wait for a server-side state
 PAGE_TIMEOUT_MS = 90_000  # [ms] limit of a Playwright action or wait (the context's default)
 NOTIFICATION_CLOSE = "button.mantine-Notification-closeButton"
+
+
+def free_port() -> int:
+    """Return a TCP port on 127.0.0.1 that nothing listens on now."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
 
 
 def number_box(page, label: str):  # type: ignore[no-untyped-def]

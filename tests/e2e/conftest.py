@@ -8,12 +8,11 @@ screenshot and the page HTML under tests/e2e/artifacts/.
 from __future__ import annotations
 
 import os
-import socket
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from browser_helpers import PAGE_TIMEOUT_MS, wait_for
+from browser_helpers import PAGE_TIMEOUT_MS, free_port, wait_for
 
 from workbench.gui.app import WorkbenchApp, start_server
 from workbench.gui.server_guard import AccessPolicy, new_token
@@ -33,12 +32,6 @@ CHROMIUM_ARGS = [
     "--no-first-run",
     "--disable-quic",
 ]
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
 
 
 @pytest.hookimpl(hookwrapper=True)

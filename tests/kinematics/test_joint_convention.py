@@ -208,3 +208,22 @@ def test_pendant_chain_itself_matches_its_poses() -> None:
         presets.MZ07_CONVENTION.to_model(presets.MZ07_CONTROLLER_UPRIGHT_DEG * DEG)
     )
     np.testing.assert_allclose(ours[:3, :3], F[6, :3, :3], atol=1e-12)
+
+
+def test_the_coupled_rule_is_the_model_box_in_the_controllers_values() -> None:
+    """FANUC's J3 counts from the horizontal: the model's J3 range is a rule on J2 and J3 of the
+    controller. Twin: the model box itself, on the model values of random controller joints."""
+    from workbench.kinematics.robot_library import library_robot
+
+    robot = library_robot("m10ia").dh_robot()
+    conv, box = robot.convention, robot.limits
+    rng = np.random.default_rng(0)
+    qc = rng.uniform(-np.pi * 1.6, np.pi * 1.6, size=(2000, 6))
+    for q in qc:
+        text, value, lo, hi = conv.coupled_rule(2, q, box)
+        assert text == "J3 + J2"
+        assert value == pytest.approx(q[2] + q[1])
+        inside = box[2, 0] <= conv.to_model(q)[2] <= box[2, 1]
+        assert (lo <= value <= hi) == inside
+    assert conv.coupled_rule(1, qc[0], box) is None  # J2 counts on its own
+    assert JointConvention.identity().coupled_rule(2, np.zeros(6), box) is None

@@ -338,13 +338,12 @@ def test_part_file_errors_name_the_file_field(tmp_path: Path) -> None:
     (tmp_path / "bad_part.json").write_text(json.dumps(part))
     d = example_dict()
     d["bending"]["part_file"] = "bad_part.json"
-    w = Workbench.from_dict(copy.deepcopy(d), base_dir=tmp_path)
+    # refused at open (the part file is checked with the project), not first at plan
     with pytest.raises(ProjectError, match=r"bending\.part_file.*thickness: must be > 0 mm"):
-        _ = w.bending.part
+        Workbench.from_dict(copy.deepcopy(d), base_dir=tmp_path)
     d["bending"]["part_file"] = "missing.json"
-    w = Workbench.from_dict(d, base_dir=tmp_path)
     with pytest.raises(ProjectError, match=r"bending\.part_file: cannot read"):
-        _ = w.bending.part
+        Workbench.from_dict(d, base_dir=tmp_path)
 
 
 def test_units_of_the_grasp(wb: Workbench) -> None:

@@ -339,3 +339,24 @@ def test_option_lists_and_display_mesh_come_from_the_domain() -> None:
     v, f = svc.surface_mesh()
     n = len(svc.surface.faces)
     assert f.shape == (4 * n, 3) and len(v) == len(svc.surface.vertices) + 3 * n
+
+
+def test_a_broken_uploaded_workpiece_is_named_without_the_servers_folders(tmp_path: Path) -> None:
+    upload = tmp_path / "workbench-workpiece-upload"
+    upload.mkdir()
+    bad = upload / "bad.stl"
+    bad.write_text("solid x\nfacet normal 0 0 1\nendsolid\n")
+    wb = Workbench.open(EXAMPLE)
+    wb.folders = wb.folders.with_session(upload)
+    for path in (bad, str(bad)):
+        with pytest.raises(MeshError) as caught:
+            wb.polishing.load_workpiece(path)
+        assert "'bad.stl'" in str(caught.value) and str(tmp_path) not in str(caught.value)
+    wb.project.cell.objects.append(
+        wb.project.cell.objects[0].model_copy(
+            update={"shape": "mesh", "path": str(bad), "size": None}
+        )
+    )
+    with pytest.raises(MeshError) as caught:
+        wb.replace_project(wb.project.model_copy(deep=True))
+    assert "'bad.stl'" in str(caught.value) and str(tmp_path) not in str(caught.value)

@@ -21,7 +21,6 @@ from workbench import Workbench, WorkbenchError
 from workbench.errors import InputError, MeshError, ProjectError
 from workbench.kinematics.robot_library import LIBRARY, library_robot
 from workbench.project.part_import import PartImportSpec, import_part
-from workbench.service.project_files import save_as
 from workbench.service.project_imports import (
     add_cell_file,
     import_bending_part,
@@ -164,16 +163,15 @@ def test_save_as_copies_an_obstacle_from_its_upload_folder(tmp_path: Path) -> No
     upload.mkdir()
     path = _box_file(upload, "step")
     wb = _robot_only(tmp_path / "nowhere")
-    wb.folders = wb.folders.with_allowed(upload)
+    wb.folders = wb.folders.with_session(upload)
     add_cell_file(wb, path, xyz_mm=[900.0, 0.0, 200.0])
     saved = tmp_path / "saved" / "cell.json"
     saved.parent.mkdir()
-    notes = save_as(wb, saved, overwrite=False, temporary=[None, upload])
-    assert notes == []
+    wb.save(saved, overwrite=False)
     shutil.rmtree(upload)  # the upload folder goes at exit
     again = Workbench.open(saved)
     obj = again.project.cell.objects[0]
-    assert obj.path == "block.step" and (saved.parent / "block.step").is_file()
+    assert obj.path == "files/block.step" and (saved.parent / "files/block.step").is_file()
     assert len(again.cell) == 1
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import os
+import signal
 import socket
 import threading
 import time
@@ -35,7 +36,6 @@ from workbench.gui.server_guard import (
     new_token,
 )
 from workbench.gui.timeline import Timeline
-from workbench.gui.uploads import WORKPIECES
 from workbench.service import Workbench
 from workbench.service.memory import release_memory
 from workbench.service.project_files import open_into
@@ -189,7 +189,7 @@ class WorkbenchApp:
     def open_upload(self, json_path: Path, root: Path) -> None:
         """Open an uploaded project unpacked in `root` (it gets no file: Save needs a name)."""
         with self.jobs.job("loading a project"):
-            open_into(self.wb, json_path, allowed=(*self.allowed, root), unsaved=True)
+            open_into(self.wb, json_path, allowed=self.allowed, session=(root,), unsaved=True)
             self._replaced(root)
 
     def _replaced(self, upload_root: Path | None) -> None:
@@ -201,14 +201,6 @@ class WorkbenchApp:
             self.picker = None
             self.tabs.visible = True
         self.rebuild()
-
-    def upload_folders(self) -> list[Path]:
-        """Return the upload folders the project's files may lie in (Save as copies them): the
-        uploaded project's, the imported obstacles', the Polishing tab's workpiece."""
-        folders = [self.upload_root, WORKPIECES.folder]
-        if hasattr(self, "import_panel"):
-            folders += self.import_panel.folders
-        return [f for f in folders if f is not None]
 
     def rebuild(self) -> None:
         """Recreate the scene and every panel after the workbench switched projects.
@@ -243,6 +235,10 @@ class _FailedPanel:
         self.note.remove()
 
 
+def _exit_on_sigterm(signum: int, frame: object) -> None:
+    raise SystemExit(128 + signum)
+
+
 def serve(
     project: str | Path | None,
     *,
@@ -260,6 +256,13 @@ def serve(
     `allowed_dirs` are folders the project's files may lie in besides its own (docs/security.md).
     """
     logging.basicConfig(level=logging.INFO, format="%(levelname)s %(name)s: %(message)s")
+    started = time.time()
+    if threading.current_thread() is threading.main_thread():
+        # `docker stop`, systemd, kill: a normal exit, so the `finally` below and atexit
+        # remove the upload folders (Python's default for SIGTERM ends without either)
+        signal.signal(signal.SIGTERM, _exit_on_sigterm)
+    for folder in uploads.remove_stale(started):
+        logging.getLogger(__name__).info("removed %s, left behind by a server that is gone", folder)
     access = AccessPolicy(
         None if no_token else (token or new_token()),
         frozenset(o.strip().lower().rstrip("/") for o in allowed_origins),

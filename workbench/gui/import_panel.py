@@ -9,7 +9,7 @@
   the file does not state comes from "Inner radius" (blank: none given). Both boxes are
   checked as typed against the project's bounds (`bending.part_import`).
 - **Obstacle**: a STEP, STL, OBJ or PLY file placed in the cell at the position given; kept in
-  an upload folder until "Save as" copies it beside the project.
+  an upload folder until a save copies it beside the project (`service.project_save`).
 
 Every import validates the whole project first: on an error (a notification naming the field
 or the face) nothing changes. The service does the work (`service.project_imports`).
@@ -18,7 +18,6 @@ or the face) nothing changes. The service does the work (`service.project_import
 from __future__ import annotations
 
 from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING, TypeVar
 
 import viser
@@ -51,7 +50,6 @@ class ImportPanel:
         s = self.server = app.server
         g = s.gui
         self.choices = robot_choices()
-        self.folders: list[Path] = []  # the obstacles' upload folders (Save as copies them)
         with g.add_folder("Import", expand_by_default=True):
             labels = tuple(c.label for c in self.choices)
             self.robot = g.add_dropdown("Robot", options=labels, initial_value=labels[0])
@@ -169,7 +167,7 @@ class ImportPanel:
         path.write_bytes(up.content)
         wb = self.app.wb
         try:
-            wb.folders = wb.folders.with_allowed(folder)
+            wb.folders = wb.folders.with_session(folder)
             xyz = [float(v) for v in self.at.value]
             added = self._apply(
                 "importing an obstacle",
@@ -181,5 +179,4 @@ class ImportPanel:
             wb.folders = wb.folders.without(folder)
             project_upload.remove_folder(folder)
             raise
-        self.folders.append(folder)
         self.info.content = f"Obstacle **{added}** from `{name}` in the cell"

@@ -22,7 +22,8 @@ from workbench.errors import InputError
 from workbench.gui import project_upload
 from workbench.gui.notify import guarded, notify
 from workbench.gui.picker import Example, examples, is_example
-from workbench.service.project_files import save_as, save_target
+from workbench.service.project_files import save_target
+from workbench.service.project_save import SavedProject, save_project_file
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -182,22 +183,21 @@ class ProjectPanel:
                 " new name"
             )
         with self.app.jobs.job("saving the project"):
-            path = wb.save()
-        notify(self.server, event.client, "Saved", str(path), color="green")
+            saved = save_project_file(wb, wb.path)
+        self._saved(event, saved)
 
     def _on_save_as(self, event: viser.GuiEvent) -> None:
         target = save_target(self.folder, str(self.name.value))
         with self.app.jobs.job("saving the project"):
-            notes = save_as(
-                self.wb,
-                target,
-                overwrite=bool(self.overwrite.value),
-                temporary=self.app.upload_folders(),
-            )
+            saved = save_project_file(self.wb, target, overwrite=bool(self.overwrite.value))
         self.overwrite.value = False  # type: ignore[misc]
         self.refresh()
-        body = str(target) + "".join(f"\n- {n}" for n in notes)
-        notify(self.server, event.client, "Saved", body, color="yellow" if notes else "green")
+        self._saved(event, saved)
+
+    def _saved(self, event: viser.GuiEvent, saved: SavedProject) -> None:
+        body = str(saved.path) + "".join(f"\n- {n}" for n in saved.notes)
+        color = "yellow" if saved.notes else "green"
+        notify(self.server, event.client, "Saved", body, color=color)
 
     def remove(self) -> None:
         """Remove the tab's widgets and any upload still waiting for files."""

@@ -1,6 +1,6 @@
 """A project uploaded with its files: a .zip of the JSON and its meshes, or the JSON then each file.
 
-Each upload is unpacked into its own temporary folder (`/tmp/workbench-project-*`), where
+Each upload is unpacked into its own temporary folder (`/tmp/workbench-project-<pid>-*`), where
 the project's relative paths are resolved, so an uploaded project reads its own meshes and
 never the served project's. The JSON is placed deep enough in that folder that every
 relative path it names (even ``../web_assets/x.stl``) lands inside it. While files it names
@@ -16,7 +16,6 @@ import os
 import posixpath
 import re
 import stat
-import tempfile
 import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -32,9 +31,7 @@ _PART = re.compile(r"[^\x00-\x1f\x7f/\\:]+")
 
 def new_folder() -> Path:
     """Return a fresh upload folder, removed at exit unless removed before."""
-    folder = Path(tempfile.mkdtemp(prefix="workbench-project-"))
-    uploads._LIVE.add(folder)
-    return folder
+    return uploads.new_folder("project")
 
 
 def remove_folder(folder: Path | None) -> None:

@@ -196,6 +196,32 @@ class JointConvention:
                 ends[i] += [c.min(), c.max()]
         return ends
 
+    def coupled_rule(
+        self, i: int, q_controller: ArrayLike, limits_model: ArrayLike
+    ) -> tuple[str, float, float, float] | None:
+        """Return the rule model limits (dof, 2) [rad] set on controller joint `i` counted from
+        earlier joints, as ``(expression, value, lo, hi)``: e.g. FANUC's ``("J3 + J2", 3.82,
+        -pi, pi)`` [rad], the sum of the controller's values that must lie in [lo, hi]. None
+        for a joint counted on its own (or from a joint that is itself coupled)."""
+        if self.coupling is None or not np.any(self.coupling[i]):
+            return None
+        partners = [j for j in range(i) if self.coupling[i, j] != 0.0]
+        if any(np.any(self.coupling[j]) for j in partners):
+            return None
+        qc = self._joints(q_controller, "q_controller")
+        lim = np.asarray(limits_model, dtype=float)
+        # q_ctrl_i = s_i q_i + o_i + sum_j c_ij q_j, with q_j = s_j (q_ctrl_j - o_j)
+        text, value = f"J{i + 1}", float(qc[i])
+        shift = float(self.offset[i])
+        for j in partners:
+            coef = -float(self.coupling[i, j] * self.sign[j])
+            shown = "" if abs(coef) == 1.0 else f"{abs(coef):g}*"
+            text += f" {'+' if coef > 0 else '-'} {shown}J{j + 1}"
+            value += coef * float(qc[j])
+            shift += coef * float(self.offset[j])
+        lo, hi = np.sort(self.sign[i] * lim[i]) + shift
+        return text, value, float(lo), float(hi)
+
     @property
     def is_identity(self) -> bool:
         """Return True when controller and model values are the same."""

@@ -186,9 +186,14 @@ def project_from_dict(data: object, *, source: str = "project") -> Project:
     try:
         return Project.model_validate(data)
     except ValidationError as exc:
-        problems = problems_from(exc)
-        lines = "\n".join(f"  {path}: {msg}" for path, msg in problems)
-        raise ProjectError(f"{source}: {len(problems)} problem(s)\n{lines}", problems) from None
+        raise _refusal(source, exc) from None
+
+
+def _refusal(what: str, error: ValidationError) -> ProjectError:
+    """Return the ProjectError listing every field of `error`, headed by `what`."""
+    problems = problems_from(error)
+    lines = "\n".join(f"  {path}: {msg}" for path, msg in problems)
+    return ProjectError(f"{what}: {len(problems)} problem(s)\n{lines}", problems)
 
 
 def parse_project_json(text: str | bytes, *, source: str = "project") -> Project:
@@ -207,12 +212,20 @@ def load_project(path: str | os.PathLike[str]) -> Project:
 
 
 def project_to_json(project: Project) -> str:
-    """Return the project as pretty JSON text (stable key order, trailing newline)."""
+    """Return the project as pretty JSON text (stable key order, trailing newline).
+
+    What is written is what loads: the text is validated as the loader would (ProjectError
+    naming each field that would be refused, instead of a file that does not open)."""
     data = project.model_dump(mode="json", exclude_none=True)
     for v in _numbers(data):
         if not math.isfinite(v):  # guarded by the models; a second line of defence
             raise ProjectError("refusing to save a non-finite number")
-    return json.dumps(data, indent=2) + "\n"
+    text = json.dumps(data, indent=2) + "\n"
+    try:
+        Project.model_validate(json.loads(text))
+    except ValidationError as exc:
+        raise _refusal("refusing to write a project that would not load", exc) from None
+    return text
 
 
 def _numbers(obj: object) -> list[float]:

@@ -10,7 +10,8 @@ The optional section `bending.part_import` (mm) sets what the file does not say:
                     "k_factor": 0.4, "base": "F2"}
 
 - `thickness` [mm]: needed for a DXF; for a STEP it must match the solid's own (0.001 mm);
-- `bend_layer`: the DXF layer of the bend lines (default "BEND"; DXF only);
+- `bend_layer`: the DXF layer of the bend lines (default `DEFAULT_BEND_LAYER`, "BEND"; DXF
+  only; a STEP accepts the default, which saves before 2026-12 wrote into every part_import);
 - `inner_radius` [mm]: a DXF's bends without their own; for a STEP it must match every bend;
 - `k_factor`: K for every bend (default: Table 1 from r/t);
 - `base`: the flange whose frame is the part frame (STEP; default: the largest flange).
@@ -36,13 +37,20 @@ if TYPE_CHECKING:
     from workbench.project.bending import PartSpec
 
 MATCH_MM = 1e-3  # a setting that restates the STEP's own thickness or radius, within this
+DEFAULT_BEND_LAYER = "BEND"
 
 
 class PartImportSpec(StrictModel):
     """`bending.part_import`: what a CAD part file does not say [mm]; see the module docstring."""
 
     thickness: Annotated[float, B.span(B.THICKNESS_MM, "mm")] | None = None
-    bend_layer: Annotated[str, Field(min_length=1, max_length=255)] = "BEND"
+    bend_layer: Annotated[str, Field(min_length=1, max_length=255)] | None = None  # DXF only
+
+    @property
+    def layer(self) -> str:
+        """Return the DXF layer of the bend lines: `bend_layer`, or `DEFAULT_BEND_LAYER`."""
+        return self.bend_layer if self.bend_layer is not None else DEFAULT_BEND_LAYER
+
     inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")] | None = None
     k_factor: Annotated[float, Field(ge=0, le=1)] | None = None
     base: Annotated[str, Field(min_length=1, max_length=64)] | None = None
@@ -113,7 +121,7 @@ def _from_step(data: bytes, name: str, settings: PartImportSpec, where: str) -> 
     from workbench.errors import InputError
     from workbench.sheetmetal.from_solid import recognise_part
 
-    if "bend_layer" in settings.model_fields_set:
+    if settings.bend_layer not in (None, DEFAULT_BEND_LAYER):
         raise _setting("bend_layer", f"only for a DXF part file; {name!r} is a STEP: remove it")
     brep = read_sheet_brep(read_step_shape(data, name, where), where)
     try:
@@ -153,7 +161,7 @@ def _from_dxf(data: bytes, name: str, settings: PartImportSpec, where: str) -> d
 
     if settings.base is not None:
         raise _setting("base", "only for a STEP part file; a DXF's base is its largest flange, F1")
-    pattern = read_flat_pattern(data, name, where, bend_layer=settings.bend_layer)
+    pattern = read_flat_pattern(data, name, where, bend_layer=settings.layer)
     return part_spec_from_flat_pattern(
         pattern,
         thickness=settings.thickness * MM,
@@ -186,7 +194,7 @@ def import_part(
         )
     elif kind == "DXF":
         spec = _from_dxf(data, name, settings, shown)
-        note = f"from the DXF flat pattern {name!r} (bend lines on layer {settings.bend_layer!r})"
+        note = f"from the DXF flat pattern {name!r} (bend lines on layer {settings.layer!r})"
     else:
         raise ProjectError(f"{where}: {name!r} is not a .step, .stp or .dxf file")
     return part_spec_from_si(spec, name=PurePath(name).stem, note=note, where=shown)

@@ -57,6 +57,19 @@ _MISSING: dict[str, tuple[type[WorkbenchError], str]] = {
 }
 
 
+def shown_path(path: object) -> str:
+    """Return how a message names project path `path`: as given when relative, only its file
+    name when absolute, so no message the browser shows tells the server's folders."""
+    text = os.fspath(path) if isinstance(path, str | os.PathLike) else str(path)
+    return os.path.basename(text) if os.path.isabs(text) or text.startswith("~") else text
+
+
+def without_real_path(exc: WorkbenchError, real: PathArg, path: object) -> WorkbenchError:
+    """Return `exc` again, with the real path `real` replaced by `path` as `shown_path` names it."""
+    real_text, shown = os.fspath(real), repr(shown_path(path))
+    return type(exc)(str(exc).replace(repr(real_text), shown).replace(real_text, shown))
+
+
 def size_limit(kind: str) -> int:
     """Return the largest file of `kind` ('project', 'part', 'urdf', 'mesh') read [bytes]."""
     env, default = SIZE_LIMITS[kind]
@@ -124,14 +137,25 @@ def _too_big(where: str, size: int, kind: str, limit: int) -> str:
 
 @dataclass(frozen=True)
 class ProjectFolders:
-    """The project's folder and the folders allowed beside it; `os.fspath` gives `base`."""
+    """The project's folder and the folders allowed beside it; `os.fspath` gives `base`.
+
+    `allowed` are given at start (`--allow-dir`, `allowed_dirs=`) and hold for the project
+    once saved; `session` are allowed for this run only (the GUI's upload folders): a save
+    copies what the project needs from them beside it (`service.project_save`)."""
 
     base: Path
     allowed: tuple[Path, ...] = field(default=())
+    session: tuple[Path, ...] = field(default=())
 
-    def __init__(self, base: PathArg | None = None, allowed: Iterable[PathArg] = ()) -> None:
+    def __init__(
+        self,
+        base: PathArg | None = None,
+        allowed: Iterable[PathArg] = (),
+        session: Iterable[PathArg] = (),
+    ) -> None:
         object.__setattr__(self, "base", Path(base) if base is not None else Path.cwd())
         object.__setattr__(self, "allowed", tuple(Path(a) for a in allowed))
+        object.__setattr__(self, "session", tuple(Path(a) for a in session))
 
     @classmethod
     def of(cls, where: ProjectFolders | PathArg | None) -> ProjectFolders:
@@ -142,18 +166,30 @@ class ProjectFolders:
         return os.fspath(self.base)
 
     def with_allowed(self, *folders: PathArg) -> ProjectFolders:
-        """Return these folders with `folders` allowed too."""
-        return ProjectFolders(self.base, (*self.allowed, *folders))
+        """Return these folders with `folders` allowed too (for good: see the class doc)."""
+        return ProjectFolders(self.base, (*self.allowed, *folders), self.session)
+
+    def with_session(self, *folders: PathArg) -> ProjectFolders:
+        """Return these folders with `folders` allowed for this run only (uploads)."""
+        return ProjectFolders(self.base, self.allowed, (*self.session, *folders))
+
+    def moved_to(self, base: PathArg) -> ProjectFolders:
+        """Return these folders for the project's file in folder `base` (the others kept)."""
+        return ProjectFolders(base, self.allowed, self.session)
 
     def without(self, folder: PathArg) -> ProjectFolders:
         """Return these folders with `folder` no longer allowed."""
         gone = os.path.realpath(folder)
-        return ProjectFolders(self.base, [a for a in self.allowed if os.path.realpath(a) != gone])
+
+        def keep(folders: tuple[Path, ...]) -> list[Path]:
+            return [a for a in folders if os.path.realpath(a) != gone]
+
+        return ProjectFolders(self.base, keep(self.allowed), keep(self.session))
 
     def roots(self) -> list[Path]:
         """Return every folder a project path may resolve into, symlinks resolved."""
         out = [Path(os.path.realpath(self.base))]
-        out += [Path(os.path.realpath(a)) for a in self.allowed]
+        out += [Path(os.path.realpath(a)) for a in (*self.allowed, *self.session)]
         out += [Path(os.path.realpath(a)) for a in (BUNDLED_ASSETS, INSTALLED_ASSETS) if a.is_dir()]
         return out
 
@@ -182,12 +218,11 @@ class ProjectFolders:
     def read(self, path: object, field: str, *, kind: str) -> tuple[Path, bytes]:
         """Return the real path and the bytes of project path `path` (see `resolve`)."""
         real = self.check_file(path, field, kind=kind)
-        shown = repr(os.fspath(path))  # type: ignore[call-overload]
         try:
             return real, read_regular_file(real, kind=kind, field=field)
         except WorkbenchError as exc:
             # Name the path as the project gave it, not where its symlinks lead.
-            raise type(exc)(str(exc).replace(str(real), shown)) from None
+            raise without_real_path(exc, real, path) from None
 
     def check_file(self, path: object, field: str, *, kind: str) -> Path:
         """Return the real path of `path` after checking it is a regular file within the limit.
@@ -195,7 +230,7 @@ class ProjectFolders:
         For files another library reads by name (pinocchio's URDF, the polishing workpiece).
         """
         real = self.resolve(path, field)
-        shown = repr(os.fspath(path))  # type: ignore[call-overload]
+        shown = repr(shown_path(path))
         try:
             st = os.stat(real)
         except OSError:

@@ -16,7 +16,7 @@ import trimesh
 
 from workbench.cad.step import STEP_SUFFIXES, StepTolerance, read_step_mesh
 from workbench.errors import MeshError
-from workbench.project.paths import ProjectFolders, size_limit
+from workbench.project.paths import ProjectFolders, shown_path, size_limit
 
 MESH_TYPES = ("stl", "obj", "ply", "off", "glb", "gltf")
 STEP_TYPES = tuple(s.lstrip(".") for s in STEP_SUFFIXES)
@@ -44,6 +44,7 @@ def load_mesh_file(
     """
     real, data = ProjectFolders.of(folders).read(path, field, kind="mesh")
     kind = real.suffix.lower().lstrip(".")
+    path = shown_path(path)  # how the messages below name it: no server folder
     if kind in STEP_TYPES:
         step = read_step_mesh(data, path, field, tolerance or StepTolerance())
         step.apply_scale(scale)

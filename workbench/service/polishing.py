@@ -36,6 +36,7 @@ from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.process_path import check_path_lengths, point_labels
 from workbench.polishing.program import RobotProgram, polishing_program
 from workbench.project.cad import step_tolerance
+from workbench.project.paths import without_real_path
 from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
@@ -100,7 +101,7 @@ class PolishingService(SectionService[PolishingSpec]):
             tol = step_tolerance(self.wb.project.cad)
             fitted = fit_workpiece(real, u, self.T_world_workpiece, tol)  # type: ignore[arg-type]
         except WorkbenchError as exc:
-            msg = str(exc)
+            msg = str(without_real_path(exc, real, file))
             units_off = isinstance(exc, MeshError) and "units" in msg and "1000x" in msg
             raise type(exc)(f"polishing.{'units' if units_off else 'workpiece'}: {msg}") from None
         # Commit only what loaded: a bad file leaves the previous workpiece in place.

@@ -8,10 +8,7 @@ so a project whose `bending.part_file` or a mesh is missing is refused before an
 
 from __future__ import annotations
 
-import os
 import re
-import shutil
-from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -25,11 +22,12 @@ if TYPE_CHECKING:
 
 def named_files(project: Project) -> list[tuple[str, str]]:
     """Return (field, path) of every file `project` names, in the order of the file."""
-    return [(where, path) for where, path, _, _ in _named(project)]
+    return [(where, path) for where, path, _, _ in named_fields(project)]
 
 
-def _named(project: Project) -> list[tuple[str, str, Any, str]]:
-    """Return (field, path, model, attribute) of every file path in `project`."""
+def named_fields(project: Project) -> list[tuple[str, str, Any, str]]:
+    """Return (field, path, model, attribute) of every file path in `project`, in the order of
+    the file: `model`'s `attribute` holds the path (a list's index for the link meshes)."""
     out: list[tuple[str, str, Any, str]] = []
     robot, tool, cell = project.robot, project.tool, project.cell
     if robot.urdf is not None:
@@ -75,9 +73,9 @@ def switch_project(
 ) -> None:
     """Switch `wb` to `project`, its files in `folders`, opened from `path` (None: unsaved).
 
-    Every file the project names is checked first; on any error `wb` stays as it was.
+    Every file the project names is checked first (by the load); on any error `wb` stays as
+    it was.
     """
-    check_named_files(project, folders)
     old = wb.folders
     wb.folders = folders  # the load reads the new project's files through it
     try:
@@ -127,75 +125,20 @@ def save_target(folder: Path, name: str) -> Path:
     return folder / name
 
 
-def save_as(
-    wb: Workbench,
-    target: Path,
-    *,
-    overwrite: bool,
-    temporary: Path | Sequence[Path | None] | None = None,
-) -> list[str]:
-    """Save `wb`'s project atomically to `target` and make `target` its file; return notes.
-
-    The files it names by relative path are kept: a path is rewritten relative to the new
-    folder when the file lies inside it, and a file inside `temporary` (an upload folder,
-    removed later) is first copied next to the saved project at the same place. A file that
-    exists is replaced only when `overwrite`; InputError (nothing written) otherwise.
-    """
-    folder = target.parent
-    real_folder = Path(os.path.realpath(folder))
-    if target.exists() and not overwrite:
-        raise InputError(
-            f"save as: {target} exists; tick 'Overwrite' to replace it, or give another name"
-        )
-    project = wb.project
-    plan: list[tuple[Any, str, str]] = []  # (model, attribute, new path)
-    copies: list[tuple[Path, Path]] = []
-    notes: list[str] = []
-    given_tmp = [temporary] if isinstance(temporary, Path) else list(temporary or [])
-    temps = [Path(os.path.realpath(t)) for t in given_tmp if t is not None]
-    for where, given, model, attr in _named(project):
-        src = wb.folders.resolve(given, where)
-        tmp = next((t for t in temps if src.is_relative_to(t)), None)
-        if tmp is None and (os.path.isabs(given) or given.startswith("~")):
-            continue  # stays as it is: allowed folders are named absolutely
-        if tmp is not None:
-            dst = real_folder / src.relative_to(tmp)
-            if dst.exists() and dst.read_bytes() != src.read_bytes() and not overwrite:
-                raise InputError(
-                    f"save as: {where}: {dst} exists with other content; tick 'Overwrite'"
-                    " to replace it, or save in another folder"
-                )
-            copies.append((src, dst))
-        elif src.is_relative_to(real_folder):
-            dst = src
-        else:
-            notes.append(f"{where}: {src} lies outside {folder}; saved by its absolute path")
-            plan.append((model, attr, str(src)))
-            continue
-        plan.append((model, attr, os.path.relpath(dst, real_folder)))
-    for src, dst in copies:
-        dst.parent.mkdir(parents=True, exist_ok=True)
-        if src != dst:
-            shutil.copyfile(src, dst)
-    for model, attr, new in plan:
-        if isinstance(model, list):
-            model[int(attr)] = new
-        else:
-            setattr(model, attr, new)
-    wb.folders = ProjectFolders(folder, wb.folders.allowed)
-    wb.base_dir = wb.folders.base
-    wb.save(target)
-    return notes
-
-
 def open_into(
-    wb: Workbench, path: Path, *, allowed: tuple[Path, ...] = (), unsaved: bool = False
+    wb: Workbench,
+    path: Path,
+    *,
+    allowed: tuple[Path, ...] = (),
+    session: tuple[Path, ...] = (),
+    unsaved: bool = False,
 ) -> None:
-    """Switch `wb` to the project file `path`, its files in its folder and `allowed` ones.
+    """Switch `wb` to the project file `path`, its files in its folder, `allowed` ones and the
+    `session` ones (uploads: see `ProjectFolders`).
 
     `wb.path` becomes `path`, or None when `unsaved` (an upload: "Save" needs a name). On any
     error (the file, a file it names, the load) `wb` stays as it was.
     """
     project = read_project(path)
-    folders = ProjectFolders(Path(path).resolve().parent, allowed)
+    folders = ProjectFolders(Path(path).resolve().parent, allowed, session)
     switch_project(wb, project, folders, None if unsaved else Path(path))

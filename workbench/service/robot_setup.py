@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
 import trimesh
@@ -16,6 +17,8 @@ from workbench.project.models import Robot, RobotSI, Tool, ToolSI
 from workbench.project.paths import ProjectFolders
 from workbench.project.units import to_deg
 from workbench.service.mesh_files import load_mesh_file
+
+FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -146,22 +149,7 @@ def build_robot(
     q0 = _per_joint(spec.joints, dof, "robot.joints")  # model convention (RobotSI)
     if q0 is None:
         q0 = np.clip(np.zeros(dof), model.limits[:, 0], model.limits[:, 1])
-    lo, hi = model.limits[:, 0], model.limits[:, 1]
-    bad = np.flatnonzero((q0 < lo - 1e-12) | (q0 > hi + 1e-12))
-    conv = model.convention  # the message shows the values of the file: controller's
-    qc, lim = conv.to_controller(q0), conv.limits_to_controller(model.limits)
-    from workbench.kinematics import DHRobot
-
-    if not bad.size and isinstance(model, DHRobot) and model.controller_limits is not None:
-        lim = model.controller_limits  # a coupled convention (FANUC's J3): the exact limits
-        bad = np.flatnonzero((qc < lim[:, 0] - 1e-12) | (qc > lim[:, 1] + 1e-12))
-    if bad.size:
-        j = int(bad[0])
-        msg = (
-            f"{to_deg(qc[j]):.3f} deg is outside the joint limits"
-            f" [{to_deg(lim[j, 0]):.3f}, {to_deg(lim[j, 1]):.3f}] deg; move it inside"
-        )
-        raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])
+    _check_start_joints(model, q0)
     return RobotSetup(
         model=model,
         link_meshes=meshes,
@@ -170,3 +158,42 @@ def build_robot(
         tool_mesh=build_tool_mesh(tool, base_dir, cad),
         q0=q0,
     )
+
+
+def _check_start_joints(model: RobotModel, q0: FloatArray) -> None:
+    """Raise ProjectError naming `robot.joints[j]` and the limit it breaks, in the controller's
+    values: the controller's own limits first, then the model's box, which a coupled
+    convention (FANUC's J3 counted from the horizontal) states as a rule on two joints."""
+    from workbench.kinematics import DHRobot
+
+    conv = model.convention  # the message shows the values of the file: controller's
+    qc = conv.to_controller(q0)
+    own = model.controller_limits if isinstance(model, DHRobot) else None
+    if own is not None:
+        bad = np.flatnonzero((qc < own[:, 0] - 1e-12) | (qc > own[:, 1] + 1e-12))
+        if bad.size:
+            _refuse_joint(int(bad[0]), qc, own)
+    lo, hi = model.limits[:, 0], model.limits[:, 1]
+    bad = np.flatnonzero((q0 < lo - 1e-12) | (q0 > hi + 1e-12))
+    if not bad.size:
+        return
+    j = int(bad[0])
+    rule = conv.coupled_rule(j, qc, model.limits)
+    if rule is None:
+        _refuse_joint(j, qc, conv.limits_to_controller(model.limits))
+    text, value, lo_c, hi_c = rule
+    msg = (
+        f"J{j + 1} = {to_deg(qc[j]):.3f} deg breaks the coupled limit of the controller,"
+        f" which counts J{j + 1} from an earlier joint: {text} = {to_deg(value):.3f} deg"
+        f" must lie within [{to_deg(lo_c):.3f}, {to_deg(hi_c):.3f}] deg; move J{j + 1}"
+        " or the joint it counts from"
+    )
+    raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])
+
+
+def _refuse_joint(j: int, qc: FloatArray, lim: FloatArray) -> NoReturn:
+    msg = (
+        f"{to_deg(qc[j]):.3f} deg is outside the joint limits"
+        f" [{to_deg(lim[j, 0]):.3f}, {to_deg(lim[j, 1]):.3f}] deg; move it inside"
+    )
+    raise ProjectError(f"robot.joints[{j}]: {msg}", [(f"robot.joints[{j}]", msg)])

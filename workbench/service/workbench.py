@@ -25,17 +25,17 @@ from workbench.project import (
     parse_project_json,
     project_from_dict,
     project_to_json,
-    save_project,
 )
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
-from workbench.service import program_import, programs, project_imports
+from workbench.service import program_import, programs, project_imports, project_save
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
+from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
 
 
@@ -75,6 +75,9 @@ class Workbench:
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
+        check_named_files(
+            project, self.folders
+        )  # the lazily read files too: fail here, not at plan
         setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders, project.cad)
         cell = build_cell(project.cell.to_si(), self.folders, project.cad)
         cell += press_cell(None if project.bending is None else project.bending.press_si())
@@ -102,10 +105,8 @@ class Workbench:
             self._load(project)
 
     def replace_from_json(self, text: str | bytes, *, source: str = "project") -> Project:
-        """Switch to the project in JSON `text` (validated; `source` names it in errors); return it.
-
-        On any error (ProjectError naming the field) the current project stays as it was.
-        """
+        """Switch to the project in JSON `text` (validated; `source` names it in errors); return
+        it. On any error (ProjectError naming the field) the current project stays as it was."""
         project = parse_project_json(text, source=source)
         self.replace_project(project)
         return project
@@ -121,14 +122,14 @@ class Workbench:
         """Return the project as JSON text (as `save` writes it)."""
         return project_to_json(self.project)
 
-    def save(self, path: str | os.PathLike[str] | None = None) -> Path:
-        """Save the project atomically to `path` (default: where it was opened); return the path."""
+    def save(self, path: str | os.PathLike[str] | None = None, *, overwrite: bool = True) -> Path:
+        """Save the project atomically to `path` (default: its file) so that it opens and plans
+        from there (`service.project_save`: files rebased or copied beside it; an unopenable
+        result refused, nothing written), and make it the project's file; return the path."""
         target = Path(path) if path is not None else self.path
         if target is None:
             raise InputError("save: no path given and the project was not opened from a file")
-        save_project(self.project, target)
-        self.path = target
-        return target
+        return project_save.save_project_file(self, target, overwrite=overwrite).path
 
     # -- robot ------------------------------------------------------------------------
     @property
