@@ -27,7 +27,8 @@ def _temp_prefix(name: str) -> str:
     return f".{name[:_NAME_IN_TEMP]}."
 
 
-def _pid_alive(pid: int) -> bool:
+def pid_alive(pid: int) -> bool:
+    """Return whether process `pid` runs (another user's counts as running)."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -63,7 +64,7 @@ def remove_stale_temporaries(target: Path) -> list[Path]:
             continue
         pid = int(m.group(1)) if m.group(1) else None
         old = now - st.st_mtime > STALE_TEMP_SECONDS
-        if old or (pid is not None and pid != os.getpid() and not _pid_alive(pid)):
+        if old or (pid is not None and pid != os.getpid() and not pid_alive(pid)):
             try:
                 os.unlink(entry.path)
                 removed.append(Path(entry.path))

@@ -193,6 +193,10 @@ def test_a_save_that_would_not_open_writes_nothing(tmp_path: Path) -> None:
         wb.save()
     assert path.read_bytes() == original
     assert wb.path == path  # a refused save keeps the project's file
+    (tree / "projects" / "parts" / "pan.json").unlink()  # gone since open
+    with pytest.raises(WorkbenchError, match=r"bending\.part_file.*no such file"):
+        wb.save(target)
+    assert target.read_bytes() == b"the previous file"
 
 
 def test_a_missing_folder_or_an_existing_file_without_overwrite_is_refused(

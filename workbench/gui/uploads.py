@@ -20,6 +20,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+from workbench.atomic_file import pid_alive
 from workbench.errors import InputError
 from workbench.service import Workbench
 
@@ -33,16 +34,6 @@ def new_folder(kind: str) -> Path:
     folder = Path(tempfile.mkdtemp(prefix=f"workbench-{kind}-{os.getpid()}-"))
     _LIVE.add(folder)
     return folder
-
-
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True  # another user's process
-    return True
 
 
 def remove_stale(started: float) -> list[Path]:
@@ -60,7 +51,7 @@ def remove_stale(started: float) -> list[Path]:
             continue
         pid = match.group(2)
         try:
-            stale = not _alive(int(pid)) if pid else folder.stat().st_mtime < started
+            stale = not pid_alive(int(pid)) if pid else folder.stat().st_mtime < started
         except OSError:
             continue
         if stale:

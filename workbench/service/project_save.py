@@ -84,7 +84,8 @@ class _Placer:
 
     def place(self, where: str, given: str) -> tuple[str, str | None]:
         """Return (the path to save, a note or None) for file `given` of field `where`."""
-        src = self.old.resolve(given, where)
+        kind = {"robot.urdf": "urdf", "bending.part_file": "part"}.get(where, "mesh")
+        src = self.old.check_file(given, where, kind=kind)  # there, a regular file: names the field
         if _inside(src, self.folder):  # 1
             return Path(os.path.relpath(src, self.folder)).as_posix(), None
         if not os.path.isabs(given) and not given.startswith("~"):  # 2
