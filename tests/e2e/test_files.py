@@ -148,7 +148,8 @@ def test_saving_after_uploads_never_touches_another_file(launch, tmp_path: Path)
     wait_for(lambda: app.wb.path == target, what="the project's file is mine.json")
     reopened = Workbench.open(target)
     assert reopened.project.polishing is not None
-    assert (work / "web_assets" / "workpieces" / "panel.stl").read_bytes() == (
+    assert reopened.project.polishing.workpiece == "files/panel.stl"  # copied from the upload
+    assert (work / "files" / "panel.stl").read_bytes() == (
         ROOT / "web_assets" / "workpieces" / "panel.stl"
     ).read_bytes()
     page.get_by_role("button", name="Save to mine.json").wait_for()
@@ -164,7 +165,7 @@ def test_saving_after_uploads_never_touches_another_file(launch, tmp_path: Path)
     wait_for(lambda: app.project_panel.overwrite.value is True, what="Overwrite ticked")
     _save_as(page, app, "mine")
     wait_for(lambda: target.stat().st_ino != inode, what="mine.json replaced")
-    assert sorted(p.name for p in work.iterdir()) == ["mine.json", "web_assets"]  # no temp left
+    assert sorted(p.name for p in work.iterdir()) == ["files", "mine.json"]  # no temp left
     page.get_by_role("button", name="Save to mine.json").click()
     wait_for(lambda: target.stat().st_mtime_ns > 0, what="saved")
     assert _sums() == sums  # no file of projects/ or web_assets/ changed
