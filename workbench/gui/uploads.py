@@ -20,7 +20,6 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-from workbench.atomic_file import pid_alive
 from workbench.errors import InputError
 from workbench.service import Workbench
 
@@ -34,6 +33,17 @@ def new_folder(kind: str) -> Path:
     folder = Path(tempfile.mkdtemp(prefix=f"workbench-{kind}-{os.getpid()}-"))
     _LIVE.add(folder)
     return folder
+
+
+def _gone(pid: int) -> bool:
+    """Return whether no process `pid` runs (the GUI layer does not import atomic_file's)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return True
+    except OSError:  # another user's process
+        return False
+    return False
 
 
 def remove_stale(started: float) -> list[Path]:
@@ -51,7 +61,7 @@ def remove_stale(started: float) -> list[Path]:
             continue
         pid = match.group(2)
         try:
-            stale = not pid_alive(int(pid)) if pid else folder.stat().st_mtime < started
+            stale = _gone(int(pid)) if pid else folder.stat().st_mtime < started
         except OSError:
             continue
         if stale:
