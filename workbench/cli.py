@@ -180,8 +180,7 @@ def _export(args: argparse.Namespace) -> int:
         return 1
     exported = wb.export_program(args.format, args.workflow, force=True, any_vendor=args.any_vendor)
     out = Path(args.out) if args.out else Path.cwd()
-    if out.suffix.lower() == ".zip":
-        out = _out_file(args.out)
+    if out.suffix.lower() == ".zip":  # its folder was checked before planning
         data = exported.zip_bytes()
         atomic_write(out, lambda fh: fh.write(data), binary=True)
         written = [f"{out} ({', '.join(exported.files)})"]

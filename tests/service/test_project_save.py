@@ -148,7 +148,8 @@ def test_a_session_folder_is_copied_and_a_copy_never_replaces_another_file(
     assert wb.project.cell.objects[-1].path == "files/block_2.stl"
     assert (target.parent / "files" / "block.stl").read_text() == "the user's own file"
     assert saved.copied == (target.parent / "files" / "block_2.stl",)
-    assert any("block_2.stl" in n for n in saved.notes)
+    assert "copied block.stl to files/block_2.stl" in saved.notes
+    assert not any(str(session) in n for n in saved.notes)  # no server folder in a note
 
 
 def test_a_file_in_a_folder_allowed_at_start_is_named_absolutely(tmp_path: Path) -> None:

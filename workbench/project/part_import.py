@@ -45,15 +45,14 @@ class PartImportSpec(StrictModel):
 
     thickness: Annotated[float, B.span(B.THICKNESS_MM, "mm")] | None = None
     bend_layer: Annotated[str, Field(min_length=1, max_length=255)] | None = None  # DXF only
+    inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")] | None = None
+    k_factor: Annotated[float, Field(ge=0, le=1)] | None = None
+    base: Annotated[str, Field(min_length=1, max_length=64)] | None = None
 
     @property
     def layer(self) -> str:
         """Return the DXF layer of the bend lines: `bend_layer`, or `DEFAULT_BEND_LAYER`."""
         return self.bend_layer if self.bend_layer is not None else DEFAULT_BEND_LAYER
-
-    inner_radius: Annotated[float, B.span(B.INNER_RADIUS_MM, "mm")] | None = None
-    k_factor: Annotated[float, Field(ge=0, le=1)] | None = None
-    base: Annotated[str, Field(min_length=1, max_length=64)] | None = None
 
 
 def cad_kind(path: str | None) -> str | None:

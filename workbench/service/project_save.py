@@ -60,7 +60,7 @@ class SavedProject:
 
 
 def _inside(path: Path, folder: Path) -> bool:
-    return path == folder or path.is_relative_to(folder)
+    return path.is_relative_to(folder)  # the folder itself included
 
 
 def _real(path: PathArg) -> Path:
@@ -201,7 +201,8 @@ def save_project_file(wb: Workbench, target: PathArg, *, overwrite: bool = True)
     wb.base_dir = wb.folders.base
     wb.path = target
     copied = tuple(dst for dst in placer.copies if dst in made)
-    notes += [f"copied {placer.copies[dst]} to {dst.relative_to(folder)}" for dst in copied]
+    # by file name only: the source may lie in the server's upload folders
+    notes += [f"copied {placer.copies[dst].name} to {dst.relative_to(folder)}" for dst in copied]
     return SavedProject(target, tuple(notes), copied)
 
 
