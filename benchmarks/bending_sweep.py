@@ -51,20 +51,20 @@ from workbench import Workbench, WorkbenchError
 from workbench.batch import BatchRun, engine_session, run_batches
 from workbench.collision.shapes import bvh_model
 from workbench.geometry.transforms import make_transform
-from workbench.service.bending_process import sweep_context
-from workbench.sheetmetal import bend_eval
-from workbench.sheetmetal.bend_eval import BendEval, SweepContext, evaluate_batch
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake import bend_eval
+from workbench.pressbrake.bend_eval import BendEval, SweepContext, evaluate_batch
+from workbench.pressbrake.bend_setup import (
     bend_pose,
     contact_zone,
     gauge_stop,
     merge_obstacles,
     part_points,
 )
+from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.obstacles import Obstacles
+from workbench.pressbrake.press_check import check_states, is_tool
+from workbench.service.bending_process import sweep_context
 from workbench.sheetmetal.folding import FoldedState, fold_state
-from workbench.sheetmetal.grasp import Grasp
-from workbench.sheetmetal.obstacles import Obstacles
-from workbench.sheetmetal.press_check import check_states, is_tool
 
 ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = ("projects/u_channel_cell.json", "projects/bending_cell.json")

@@ -46,6 +46,7 @@ PACKAGES = (
     "motion.programs",
     "collision",
     "sheetmetal",
+    "pressbrake",
     "assembly",
     "assembly.planners",
     "polishing",

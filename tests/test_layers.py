@@ -20,11 +20,35 @@ DOMAIN = (
     "collision",
     "motion",
     "sheetmetal",
+    "pressbrake",
     "assembly",
     "polishing",
     "cad",
 )
 SERVICE_MAX_LINES = 300
+
+#: The layers, lowest first (docs/architecture.md, "The layers"). A package may import its own
+#: modules and any package of a lower layer; one of its own layer or above is an upward import
+#: (or a sideways one: two process packages stay independent). The top-level modules count as
+#: packages: `errors` at the bottom, the file and cache helpers and Ray's session, the batch runner.
+LAYERS: tuple[tuple[str, ...], ...] = (
+    ("errors",),
+    ("atomic_file", "disk_cache", "bounded_cache", "ray_session"),
+    ("batch",),
+    ("geometry",),
+    ("kinematics",),
+    ("motion",),
+    ("collision",),
+    ("cad",),
+    ("sheetmetal",),
+    ("pressbrake", "assembly", "polishing"),
+    ("project",),
+    ("service",),
+    ("gui",),
+    ("cli",),
+    ("__main__", "__init__"),
+)
+RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
 
 
 def _modules(sub: str) -> list[Path]:
@@ -115,3 +139,70 @@ def test_the_gui_computes_no_kinematics() -> None:
         if calls.search(line)
     ]
     assert hits == []
+
+
+def _package_of(path: Path) -> str:
+    parts = path.relative_to(PACKAGE).parts
+    return parts[0] if len(parts) > 1 else path.stem
+
+
+def _package_imports() -> dict[str, set[str]]:
+    """Return {package: packages it imports} over all of `workbench/`."""
+    graph: dict[str, set[str]] = {}
+    for p in PACKAGE.rglob("*.py"):
+        here = _package_of(p)
+        for _, mod in _imports(p):
+            if mod.startswith("workbench.") and (there := mod.split(".")[1]) != here:
+                graph.setdefault(here, set()).add(there)
+    return graph
+
+
+def test_every_package_has_a_layer() -> None:
+    names = {_package_of(p) for p in PACKAGE.rglob("*.py")}
+    assert sorted(names - set(RANK)) == []
+
+
+def test_no_import_runs_up_or_across_the_layers() -> None:
+    bad = [
+        f"{p.relative_to(PACKAGE.parent)}:{line} imports {mod}"
+        for p in PACKAGE.rglob("*.py")
+        for line, mod in _imports(p)
+        if mod.startswith("workbench.")
+        and (there := mod.split(".")[1]) != (here := _package_of(p))
+        and there in RANK
+        and RANK[there] >= RANK[here]
+    ]
+    assert bad == []
+
+
+def _cycle(graph: dict[str, set[str]]) -> list[str]:
+    """Return one loop of `graph` (a list of packages, first == last) or []."""
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(node: str) -> list[str]:
+        state[node] = 1
+        stack.append(node)
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == 1:
+                return stack[stack.index(nxt) :] + [nxt]
+            if nxt not in state and (loop := visit(nxt)):
+                return loop
+        stack.pop()
+        state[node] = 2
+        return []
+
+    for node in sorted(graph):
+        if node not in state and (loop := visit(node)):
+            return loop
+    return []
+
+
+def test_no_package_loop() -> None:
+    assert _cycle(_package_imports()) == []
+
+
+def test_the_loop_finder_finds_a_loop() -> None:
+    # The twin of the test above: a graph with a loop three packages long, and one without.
+    assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == ["a", "b", "c", "a"]
+    assert _cycle({"a": {"b", "c"}, "b": {"c"}, "c": set()}) == []

@@ -196,8 +196,8 @@ def _export(args: argparse.Namespace) -> int:
 
 
 def _sweep(args: argparse.Namespace) -> int:
+    from workbench.pressbrake.bend_eval import grasp_label
     from workbench.service import Workbench
-    from workbench.sheetmetal.bend_eval import grasp_label
 
     wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
     res = wb.bending.find_sequences(

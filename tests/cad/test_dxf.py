@@ -23,13 +23,13 @@ from ezdxf.enums import TextEntityAlignment
 
 from workbench.cad.dxf import read_flat_pattern
 from workbench.cad.dxf_write import write_flat_pattern
-from workbench.errors import InputError
-from workbench.sheetmetal.flat_blank import flat_pattern_of_part
-from workbench.sheetmetal.flat_pattern import (
+from workbench.cad.flat_pattern import (
     FlatPattern,
     FlatPatternError,
-    part_spec_from_flat_pattern,
 )
+from workbench.errors import InputError
+from workbench.sheetmetal.flat_blank import flat_pattern_of_part
+from workbench.sheetmetal.flat_split import part_spec_from_flat_pattern
 from workbench.sheetmetal.part import SheetMetalPart
 
 ROOT = Path(__file__).resolve().parents[2]

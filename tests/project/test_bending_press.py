@@ -10,12 +10,12 @@ import numpy as np
 import pytest
 
 from workbench.errors import ProjectError
+from workbench.pressbrake.airbend import air_bend_radius
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp
+from workbench.pressbrake.press import punch_profile
 from workbench.project.bending import BendingSI, GraspSpec, PartSpec
 from workbench.project.io import project_from_dict
 from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.airbend import air_bend_radius
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
-from workbench.sheetmetal.press import punch_profile
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "bending_cell.json"

@@ -15,9 +15,9 @@ import pytest
 
 from workbench import Workbench
 from workbench.errors import WorkbenchError
+from workbench.pressbrake.grasp_grid import GridSettings, grasp_grid
 from workbench.project.grasp_grid import GraspGridSpec
 from workbench.service.bending_process import sweep_context
-from workbench.sheetmetal.grasp_grid import GridSettings, grasp_grid
 
 ROOT = Path(__file__).resolve().parents[2]
 CELL = ROOT / "projects" / "u_channel_cell.json"

@@ -158,7 +158,7 @@ def test_a_dxf_needs_a_thickness(tmp_path: Path) -> None:
 def test_a_dxf_goes_through_the_flat_pattern_contract(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    import workbench.sheetmetal.flat_pattern as fp
+    import workbench.sheetmetal.flat_split as fp
 
     calls: dict[str, Any] = {}
     spec = {

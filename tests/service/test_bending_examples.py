@@ -18,9 +18,9 @@ import numpy as np
 import pytest
 
 from workbench import Workbench
+from workbench.pressbrake.bend_eval import evaluate
+from workbench.pressbrake.sequencing import find_sequences
 from workbench.service.bending_process import sweep_context
-from workbench.sheetmetal.bend_eval import evaluate
-from workbench.sheetmetal.sequencing import find_sequences
 
 ROOT = Path(__file__).resolve().parents[2]
 PRESS_CELLS = [
@@ -112,9 +112,9 @@ def test_the_seed_parts_saved_cycle_goes_round_where_the_straight_move_is_blocke
     replaces is blocked by a dense brute-force check (the carried part's tree every 1 mm of
     its travel bound, the robot by python-fcl), and every leg of the detour is free by the
     same dense check."""
-    import workbench.sheetmetal.cycle as cycle_module
-    from workbench.sheetmetal.press_check import frame_hits
-    from workbench.sheetmetal.transit import _phase_of
+    import workbench.pressbrake.cycle as cycle_module
+    from workbench.pressbrake.press_check import frame_hits
+    from workbench.pressbrake.transit import _phase_of
 
     seen: dict[str, Any] = {}
     route = cycle_module.route_transits

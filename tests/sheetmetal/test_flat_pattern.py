@@ -1,4 +1,4 @@
-"""Flat patterns (workbench.sheetmetal.flat_pattern): outline + bend lines <-> the part model.
+"""Flat patterns (workbench.cad.flat_pattern): outline + bend lines <-> the part model.
 
 Checked against hand computations (flange lengths solved back from the flat width: flat width
 = sum of flanges + sum of bend allowances, K read from seed Table 1 by hand), against the
@@ -16,14 +16,14 @@ import numpy as np
 import pytest
 import shapely
 
-from workbench.errors import InputError
-from workbench.sheetmetal.flat_blank import flat_pattern_of_part
-from workbench.sheetmetal.flat_pattern import (
+from workbench.cad.flat_pattern import (
     BendLine,
     FlatPattern,
     FlatPatternError,
-    part_spec_from_flat_pattern,
 )
+from workbench.errors import InputError
+from workbench.sheetmetal.flat_blank import flat_pattern_of_part
+from workbench.sheetmetal.flat_split import part_spec_from_flat_pattern
 from workbench.sheetmetal.part import SheetMetalPart
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -2,23 +2,12 @@
 
 from __future__ import annotations
 
-import dataclasses
-import json
-from pathlib import Path
-
 import numpy as np
 import pytest
+from seed_part import seed_spec
 
 from workbench.errors import InputError
-from workbench.project.bending import PartSpec
 from workbench.sheetmetal import SheetMetalPart, bend_allowance
-
-SEED = Path(__file__).resolve().parents[2] / "projects" / "parts" / "seed_part.json"
-
-
-def seed_spec() -> dict:
-    """The seed part converted from mm/deg (file) to SI (model), as the service does it."""
-    return dataclasses.asdict(PartSpec.model_validate(json.loads(SEED.read_text())).to_si())
 
 
 def rect(w: float, h: float) -> list[list[float]]:

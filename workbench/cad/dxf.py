@@ -28,13 +28,13 @@ import shapely
 
 from workbench.cad.bend_notes import assign_notes, read_notes
 from workbench.cad.dxf_contours import CURVE_TYPES, chain_curves, flatten
-from workbench.sheetmetal.flat_pattern import (
+from workbench.cad.flat_pattern import (
     BendLine,
     FlatPattern,
     FlatPatternError,
     check_flat_pattern,
 )
-from workbench.sheetmetal.polygon import clean_ring
+from workbench.geometry.polygon import clean_ring
 
 #: $INSUNITS code -> (name, metres per drawing unit); anything else is read as mm.
 UNITS = {

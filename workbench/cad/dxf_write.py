@@ -11,8 +11,8 @@ import io
 import numpy as np
 
 from workbench.cad.dxf import UNITS
+from workbench.cad.flat_pattern import FlatPattern
 from workbench.errors import InputError
-from workbench.sheetmetal.flat_pattern import FlatPattern
 
 
 def write_flat_pattern(

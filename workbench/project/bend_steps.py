@@ -13,9 +13,9 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field
 
+from workbench.pressbrake.grasp import Grasp
 from workbench.project.common import Angle, Coordinate, Loc, StrictModel
 from workbench.project.units import DEG, MM
-from workbench.sheetmetal.grasp import Grasp
 
 
 class GraspSpec(StrictModel):

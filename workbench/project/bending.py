@@ -28,6 +28,11 @@ from numpy.typing import NDArray
 from pydantic import AfterValidator, Field, ValidationError, model_validator
 
 from workbench.errors import ProjectError
+from workbench.pressbrake.die import Die
+from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.grasp_grid import GridSettings
+from workbench.pressbrake.press import PressBrake
+from workbench.pressbrake.transfer import Transfer
 from workbench.project import bounds as B
 from workbench.project.bend_steps import BendStepSI, BendStepSpec, GraspSpec, step_problems
 from workbench.project.common import Coordinate, Loc, Pose, StrictModel, Vec3mm, dotted, field_error
@@ -50,13 +55,8 @@ from workbench.project.press import (
     ToolLengthMM,
 )
 from workbench.project.units import DEG, MM
-from workbench.sheetmetal.die import Die
-from workbench.sheetmetal.grasp import Grasp
-from workbench.sheetmetal.grasp_grid import GridSettings
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T
-from workbench.sheetmetal.press import PressBrake
 from workbench.sheetmetal.sequence import sequence_problem
-from workbench.sheetmetal.transfer import Transfer
 
 __all__ = [  # the models moved to `press` and `bend_steps` are still importable from here
     "AxisRangeMM",

@@ -1,7 +1,7 @@
 """The project file's `bending.grasp_grid`: the candidate grasps a sequence search tries.
 
 Per flange its centroid and a square grid of `spacing` [mm] at least `inset` [mm] inside its
-polygon, each with every yaw [deg] and face listed (`workbench.sheetmetal.grasp_grid`).
+polygon, each with every yaw [deg] and face listed (`workbench.pressbrake.grasp_grid`).
 `GraspGridSpec.to_si` returns the `GridSettings` in SI units.
 """
 
@@ -11,10 +11,10 @@ from typing import Annotated, Literal
 
 from pydantic import AfterValidator, Field
 
+from workbench.pressbrake.grasp_grid import GridSettings
 from workbench.project import bounds as B
 from workbench.project.common import Angle, StrictModel
 from workbench.project.units import DEG, MM
-from workbench.sheetmetal.grasp_grid import GridSettings
 
 Face = Literal["top", "bottom"]
 

@@ -2,7 +2,7 @@
 
 A STEP file holds the bent part as a solid: its faces are recognised as flanges and bends
 (`workbench.sheetmetal.from_solid`). A DXF holds the flat pattern: the blank's outline and
-bend lines on the `bend_layer` (`workbench.cad.dxf`, `workbench.sheetmetal.flat_pattern`). Either
+bend lines on the `bend_layer` (`workbench.cad.dxf`, `workbench.cad.flat_pattern`). Either
 becomes the same `PartSpec` (mm/deg) as a part JSON: flanges "F1", "F2", .., bends "B1", ..
 The optional section `bending.part_import` (mm) sets what the file does not say::
 
@@ -156,7 +156,7 @@ def _from_dxf(data: bytes, name: str, settings: PartImportSpec, where: str) -> d
             ' e.g. "part_import": {"thickness": 2} (workbench import-part: --thickness 2)',
         )
     from workbench.cad.dxf import read_flat_pattern
-    from workbench.sheetmetal.flat_pattern import part_spec_from_flat_pattern
+    from workbench.sheetmetal.flat_split import part_spec_from_flat_pattern
 
     if settings.base is not None:
         raise _setting("base", "only for a STEP part file; a DXF's base is its largest flange, F1")

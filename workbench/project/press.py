@@ -2,7 +2,7 @@
 
 The punch (a profile, or a straight punch), the V-die, the tool stations along the bed, the
 back-gauge, the ram, the air-bending radius ratio and the frame. `PressSpec.to_si` returns the
-press in SI units (`workbench.sheetmetal.press.PressBrake`), placed by the die's bend line.
+press in SI units (`workbench.pressbrake.press.PressBrake`), placed by the die's bend line.
 """
 
 from __future__ import annotations
@@ -15,13 +15,10 @@ from numpy.typing import NDArray
 from pydantic import AfterValidator, Field, model_validator
 
 from workbench.errors import InputError
-from workbench.project import bounds as B
-from workbench.project.common import Coordinate, Loc, StrictModel, field_error
-from workbench.project.units import DEG, MM
-from workbench.sheetmetal.airbend import air_bend_radius
-from workbench.sheetmetal.die import Die
-from workbench.sheetmetal.polygon import signed_area
-from workbench.sheetmetal.press import (
+from workbench.geometry.polygon import signed_area
+from workbench.pressbrake.airbend import air_bend_radius
+from workbench.pressbrake.die import Die
+from workbench.pressbrake.press import (
     BackGauge,
     DieTool,
     PressBrake,
@@ -30,6 +27,9 @@ from workbench.sheetmetal.press import (
     Station,
     punch_profile,
 )
+from workbench.project import bounds as B
+from workbench.project.common import Coordinate, Loc, StrictModel, field_error
+from workbench.project.units import DEG, MM
 
 PressToolMM = Annotated[float, B.span(B.PRESS_TOOL_MM, "mm")]
 PressRadiusMM = Annotated[float, B.span(B.PRESS_RADIUS_MM, "mm")]

@@ -16,31 +16,31 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.collision import Solid
 from workbench.errors import InputError
 from workbench.motion import SampledMotion
-from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
-from workbench.project.program_io import program_settings
-from workbench.service import bending_process as process
-from workbench.service import bending_transfer as transfer_plan
-from workbench.service.section import SectionService
-from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
-from workbench.sheetmetal.bend_setup import press_poses
-from workbench.sheetmetal.check_cost import CheckCost, check_cost
-from workbench.sheetmetal.cycle import BendingCycle
-from workbench.sheetmetal.cycle_program import cycle_program
-from workbench.sheetmetal.die import DiePlacement, bend_on_die, die_part_pose
-from workbench.sheetmetal.grasp import (
+from workbench.pressbrake.bend_setup import press_poses
+from workbench.pressbrake.cycle import BendingCycle
+from workbench.pressbrake.cycle_program import cycle_program
+from workbench.pressbrake.die import DiePlacement, bend_on_die, die_part_pose
+from workbench.pressbrake.grasp import (
     Grasp,
     T_flange_grasp,
     check_flange,
     checked_grasp,
     grasp_point,
 )
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.plan import BendingPlan
-from workbench.sheetmetal.plan import playback as sample_playback
-from workbench.sheetmetal.program import RobotProgram, bending_program
+from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
+from workbench.pressbrake.plan import BendingPlan
+from workbench.pressbrake.plan import playback as sample_playback
+from workbench.pressbrake.program import RobotProgram, bending_program
+from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
+from workbench.pressbrake.transfer import carried_poses, transfer_poses, world_tcp
+from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
+from workbench.project.program_io import program_settings
+from workbench.service import bending_process as process
+from workbench.service import bending_transfer as transfer_plan
+from workbench.service.section import SectionService
+from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
+from workbench.sheetmetal.check_cost import CheckCost, check_cost
 from workbench.sheetmetal.sequence import check_sequence
-from workbench.sheetmetal.sequencing import SearchResult, SearchSettings, SequencePlan
-from workbench.sheetmetal.transfer import carried_poses, transfer_poses, world_tcp
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench

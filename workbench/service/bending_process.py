@@ -17,20 +17,20 @@ import numpy as np
 from workbench.batch import check_engine
 from workbench.collision.plan_check import shared_engine
 from workbench.errors import InputError
-from workbench.project.bending import BendingSI, BendStepSI
-from workbench.sheetmetal.airbend import short_flanges
-from workbench.sheetmetal.bend_eval import Reach, SweepContext, fitting_station
-from workbench.sheetmetal.cycle import BendingCycle, PartScene, check_cycle
-from workbench.sheetmetal.cycle_path import CycleCell, CycleStep
-from workbench.sheetmetal.grasp_grid import grasp_grid
-from workbench.sheetmetal.press import PressBrake
-from workbench.sheetmetal.sequencing import (
+from workbench.pressbrake.airbend import short_flanges
+from workbench.pressbrake.bend_eval import Reach, SweepContext, fitting_station
+from workbench.pressbrake.cycle import BendingCycle, PartScene, check_cycle
+from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.grasp_grid import grasp_grid
+from workbench.pressbrake.press import PressBrake
+from workbench.pressbrake.sequencing import (
     Rejected,
     SearchResult,
     SearchSettings,
     SequencePlan,
     find_sequences,
 )
+from workbench.project.bending import BendingSI, BendStepSI
 
 if TYPE_CHECKING:
     from workbench.service.bending import BendingService

@@ -14,9 +14,9 @@ from numpy.typing import NDArray
 from workbench.collision import check_trajectory
 from workbench.kinematics import follow_path
 from workbench.motion import smooth_joint_path
-from workbench.sheetmetal.die import DiePlacement, die_placements, die_targets
-from workbench.sheetmetal.plan import BendingPlan, first_collision, robot_frames
-from workbench.sheetmetal.transfer import base_flange_poses, carried_poses, check_part
+from workbench.pressbrake.die import DiePlacement, die_placements, die_targets
+from workbench.pressbrake.plan import BendingPlan, first_collision, robot_frames
+from workbench.pressbrake.transfer import base_flange_poses, carried_poses, check_part
 
 if TYPE_CHECKING:
     from workbench.service.bending import BendingService

@@ -11,12 +11,12 @@ import trimesh
 from numpy.typing import NDArray
 
 from workbench.collision import Solid
+from workbench.pressbrake.bend_setup import press_display_bodies, robot_obstacles
+from workbench.pressbrake.press import PressBrake
 from workbench.project.cad import CadSpec, step_tolerance
 from workbench.project.models import CellObject, CellObjectSI
 from workbench.project.paths import ProjectFolders
 from workbench.service.mesh_files import load_mesh_file
-from workbench.sheetmetal.bend_setup import press_display_bodies, robot_obstacles
-from workbench.sheetmetal.press import PressBrake
 
 
 @dataclass(frozen=True)

@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from workbench.cad.flat_pattern import BendLine, FlatPattern, ccw_ring
 from workbench.errors import InputError
-from workbench.sheetmetal.flat_pattern import BendLine, FlatPattern, ccw_ring
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.part import SheetMetalPart

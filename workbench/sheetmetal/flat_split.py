@@ -15,14 +15,15 @@ import shapely
 import shapely.ops
 from numpy.typing import NDArray
 
-from workbench.sheetmetal.flat_pattern import (
+from workbench.cad.flat_pattern import (
     TOUCH_TOL,
     FlatPattern,
     FlatPatternError,
     bend_label,
+    check_flat_pattern,
 )
+from workbench.geometry.polygon import clean_ring, signed_area
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T, bend_allowance
-from workbench.sheetmetal.polygon import clean_ring, signed_area
 
 _MATCH_TOL = 1e-7  # [m] a region vertex this close to a bend line's end is that end
 
@@ -204,3 +205,31 @@ def _spec(
             }
         )
     return {"thickness": t, "k_factor": k_factor, "flanges": flanges, "bends": bends}
+
+
+def part_spec_from_flat_pattern(
+    pattern: FlatPattern,
+    *,
+    thickness: float,
+    inner_radius: float | None,
+    k_factor: float | None,
+    field: str,
+) -> dict:
+    """Return the SI spec of `SheetMetalPart.from_spec` for the part `pattern` folds into.
+
+    thickness [m] > 0; inner_radius [m] for the bend lines without their own (None: each must
+    carry one; the project passes its import setting or, as for a part without radii, the
+    press's air-bending radius); k_factor overrides Table 1's K for every bend (None: Table 1).
+    The outline is cut along each bend zone (centred on its line, one bend allowance wide) into
+    flanges "F1".. ("F1", the base, the largest; the rest in the order the bends reach them from
+    it) joined by bends "B1".. in bend-line order. The base keeps the drawing's coordinates;
+    every other flange starts its polygon at its bend edge, along +x from the origin.
+    FlatPatternError names `field` and the fix.
+    """
+    return split_flanges(
+        check_flat_pattern(pattern, field),
+        thickness=thickness,
+        inner_radius=inner_radius,
+        k_factor=k_factor,
+        field=field,
+    )

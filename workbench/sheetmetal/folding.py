@@ -17,8 +17,8 @@ from numpy.typing import NDArray
 from workbench.collision.shapes import bvh_model, fcl_transform
 from workbench.errors import InputError
 from workbench.geometry.obb import OBB
+from workbench.geometry.polygon import min_area_rect
 from workbench.sheetmetal.kfactor import flange_rise
-from workbench.sheetmetal.polygon import min_area_rect
 
 if TYPE_CHECKING:
     import trimesh
@@ -201,7 +201,7 @@ def fold_state(
 
 
 def _prism_bvh(part: SheetMetalPart, f: int) -> fcl.BVHModel:
-    from workbench.sheetmetal.polygon import triangulate
+    from workbench.geometry.polygon import triangulate
 
     cache = part.__dict__.setdefault("_prism_cache", {})
     if f not in cache:

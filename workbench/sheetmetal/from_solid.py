@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 
 from workbench.cad.sheet_brep import SheetBrep
 from workbench.errors import InputError, MeshError
-from workbench.sheetmetal.polygon import signed_area
+from workbench.geometry.polygon import signed_area
 from workbench.sheetmetal.solid_faces import ANGLE_TOL, TOL, SheetFaces, sheet_faces
 
 

@@ -37,8 +37,8 @@ import shapely
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
+from workbench.geometry.polygon import signed_area
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T, bend_allowance, k_factor
-from workbench.sheetmetal.polygon import signed_area
 from workbench.sheetmetal.sequence import check_sequence
 
 if TYPE_CHECKING:

@@ -11,8 +11,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import trimesh
 
+from workbench.geometry.polygon import triangulate
 from workbench.sheetmetal.folding import axis_angle, bend_profile
-from workbench.sheetmetal.polygon import triangulate
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.folding import FoldedState

@@ -2,28 +2,22 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import fcl
 import numpy as np
 import trimesh
 from scipy.spatial.transform import Rotation
+from seed_part import seed_spec
 
 from workbench.geometry import OBB, obb_overlap
 from workbench.geometry.transforms import make_transform
-from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.obstacles import (
+from workbench.pressbrake.obstacles import (
     ExactShape,
     Obstacles,
     box_hits_shape,
     confirm_exact,
     winding_number,
 )
-
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
+from workbench.sheetmetal import SheetMetalPart
 
 
 def box_sphere_distance(box: OBB, center: np.ndarray) -> float:
@@ -90,7 +84,7 @@ def test_cylinder_against_closed_form() -> None:
 
 def test_tree_with_exact_leaves_equals_brute_force() -> None:
     rng = np.random.default_rng(3)
-    state = SheetMetalPart.from_spec(_tp.seed_spec()).fold(6)
+    state = SheetMetalPart.from_spec(seed_spec()).fold(6)
     tree = state.obb_tree("1")
     sphere = trimesh.creation.icosphere(subdivisions=2, radius=0.04)
     sphere.apply_translation([0.05, 0.0, 0.02])

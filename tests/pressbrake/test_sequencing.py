@@ -35,24 +35,25 @@ import pytest
 from workbench import Workbench
 from workbench.batch import engine_session
 from workbench.errors import InputError
-from workbench.service.bending_process import sweep_context
-from workbench.sheetmetal import SheetMetalPart, sequencing
-from workbench.sheetmetal.bend_eval import (
+from workbench.pressbrake import sequencing
+from workbench.pressbrake.bend_eval import (
     BendEval,
     SideEval,
     SweepContext,
     evaluate,
     reach_where_part_rests,
 )
-from workbench.sheetmetal.grasp_grid import GridSettings, grasp_grid
-from workbench.sheetmetal.press import ram_time
-from workbench.sheetmetal.sequencing import (
+from workbench.pressbrake.grasp_grid import GridSettings, grasp_grid
+from workbench.pressbrake.press import ram_time
+from workbench.pressbrake.sequencing import (
     FLIP,
     REGRIP,
     SearchSettings,
     SequencePlan,
     find_sequences,
 )
+from workbench.service.bending_process import sweep_context
+from workbench.sheetmetal import SheetMetalPart
 
 ROOT = Path(__file__).resolve().parents[2]
 SCREEN = 96  # grasps sampled for the screen
@@ -516,8 +517,8 @@ def test_the_cheap_stage_checks_the_cycles_straight_moves_pose_for_pose() -> Non
     """The search's IK waypoints near the die are the cycle's (`cycle_path._line`): the same
     poses, so a grasp the search keeps does not fail the full cycle on the way in or out."""
     from workbench.geometry.transforms import xyz_rpy_to_transform
-    from workbench.sheetmetal.bend_eval import _line_poses
-    from workbench.sheetmetal.cycle_path import LINE_STEP, _line
+    from workbench.pressbrake.bend_eval import _line_poses
+    from workbench.pressbrake.cycle_path import LINE_STEP, _line
 
     rng = np.random.default_rng(5)
     for _ in range(20):
@@ -531,7 +532,7 @@ def test_the_cheap_stage_checks_the_cycles_straight_moves_pose_for_pose() -> Non
 
 
 def test_via_home_the_wrist_goes_halfway_and_the_arm_home() -> None:
-    from workbench.sheetmetal.cycle import ARM_JOINTS, _carry_the_wrist
+    from workbench.pressbrake.cycle import ARM_JOINTS, _carry_the_wrist
 
     home = np.zeros(6)
     q = np.tile(home, (5, 1))

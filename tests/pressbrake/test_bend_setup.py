@@ -18,10 +18,8 @@ import shapely
 import trimesh
 
 from workbench import Workbench
-from workbench.project.bending import PartSpec
-from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.airbend import apex_depth
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake.airbend import apex_depth
+from workbench.pressbrake.bend_setup import (
     GaugeStop,
     PressObstacles,
     bend_line_frame,
@@ -32,10 +30,12 @@ from workbench.sheetmetal.bend_setup import (
     part_points,
     robot_obstacles,
 )
+from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
+from workbench.pressbrake.press import PressBrake, clipped_profile, piece_solid, prism
+from workbench.project.bending import PartSpec
+from workbench.sheetmetal import SheetMetalPart
 from workbench.sheetmetal.folding import FoldedState, bend_profile, fold_state
-from workbench.sheetmetal.grasp import Grasp
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.press import PressBrake, clipped_profile, piece_solid, prism
 
 ROOT = Path(__file__).resolve().parents[2]
 FRACTIONS = (0.0, 0.2, 0.45, 0.7, 1.0)

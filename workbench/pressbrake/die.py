@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp, T_part_grasp
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp, T_part_grasp
 from workbench.sheetmetal.part import SheetMetalPart
 
 

@@ -22,17 +22,17 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake.bend_setup import (
     BendPose,
     GaugeStop,
     bend_pose,
     gauge_stop,
     part_points,
 )
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp
+from workbench.pressbrake.press import PressBrake, ram_time
 from workbench.sheetmetal.folding import FoldedState, fold_state
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
 from workbench.sheetmetal.part import SheetMetalPart
-from workbench.sheetmetal.press import PressBrake, ram_time
 
 F64 = NDArray[np.float64]
 

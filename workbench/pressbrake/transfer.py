@@ -14,10 +14,10 @@ from numpy.typing import NDArray
 
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.model import RobotModel
-from workbench.sheetmetal.die import Die, DiePlacement
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp, T_part_grasp
+from workbench.pressbrake.die import Die, DiePlacement
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp, T_part_grasp
+from workbench.pressbrake.obstacles import Obstacles, confirm_exact
 from workbench.sheetmetal.obbtree import FramesReport, OBBTree
-from workbench.sheetmetal.obstacles import Obstacles, confirm_exact
 from workbench.sheetmetal.part import SheetMetalPart
 
 

@@ -38,7 +38,7 @@ from numpy.typing import NDArray
 
 from workbench.batch import BatchStats, engine_session, run_batches
 from workbench.errors import InputError
-from workbench.sheetmetal.bend_eval import (
+from workbench.pressbrake.bend_eval import (
     BendEval,
     SweepContext,
     evaluate_batch,
@@ -46,8 +46,8 @@ from workbench.sheetmetal.bend_eval import (
     ordered_part,
     reach_where_part_rests,
 )
+from workbench.pressbrake.grasp import Grasp
 from workbench.sheetmetal.folding import fold_state
-from workbench.sheetmetal.grasp import Grasp
 
 F64 = NDArray[np.float64]
 Progress = Callable[[float, str], None]

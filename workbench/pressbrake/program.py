@@ -51,9 +51,9 @@ from workbench.motion.programs.model import (
     WaitInput,
     WorkObject,
 )
-from workbench.sheetmetal.die import Die
-from workbench.sheetmetal.plan import BendingPlan
-from workbench.sheetmetal.transfer import Transfer
+from workbench.pressbrake.die import Die
+from workbench.pressbrake.plan import BendingPlan
+from workbench.pressbrake.transfer import Transfer
 
 F64 = NDArray[np.float64]
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from workbench.errors import InputError
-from workbench.sheetmetal.airbend import (
+from workbench.pressbrake.airbend import (
     AIR_BEND_RATIO,
     air_bend_radius,
     apex_depth,

@@ -15,19 +15,19 @@ import numpy as np
 import pytest
 
 from workbench import Workbench
-from workbench.service.bending_process import cycle_cell, cycle_steps
-from workbench.sheetmetal.cycle import PressObstacles, _last_stop, _PressScene
-from workbench.sheetmetal.cycle_path import CyclePath, Phase, T_part_tcp, Waypoint, cycle_path
-from workbench.sheetmetal.folding import fold_state
-from workbench.sheetmetal.obstacles import cell_obstacles
-from workbench.sheetmetal.press_check import check_states
-from workbench.sheetmetal.transit import (
+from workbench.pressbrake.cycle import PressObstacles, _last_stop, _PressScene
+from workbench.pressbrake.cycle_path import CyclePath, Phase, T_part_tcp, Waypoint, cycle_path
+from workbench.pressbrake.obstacles import cell_obstacles
+from workbench.pressbrake.press_check import check_states
+from workbench.pressbrake.transit import (
     DETOUR_STEP,
     Carried,
     TransitSpace,
     _densify,
     route_transits,
 )
+from workbench.service.bending_process import cycle_cell, cycle_steps
+from workbench.sheetmetal.folding import fold_state
 
 ROOT = Path(__file__).resolve().parents[2]
 

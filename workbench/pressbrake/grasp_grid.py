@@ -15,7 +15,7 @@ import numpy as np
 import shapely
 
 from workbench.errors import InputError
-from workbench.sheetmetal.grasp import Grasp
+from workbench.pressbrake.grasp import Grasp
 from workbench.sheetmetal.part import SheetMetalPart
 
 #: Most candidates a search takes (each is checked by IK at every bend it could serve).
@@ -71,7 +71,7 @@ def grasp_grid(
     if len(out) > MAX_GRASPS:
         raise InputError(
             f"grasp grid: {len(out)} candidates, above {MAX_GRASPS} "
-            "(workbench.sheetmetal.grasp_grid.MAX_GRASPS); widen the spacing or name fewer "
+            "(workbench.pressbrake.grasp_grid.MAX_GRASPS); widen the spacing or name fewer "
             "yaws or faces"
         )
     return out

@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 
 from workbench.collision.engine import EnginePathReport
 from workbench.motion import SampledMotion, Trajectory
-from workbench.sheetmetal.die import DiePlacement
+from workbench.pressbrake.die import DiePlacement
 from workbench.sheetmetal.obbtree import FramesReport
 
 

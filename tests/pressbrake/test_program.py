@@ -25,8 +25,8 @@ from workbench.motion.programs.model import (
 )
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
+from workbench.pressbrake.program import PRESS_DONE, PRESS_START, bending_program
 from workbench.project.program_io import program_settings
-from workbench.sheetmetal.program import PRESS_DONE, PRESS_START, bending_program
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from program_round_trip import check_read_back  # noqa: E402

@@ -2,28 +2,22 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 import pytest
+from seed_part import seed_spec
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
+from workbench.pressbrake.die import Die, bend_on_die, die_part_pose, die_placements, die_targets
+from workbench.pressbrake.grasp import Grasp, T_part_grasp
 from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.die import Die, bend_on_die, die_part_pose, die_placements, die_targets
-from workbench.sheetmetal.grasp import Grasp, T_part_grasp
-
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
 
 DIE = Die(make_transform(rot_z(-np.pi / 2), [0.7, 0.0, 0.35]), 0.8, "bending.die.length")
 
 
 @pytest.fixture(scope="module")
 def part() -> SheetMetalPart:
-    return SheetMetalPart.from_spec(_tp.seed_spec())
+    return SheetMetalPart.from_spec(seed_spec())
 
 
 @pytest.mark.parametrize("grasp", ["1", "4"])

@@ -27,8 +27,8 @@ from numpy.typing import NDArray
 
 from workbench.collision.shapes import Solid
 from workbench.errors import InputError
+from workbench.geometry.polygon import signed_area, triangulate
 from workbench.geometry.transforms import make_transform
-from workbench.sheetmetal.polygon import signed_area, triangulate
 
 F64 = NDArray[np.float64]
 

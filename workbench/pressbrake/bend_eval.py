@@ -35,8 +35,8 @@ from workbench.errors import InputError
 from workbench.geometry.obb import OBB, obb_overlap
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.model import RobotModel
-from workbench.sheetmetal.airbend import apex_depth
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake.airbend import apex_depth
+from workbench.pressbrake.bend_setup import (
     PressObstacles,
     bend_pose,
     contact_zone,
@@ -46,13 +46,13 @@ from workbench.sheetmetal.bend_setup import (
     part_points,
     robot_obstacles,
 )
-from workbench.sheetmetal.cycle_path import LINE_STEP, clear_of_tools, follow_fractions
+from workbench.pressbrake.cycle_path import LINE_STEP, clear_of_tools, follow_fractions
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp
+from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
+from workbench.pressbrake.press import PressBrake, Station, ram_time
+from workbench.pressbrake.press_check import check_states
 from workbench.sheetmetal.folding import FoldedState, fold_state
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.part import SheetMetalPart
-from workbench.sheetmetal.press import PressBrake, Station, ram_time
-from workbench.sheetmetal.press_check import check_states
 
 F64 = NDArray[np.float64]
 Body = tuple[str, Solid, F64]

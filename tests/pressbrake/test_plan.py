@@ -2,21 +2,16 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from seed_part import seed_spec
 
 from workbench.geometry import OBB
 from workbench.geometry.transforms import make_transform
+from workbench.pressbrake.plan import BendingPlan, FirstCollision, first_collision, playback
 from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.plan import BendingPlan, FirstCollision, first_collision, playback
-
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
 
 F = 10
 TIMES = np.linspace(0.0, 0.9, F)
@@ -25,7 +20,7 @@ TIMES = np.linspace(0.0, 0.9, F)
 @pytest.fixture(scope="module")
 def part_report():  # type: ignore[no-untyped-def]
     """The folded seed part moved along +x through a box it meets from frame 6 on."""
-    part = SheetMetalPart.from_spec(_tp.seed_spec())
+    part = SheetMetalPart.from_spec(seed_spec())
     tree = part.fold(6).obb_tree("1")
     box = OBB(np.array([[1.5, 0.1, 0.0]]), np.eye(3)[None], np.array([[0.2, 0.5, 0.5]]))
     T = make_transform(

@@ -20,9 +20,9 @@ import pytest
 import shapely
 
 from workbench.errors import InputError
+from workbench.pressbrake.grasp_grid import MAX_GRASPS, grasp_grid
 from workbench.project.bending import PartSpec
 from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.grasp_grid import MAX_GRASPS, grasp_grid
 from workbench.sheetmetal.part import Flange
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -30,10 +30,10 @@ from workbench.errors import CollisionError, PlanningError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.model import RobotModel
 from workbench.motion.joint_rrt import plan_joint_rrt_connect
-from workbench.sheetmetal.cycle_path import CyclePath, Phase, Waypoint
+from workbench.pressbrake.cycle_path import CyclePath, Phase, Waypoint
+from workbench.pressbrake.obstacles import Obstacles
+from workbench.pressbrake.press_check import PartHit, frame_hits
 from workbench.sheetmetal.folding import FoldedState
-from workbench.sheetmetal.obstacles import Obstacles
-from workbench.sheetmetal.press_check import PartHit, frame_hits
 
 F64 = NDArray[np.float64]
 

@@ -1,11 +1,11 @@
-"""Flat pattern of a sheet-metal part: the blank's outline and its bend lines, and the part it makes.
+"""Flat pattern of a sheet-metal part: the blank's outline and its bend lines, checked.
 
 A flat pattern (a DXF's, `workbench.cad.dxf.read_flat_pattern`) gives the blank's outline and,
 per bend, the bend line: the centre line of the bend zone, with the bend angle, the direction
-and optionally the inner radius. `part_spec_from_flat_pattern` cuts the outline along the bend
-zones (each as wide as its bend allowance) into flanges and returns the spec of
-`SheetMetalPart.from_spec`; `flat_blank.flat_pattern_of_part` is the inverse (the part's
-flat blank).
+and optionally the inner radius. It is drawing data, below the part model: the DXF reader and
+writer use it here, and `sheetmetal.flat_split.part_spec_from_flat_pattern` cuts the outline
+along the bend zones (each as wide as its bend allowance) into the part's flanges;
+`sheetmetal.flat_blank.flat_pattern_of_part` is the inverse (the part's flat blank).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import shapely
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.errors import InputError
-from workbench.sheetmetal.polygon import clean_ring, signed_area
+from workbench.geometry.polygon import clean_ring, signed_area
 
 #: A bend line's end inside the blank within this distance [m] of its edge is moved onto it.
 SNAP_TOL = 0.5e-3
@@ -187,33 +187,3 @@ def check_flat_pattern(pattern: FlatPattern, field: str) -> FlatPattern:
                     f"({p[0]:.6g}, {p[1]:.6g}) mm; bend zones must not meet: add a corner relief",
                 )
     return replace(pattern, outline=outline, bend_lines=tuple(lines))
-
-
-def part_spec_from_flat_pattern(
-    pattern: FlatPattern,
-    *,
-    thickness: float,
-    inner_radius: float | None,
-    k_factor: float | None,
-    field: str,
-) -> dict:
-    """Return the SI spec of `SheetMetalPart.from_spec` for the part `pattern` folds into.
-
-    thickness [m] > 0; inner_radius [m] for the bend lines without their own (None: each must
-    carry one; the project passes its import setting or, as for a part without radii, the
-    press's air-bending radius); k_factor overrides Table 1's K for every bend (None: Table 1).
-    The outline is cut along each bend zone (centred on its line, one bend allowance wide) into
-    flanges "F1".. ("F1", the base, the largest; the rest in the order the bends reach them from
-    it) joined by bends "B1".. in bend-line order. The base keeps the drawing's coordinates;
-    every other flange starts its polygon at its bend edge, along +x from the origin.
-    FlatPatternError names `field` and the fix.
-    """
-    from workbench.sheetmetal.flat_split import split_flanges
-
-    return split_flanges(
-        check_flat_pattern(pattern, field),
-        thickness=thickness,
-        inner_radius=inner_radius,
-        k_factor=k_factor,
-        field=field,
-    )

@@ -19,8 +19,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.collision.shapes import bvh_model, fcl_transform
+from workbench.pressbrake.obstacles import Obstacles, confirm_exact, winding_number
 from workbench.sheetmetal.folding import FoldedState
-from workbench.sheetmetal.obstacles import Obstacles, confirm_exact, winding_number
 
 F64 = NDArray[np.float64]
 

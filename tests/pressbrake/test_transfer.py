@@ -2,20 +2,17 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
+from seed_part import seed_spec
 
 from workbench.collision.shapes import Solid
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
-from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.die import Die, DiePlacement
-from workbench.sheetmetal.grasp import Grasp, T_flange_grasp, T_part_grasp
-from workbench.sheetmetal.obstacles import cell_obstacles
-from workbench.sheetmetal.transfer import (
+from workbench.pressbrake.die import Die, DiePlacement
+from workbench.pressbrake.grasp import Grasp, T_flange_grasp, T_part_grasp
+from workbench.pressbrake.obstacles import cell_obstacles
+from workbench.pressbrake.transfer import (
     Transfer,
     base_flange_poses,
     carried_poses,
@@ -23,15 +20,12 @@ from workbench.sheetmetal.transfer import (
     transfer_poses,
     world_tcp,
 )
-
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
+from workbench.sheetmetal import SheetMetalPart
 
 
 @pytest.fixture(scope="module")
 def part() -> SheetMetalPart:
-    return SheetMetalPart.from_spec(_tp.seed_spec())
+    return SheetMetalPart.from_spec(seed_spec())
 
 
 def test_transfer_poses_retract_vias_and_pallet(part) -> None:  # type: ignore[no-untyped-def]

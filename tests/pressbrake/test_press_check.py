@@ -30,7 +30,7 @@ from scipy.spatial.transform import Rotation
 from workbench import Workbench
 from workbench.collision.shapes import bvh_model, fcl_transform
 from workbench.geometry.transforms import make_transform
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake.bend_setup import (
     PressObstacles,
     bend_line_frame,
     bend_pose,
@@ -39,12 +39,12 @@ from workbench.sheetmetal.bend_setup import (
     merge_obstacles,
     part_points,
 )
+from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
+from workbench.pressbrake.press import PressBrake
+from workbench.pressbrake.press_check import check_states, frames_report, is_tool
 from workbench.sheetmetal.folding import FoldedState, fold_state
-from workbench.sheetmetal.grasp import Grasp
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
 from workbench.sheetmetal.part import SheetMetalPart
-from workbench.sheetmetal.press import PressBrake
-from workbench.sheetmetal.press_check import check_states, frames_report, is_tool
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -36,8 +36,8 @@ from workbench.motion.programs.model import (
     WaitInput,
     WaitTime,
 )
-from workbench.sheetmetal.cycle import BendingCycle, following_fraction
-from workbench.sheetmetal.program import (
+from workbench.pressbrake.cycle import BendingCycle, following_fraction
+from workbench.pressbrake.program import (
     PRESS_DONE,
     PRESS_PULSE,
     PRESS_START,

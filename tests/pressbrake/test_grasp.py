@@ -2,17 +2,14 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 import pytest
 import shapely
+from seed_part import seed_spec
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
-from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.grasp import (
+from workbench.pressbrake.grasp import (
     Grasp,
     T_flange_grasp,
     T_part_grasp,
@@ -20,15 +17,12 @@ from workbench.sheetmetal.grasp import (
     checked_grasp,
     grasp_point,
 )
-
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
+from workbench.sheetmetal import SheetMetalPart
 
 
 @pytest.fixture(scope="module")
 def part() -> SheetMetalPart:
-    return SheetMetalPart.from_spec(_tp.seed_spec())
+    return SheetMetalPart.from_spec(seed_spec())
 
 
 def test_default_point_is_the_centroid_and_the_tcp_looks_into_the_sheet(part) -> None:  # type: ignore[no-untyped-def]

@@ -34,15 +34,15 @@ from workbench.kinematics.model import RobotModel
 from workbench.kinematics.path_ik import follow_path
 from workbench.motion.sampled import SampledMotion
 from workbench.motion.trajectory import Trajectory, smooth_joint_path
-from workbench.sheetmetal.bend_eval import home_branch
-from workbench.sheetmetal.bend_setup import (
+from workbench.pressbrake.bend_eval import home_branch
+from workbench.pressbrake.bend_setup import (
     Body,
     PressObstacles,
     bend_pose,
     contact_zone,
     merge_obstacles,
 )
-from workbench.sheetmetal.cycle_path import (
+from workbench.pressbrake.cycle_path import (
     CycleCell,
     CyclePath,
     CycleStep,
@@ -50,17 +50,17 @@ from workbench.sheetmetal.cycle_path import (
     T_part_tcp,
     cycle_path,
 )
-from workbench.sheetmetal.folding import FoldedState, fold_state
-from workbench.sheetmetal.obstacles import Obstacles, cell_obstacles
-from workbench.sheetmetal.part import SheetMetalPart
-from workbench.sheetmetal.press_check import PartHit, check_states
-from workbench.sheetmetal.transit import (
+from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
+from workbench.pressbrake.press_check import PartHit, check_states
+from workbench.pressbrake.transit import (
     Carried,
     TransitReport,
     TransitSpace,
     carried_hits_between,
     route_transits,
 )
+from workbench.sheetmetal.folding import FoldedState, fold_state
+from workbench.sheetmetal.part import SheetMetalPart
 
 F64 = NDArray[np.float64]
 Progress = Callable[[float, str], None]
@@ -355,7 +355,7 @@ def check_cycle(
     traj = cycle_trajectory(model, path, q_wp)
     times = _frame_times(traj, cell.frame_dt)
     q = traj.at(times)[0]
-    from workbench.sheetmetal.transfer import world_tcp
+    from workbench.pressbrake.transfer import world_tcp
 
     T_tcp = world_tcp(model, T_world_base, T_flange_tcp, q)
     wp_t = np.asarray(traj.waypoint_times, float)

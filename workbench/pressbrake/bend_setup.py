@@ -27,12 +27,12 @@ from numpy.typing import NDArray
 from workbench.collision.shapes import Solid
 from workbench.geometry.obb import OBB
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
-from workbench.sheetmetal.airbend import apex_depth
+from workbench.pressbrake.airbend import apex_depth
+from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.obstacles import ExactShape, Obstacles, cell_obstacles
+from workbench.pressbrake.press import PressBrake, Station, clipped_profile, piece_solid, prism
 from workbench.sheetmetal.folding import FoldedState
-from workbench.sheetmetal.grasp import Grasp
-from workbench.sheetmetal.obstacles import ExactShape, Obstacles, cell_obstacles
 from workbench.sheetmetal.part import SheetMetalPart
-from workbench.sheetmetal.press import PressBrake, Station, clipped_profile, piece_solid, prism
 
 F64 = NDArray[np.float64]
 Body = tuple[str, Solid, F64]
