@@ -63,8 +63,7 @@ def cad_kind(path: str | None) -> str | None:
 
 
 def _setting(field: str, message: str, prefix: str = "bending.part_import") -> ProjectError:
-    where = f"{prefix}.{field}"
-    return ProjectError(f"{where}: {message}", [(where, message)])
+    return ProjectError(message, field=f"{prefix}.{field}")
 
 
 def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str) -> PartSpec:
@@ -126,7 +125,7 @@ def _from_step(data: bytes, name: str, settings: PartImportSpec, where: str) -> 
     try:
         spec = recognise_part(brep, where=where, base=settings.base).spec
     except InputError as exc:
-        raise _setting("base", str(exc).removeprefix("base: ")) from None
+        raise ProjectError.of(exc.within("bending.part_import")) from exc
     t = spec["thickness"] / MM
     if settings.thickness is not None and abs(settings.thickness - t) > MATCH_MM:
         raise _setting(

@@ -64,12 +64,6 @@ def shown_path(path: object) -> str:
     return os.path.basename(text) if os.path.isabs(text) or text.startswith("~") else text
 
 
-def without_real_path(exc: WorkbenchError, real: PathArg, path: object) -> WorkbenchError:
-    """Return `exc` again, with the real path `real` replaced by `path` as `shown_path` names it."""
-    real_text, shown = os.fspath(real), repr(shown_path(path))
-    return type(exc)(str(exc).replace(repr(real_text), shown).replace(real_text, shown))
-
-
 def size_limit(kind: str) -> int:
     """Return the largest file of `kind` ('project', 'part', 'urdf', 'mesh') read [bytes]."""
     env, default = SIZE_LIMITS[kind]
@@ -89,20 +83,22 @@ def _mb(n: int) -> str:
     return f"{n / MiB:.1f} MB"
 
 
-def read_regular_file(path: PathArg, *, kind: str, field: str) -> bytes:
+def read_regular_file(path: PathArg, *, kind: str, field: str, shown: str | None = None) -> bytes:
     """Return the bytes of the regular file `path`, refusing other kinds and oversized files.
 
     The file is opened without following a FIFO's block (O_NONBLOCK) and checked on the open
-    descriptor, so what is checked is what is read. `field` names the input in errors.
+    descriptor, so what is checked is what is read. `field` names the input in errors, `shown`
+    the file (default: `path` as it is).
     """
     limit = size_limit(kind)
     name = os.fspath(path)
-    where = field if field == name else f"{field} ({name})"
+    shown = name if shown is None else shown
+    where = field if field == name else f"{field} ({shown})"
     try:
         fd = os.open(name, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError:
         cls, message = _MISSING[kind]
-        raise cls(message.format(where=field, shown=name)) from None
+        raise cls(message.format(where=field, shown=shown)) from None
     except OSError as exc:
         raise InputError(f"{where}: cannot read ({exc.strerror})") from None
     try:
@@ -218,11 +214,9 @@ class ProjectFolders:
     def read(self, path: object, field: str, *, kind: str) -> tuple[Path, bytes]:
         """Return the real path and the bytes of project path `path` (see `resolve`)."""
         real = self.check_file(path, field, kind=kind)
-        try:
-            return real, read_regular_file(real, kind=kind, field=field)
-        except WorkbenchError as exc:
-            # Name the path as the project gave it, not where its symlinks lead.
-            raise without_real_path(exc, real, path) from None
+        # Name the path as the project gave it, not where its symlinks lead.
+        shown = repr(shown_path(path))
+        return real, read_regular_file(real, kind=kind, field=field, shown=shown)
 
     def check_file(self, path: object, field: str, *, kind: str) -> Path:
         """Return the real path of `path` after checking it is a regular file within the limit.

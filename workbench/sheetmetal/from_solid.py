@@ -156,7 +156,9 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
         areas = [brep.faces[f.first - 1].area for f in sf.flanges]
         base = names[int(np.argmax(np.round(np.asarray(areas) / TOL**2)))]
     elif base not in names:
-        raise InputError(f"base: no flange {base!r}; the part's flanges are {', '.join(names)}")
+        raise InputError(
+            f"no flange {base!r}; the part's flanges are {', '.join(names)}", field="base"
+        )
     near = [b for b, j in zip(sf.bends, joined, strict=True) if base in j]
     top = {base: _base_top(brep, faces_of[base], [b.inner for b in near], [b.outer for b in near])}
     T, pts, across = _base_polygon(brep, top[base], t)
