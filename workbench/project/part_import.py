@@ -194,7 +194,7 @@ def import_part(
         spec = _from_dxf(data, name, settings, shown)
         note = f"from the DXF flat pattern {name!r} (bend lines on layer {settings.layer!r})"
     else:
-        raise ProjectError(f"{where}: {name!r} is not a .step, .stp or .dxf file")
+        raise ProjectError(f"{name!r} is not a .step, .stp or .dxf file", field=where)
     return part_spec_from_si(spec, name=PurePath(name).stem, note=note, where=shown)
 
 
