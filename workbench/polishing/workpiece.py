@@ -58,8 +58,11 @@ def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
     try:
         loaded = trimesh.load(str(path), force="mesh", process=True)
     except Exception as exc:  # trimesh raises many types for unreadable files
+        said = str(exc)  # trimesh's words may give the path it read: name it as `name` does
+        if name != str(path):
+            said = said.replace(repr(str(path)), repr(name)).replace(str(path), repr(name))
         raise MeshError(
-            f"workpiece file {name!r} is not a readable mesh ({type(exc).__name__}: {exc}); "
+            f"workpiece file {name!r} is not a readable mesh ({type(exc).__name__}: {said}); "
             "give an STL, OBJ or PLY file with triangles"
         ) from exc
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
