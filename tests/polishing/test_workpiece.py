@@ -101,3 +101,26 @@ def test_example_workpiece_is_regenerated_byte_for_byte(tmp_path: Path) -> None:
 
     out = main(tmp_path / "panel.stl")
     assert out.read_bytes() == PANEL.read_bytes()
+
+
+def test_units_errors_name_the_units_field(tmp_path: Path) -> None:
+    p_mm = _save(make_panel(10, 8), tmp_path / "mm.stl", 1000.0)
+    with pytest.raises(MeshError) as err:
+        load_workpiece(p_mm, units="m")
+    assert err.value.field == "units" and str(err.value) == f"units: {err.value.detail}"
+    assert "1000x off" in err.value.detail
+    with pytest.raises(MeshError) as missing:
+        load_workpiece(tmp_path / "missing.stl")
+    assert missing.value.field is None  # about the file, not a field of the call
+
+
+def test_messages_name_the_file_as_told(tmp_path: Path) -> None:
+    real = str(tmp_path / "missing.stl")
+    with pytest.raises(MeshError) as err:
+        load_workpiece(real, name="parts/panel.stl")
+    assert "'parts/panel.stl' does not exist" in str(err.value) and real not in str(err.value)
+    junk = tmp_path / "junk.stl"
+    junk.write_text("this is not a mesh\n" * 20)
+    with pytest.raises(MeshError) as bad:
+        load_workpiece(junk, name="junk.stl")
+    assert str(junk) not in str(bad.value) and "'junk.stl'" in str(bad.value)

@@ -50,19 +50,24 @@ class CellGrid:
         return self.origin + (np.argwhere(mask) + 0.5) * self.cell_size
 
 
-def check_cell_size(cell_size: float, mesh: trimesh.Trimesh, name: str = "cell_size") -> float:
-    """Return `cell_size` [m] as float after checking it is finite, > 0 and <= the part's extent."""
+def check_cell_size(
+    cell_size: float, mesh: trimesh.Trimesh, name: str = "cell_size", *, part: str | None = None
+) -> float:
+    """Return `cell_size` [m] as float after checking it is finite, > 0 and <= the part's extent.
+
+    InputError names `name`, and `part` (the part's name) when given."""
+    of = "" if part is None else f" (part {part!r})"
     try:
         c = float(cell_size)
     except (TypeError, ValueError):
-        raise InputError(f"{name} must be a number in metres, got {cell_size!r}") from None
+        raise InputError(f"{name} must be a number in metres, got {cell_size!r}{of}") from None
     extent = float(np.max(mesh.extents))
     if not np.isfinite(c) or c <= 0.0:
-        raise InputError(f"{name} must be a finite length > 0 m, got {cell_size!r}")
+        raise InputError(f"{name} must be a finite length > 0 m, got {cell_size!r}{of}")
     if c > extent:
         raise InputError(
             f"{name}={c:g} m is larger than the part (largest extent {extent:g} m); "
-            f"use a cell size <= {extent:g} m, typically 1/10 to 1/50 of it"
+            f"use a cell size <= {extent:g} m, typically 1/10 to 1/50 of it{of}"
         )
     cells = float(np.prod(np.ceil(np.asarray(mesh.extents, float) / c) + 1))
     if cells > MAX_CELLS:
@@ -70,24 +75,31 @@ def check_cell_size(cell_size: float, mesh: trimesh.Trimesh, name: str = "cell_s
         raise InputError(
             f"{name}={c:g} m cuts the part ({' x '.join(f'{e:g}' for e in mesh.extents)} m) into"
             f" about {cells:.3g} cells, above the budget of {MAX_CELLS:,} "
-            f"(workbench.assembly.cells.MAX_CELLS); use a cell size of at least ~{finest:.2g} m"
+            f"(workbench.assembly.cells.MAX_CELLS); use a cell size of at least ~{finest:.2g} m{of}"
         )
     return c
 
 
-def check_mesh(mesh: object, name: str, *, require_closed: bool) -> trimesh.Trimesh:
-    """Return `mesh` after checking it is a non-empty Trimesh; MeshError (or a warning) if not closed."""
+def check_mesh(
+    mesh: object, name: str, *, require_closed: bool, part: str | None = None
+) -> trimesh.Trimesh:
+    """Return `mesh` after checking it is a non-empty Trimesh; MeshError (or a warning) if not closed.
+
+    A MeshError names `name`, and `part` (the part's name) when given."""
+    of = "" if part is None else f" (part {part!r})"
     if not isinstance(mesh, trimesh.Trimesh):
         raise InputError(f"{name} must be a trimesh.Trimesh, got {type(mesh).__name__}")
     if len(mesh.faces) == 0 or not np.all(np.isfinite(mesh.vertices)):
-        raise MeshError(f"{name} is empty or has non-finite vertices; give a closed triangle mesh")
+        raise MeshError(
+            f"{name} is empty or has non-finite vertices; give a closed triangle mesh{of}"
+        )
     if not mesh.is_watertight:
         msg = (
             f"{name} is not closed (not watertight: {len(mesh.faces)} faces with open edges); "
             "interior cells and containment cannot be decided — repair it (e.g. fill holes)"
         )
         if require_closed:
-            raise MeshError(msg)
+            raise MeshError(msg + of)
         warnings.warn(msg + "; treating it as a surface only", RuntimeWarning, stacklevel=3)
     return mesh
 

@@ -10,7 +10,7 @@ import trimesh
 from numpy.typing import NDArray
 
 from workbench.assembly.cells import check_mesh
-from workbench.errors import MeshError, ProjectError
+from workbench.errors import ProjectError
 
 
 @dataclass(frozen=True, eq=False)
@@ -31,10 +31,7 @@ class AssemblyPart:
         where: the part's field (e.g. "assembly.parts[2]"): MeshError names `where.path`,
         ProjectError `where.robot`.
         """
-        try:
-            check_mesh(self.mesh, f"{where}.path", require_closed=True)
-        except MeshError as exc:
-            raise MeshError(f"{exc} (part {self.name!r})") from None
+        check_mesh(self.mesh, f"{where}.path", require_closed=True, part=self.name)
         if self.robot is not None and self.robot not in robots:
             field = f"{where}.robot"
             raise ProjectError(

@@ -113,7 +113,7 @@ def plan_joint_move(
         )
     except (CollisionError, UnreachableError, PlanningError) as exc:
         # PlanningError too: a flip on a withdrawal (`carry_ik`) is one since `follow_path`.
-        raise type(exc)(f"{where} ({part.name}) carried by {arm.name}: {exc}") from None
+        raise exc.within(f"{where} ({part.name}) carried by {arm.name}") from exc
     assert path.joints is not None
     K = path.joints
     dense = [K[:1]]

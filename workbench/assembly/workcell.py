@@ -94,10 +94,7 @@ class Workcell:
             c, field = self.default_cell_size, self.cell_size_field
         if c is None:
             return float(np.max(part.mesh.extents)) / 20.0
-        try:
-            return check_cell_size(c, part.mesh, field)
-        except InputError as exc:
-            raise InputError(f"{exc} (part {name!r})") from None
+        return check_cell_size(c, part.mesh, field, part=name)
 
     def checker(self, name: str, cell_size: float | None = None) -> InterferenceChecker:
         """Return the interference checker of part `name` among its obstacles (cached)."""

@@ -70,7 +70,7 @@ def _load(data: bytes, name: str, field: str) -> Any:
 
     fix = "export the flat pattern as DXF (R12 to R2018)"
     if not (data.startswith(b"AutoCAD Binary DXF") or b"SECTION" in data[:65536].upper()):
-        raise FlatPatternError(field, f"{name!r} is not a DXF file (no SECTION); {fix}")
+        raise FlatPatternError(f"{name!r} is not a DXF file (no SECTION); {fix}", field=field)
     try:
         if data.startswith(b"AutoCAD Binary DXF"):
             doc = _read_binary(data)
@@ -78,7 +78,7 @@ def _load(data: bytes, name: str, field: str) -> Any:
             doc, _auditor = recover.read(io.BytesIO(data))
     except Exception as exc:  # ezdxf raises DXFStructureError and others on broken files
         raise FlatPatternError(
-            field, f"{name!r} is not a readable DXF file ({type(exc).__name__}: {exc}); {fix}"
+            f"{name!r} is not a readable DXF file ({type(exc).__name__}: {exc}); {fix}", field=field
         ) from None
     return doc
 
@@ -118,16 +118,16 @@ def _outline(curves: list, name: str, field: str, unit: str, scale: float) -> tu
         if chains:
             a, b = chains[0][0] * u, chains[0][-1] * u
             raise FlatPatternError(
-                field,
                 f"{name!r} has no closed outline: its curves off the bend layers form "
                 f"{len(chains)} open chain(s); one runs from ({a[0]:.6g}, {a[1]:.6g}) to "
                 f"({b[0]:.6g}, {b[1]:.6g}) {unit}, a gap of {np.linalg.norm(a - b):.4g} {unit}; "
                 "join its ends or draw the blank as a closed polyline",
+                field=field,
             )
         raise FlatPatternError(
-            field,
             f"{name!r} has no closed outline (closed polyline, or lines and arcs joined end to "
             "end) off the bend layers; draw the blank's outline",
+            field=field,
         )
     polys = []
     for pts in closed:
@@ -138,14 +138,14 @@ def _outline(curves: list, name: str, field: str, unit: str, scale: float) -> tu
         if not poly.is_valid:
             c = np.asarray(poly.centroid.coords[0]) * u
             raise FlatPatternError(
-                field,
                 f"{name!r}: the closed contour around ({c[0]:.6g}, {c[1]:.6g}) {unit} crosses "
                 "itself; redraw it as a simple closed contour",
+                field=field,
             )
         polys.append((abs(poly.area), ring, poly))
     if not polys:
         raise FlatPatternError(
-            field, f"{name!r}: its closed contours are degenerate; draw the blank's outline"
+            f"{name!r}: its closed contours are degenerate; draw the blank's outline", field=field
         )
     polys.sort(key=lambda p: -p[0])
     outer = polys[0][2]
@@ -154,9 +154,9 @@ def _outline(curves: list, name: str, field: str, unit: str, scale: float) -> tu
     if apart:
         c = np.asarray(apart[0].centroid.coords[0]) * u
         raise FlatPatternError(
-            field,
             f"{name!r} holds {len(apart) + 1} separate outlines (one around ({c[0]:.6g}, "
             f"{c[1]:.6g}) {unit}); save one flat pattern per file",
+            field=field,
         )
     notes = []
     if holes:
@@ -194,10 +194,10 @@ def read_flat_pattern(
     if not lines:
         layers = sorted({layer for _, layer in items} | {str(t.dxf.name) for t in doc.layers})
         raise FlatPatternError(
-            field,
             f"{name!r} has no bend lines: no LINE on layer {bend_layer!r} (nor {bend_layer}_UP, "
             f"{bend_layer}_DOWN); its layers are {layers}: put the bend lines on layer "
             f"{bend_layer!r} or name the layer that holds them as the bend layer",
+            field=field,
         )
     outline, holes, more = _outline(curves, name, field, unit, scale)
     if skipped:
@@ -216,22 +216,22 @@ def read_flat_pattern(
         )
         if note is None:
             raise FlatPatternError(
-                field,
                 f"{label} has no bend angle: no bend note near it; put a TEXT note such as "
                 "'UP 90° R1.5' (direction, bend angle in degrees, optional inner radius) at "
                 "its midpoint",
+                field=field,
             )
         direction = note.direction if note.direction is not None else (kind or None)
         if direction is None:
             raise FlatPatternError(
-                field,
                 f"{label} has no direction: write UP or DOWN in its note {note.text!r} or put "
                 f"it on layer {bend_layer}_UP or {bend_layer}_DOWN",
+                field=field,
             )
         if kind and direction != kind:
             raise FlatPatternError(
-                field,
                 f"{label}: its note {note.text!r} contradicts its layer {layer!r}; make them agree",
+                field=field,
             )
         bend_lines.append(BendLine(a, b, note.angle, int(direction), note.inner_radius, label))
     pattern = FlatPattern(outline, tuple(bend_lines), holes, tuple(notes + more))

@@ -28,10 +28,6 @@ TOUCH_TOL = 1e-7
 class FlatPatternError(InputError):
     """A flat pattern (or the file it came from) cannot make a part; `field` names the input."""
 
-    def __init__(self, field: str, message: str) -> None:
-        super().__init__(f"{field}: {message}")
-        self.field = field
-
 
 @dataclass(frozen=True, eq=False)
 class BendLine:
@@ -88,7 +84,8 @@ def _snap(i: int, line: BendLine, ring: shapely.LinearRing, field: str) -> BendL
     length = float(np.linalg.norm(b - a))
     if not np.isfinite(length) or length <= SNAP_TOL:
         raise FlatPatternError(
-            field, f"{bend_label(i, line)} is {length * 1e3:.4g} mm long; delete it or redraw it"
+            f"{bend_label(i, line)} is {length * 1e3:.4g} mm long; delete it or redraw it",
+            field=field,
         )
     d = (b - a) / length
     probe = shapely.LineString([a - 2 * SNAP_TOL * d, b + 2 * SNAP_TOL * d])
@@ -105,18 +102,18 @@ def _snap(i: int, line: BendLine, ring: shapely.LinearRing, field: str) -> BendL
             if len(near) == 0:
                 gap = blank.exterior.distance(shapely.Point(p)) * 1e3
                 raise FlatPatternError(
-                    field,
                     f"{bend_label(i, line)} does not cross the outline from edge to edge: its "
                     f"{which} is {gap:.4g} mm inside the outline; {fix}",
+                    field=field,
                 )
             ends.append(t0 + sign * float(near.max()))
         else:
             ahead = u[(u >= -TOUCH_TOL) & (u <= length)]
             if len(ahead) == 0:
                 raise FlatPatternError(
-                    field,
                     f"{bend_label(i, line)} does not cross the outline from edge to edge: it "
                     f"does not reach the blank; {fix}",
+                    field=field,
                 )
             ends.append(t0 + sign * float(ahead.min()))
     inner = s[(s > ends[0] + TOUCH_TOL) & (s < ends[1] - TOUCH_TOL)]
@@ -124,9 +121,9 @@ def _snap(i: int, line: BendLine, ring: shapely.LinearRing, field: str) -> BendL
     if ends[1] - ends[0] <= SNAP_TOL or len(inner) or not blank.contains(shapely.Point(mid)):
         where = a + d * (inner[0] if len(inner) else ends[0])
         raise FlatPatternError(
-            field,
             f"{bend_label(i, line)} does not cross the outline from edge to edge: it leaves the "
             f"blank at ({where[0] * 1e3:.6g}, {where[1] * 1e3:.6g}) mm; {fix}",
+            field=field,
         )
     return replace(line, start=a + d * ends[0], end=a + d * ends[1])
 
@@ -141,29 +138,32 @@ def check_flat_pattern(pattern: FlatPattern, field: str) -> FlatPattern:
     outline = np.asarray(pattern.outline, dtype=float)
     if outline.ndim != 2 or outline.shape[1] != 2 or not np.all(np.isfinite(outline)):
         raise FlatPatternError(
-            field, f"outline: expected (n, 2) finite points, got {outline.shape}"
+            f"outline: expected (n, 2) finite points, got {outline.shape}", field=field
         )
     outline = ccw_ring(outline)
     poly = shapely.Polygon(outline) if len(outline) >= 3 else None
     if poly is None or not poly.is_valid or poly.area <= 0:
         why = shapely.is_valid_reason(poly) if poly is not None else "fewer than 3 corners"
         raise FlatPatternError(
-            field, f"the outline is not a simple polygon ({why}); redraw it as one closed contour"
+            f"the outline is not a simple polygon ({why}); redraw it as one closed contour",
+            field=field,
         )
     ring = shapely.LinearRing(outline)
     lines = []
     for i, line in enumerate(pattern.bend_lines):
         if not (np.isfinite(line.angle) and 0.0 < line.angle < np.pi):
             raise FlatPatternError(
-                field,
                 f"{bend_label(i, line)}: bend angle {np.degrees(line.angle):.6g} deg is not in "
                 "(0, 180); write the bend angle (90 for a right angle) in its note",
+                field=field,
             )
         if line.direction not in (1, -1):
-            raise FlatPatternError(field, f"{bend_label(i, line)}: direction must be +1 or -1")
+            raise FlatPatternError(
+                f"{bend_label(i, line)}: direction must be +1 or -1", field=field
+            )
         r = line.inner_radius
         if r is not None and not (np.isfinite(r) and r > 0):
-            raise FlatPatternError(field, f"{bend_label(i, line)}: inner radius must be > 0")
+            raise FlatPatternError(f"{bend_label(i, line)}: inner radius must be > 0", field=field)
         lines.append(_snap(i, line, ring, field))
     segs = [shapely.LineString([ln.start, ln.end]) for ln in lines]
     for hole in pattern.holes:
@@ -171,10 +171,10 @@ def check_flat_pattern(pattern: FlatPattern, field: str) -> FlatPattern:
         for i, seg in enumerate(segs):
             if seg.distance(h) <= TOUCH_TOL:
                 raise FlatPatternError(
-                    field,
                     f"{bend_label(i, lines[i])} crosses or touches an inner contour (a hole or "
                     "cutout); the part model has no holes in bend zones: end the bend line at "
                     "the hole's edge or remove the hole",
+                    field=field,
                 )
     for i in range(len(segs)):
         for j in range(i + 1, len(segs)):
@@ -182,8 +182,8 @@ def check_flat_pattern(pattern: FlatPattern, field: str) -> FlatPattern:
                 at = shapely.get_coordinates(segs[i].intersection(segs[j]))
                 p = at[0] * 1e3 if len(at) else lines[i].start * 1e3
                 raise FlatPatternError(
-                    field,
                     f"{bend_label(i, lines[i])} and {bend_label(j, lines[j])} cross or touch at "
                     f"({p[0]:.6g}, {p[1]:.6g}) mm; bend zones must not meet: add a corner relief",
+                    field=field,
                 )
     return replace(pattern, outline=outline, bend_lines=tuple(lines))

@@ -137,7 +137,7 @@ def read_sheet_brep(shape: Any, field: str) -> SheetBrep:
     TopExp.MapShapes_s(shape, TopAbs_SOLID, solids)
     TopExp.MapShapesAndAncestors_s(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces)
     if faces.Extent() == 0:
-        raise MeshError(f"{field}: the STEP file holds no faces; export the part as a solid")
+        raise MeshError("the STEP file holds no faces; export the part as a solid", field=field)
 
     def across(edge: Any, here: int) -> int:
         if not edge_faces.Contains(edge):

@@ -83,11 +83,11 @@ class URDFRobot:
         prefixed with `field` (the caller's name for the file, e.g. "robot.urdf")."""
         p = Path(path)
         if not p.is_file():
-            raise InputError(f"{field}: URDF file {str(p)!r} does not exist")
+            raise InputError(f"URDF file {str(p)!r} does not exist", field=field)
         try:
             model = pin.buildModelFromUrdf(str(p))
         except Exception as exc:  # pinocchio raises plain RuntimeError/ValueError
-            raise InputError(f"{field}: cannot read URDF {str(p)!r}: {exc}") from exc
+            raise InputError(f"cannot read URDF {str(p)!r}: {exc}", field=field) from exc
         dirs = [str(p.parent)] + list(package_dirs or [])
         geometry = None
         for kind in (pin.GeometryType.COLLISION, pin.GeometryType.VISUAL):
@@ -95,7 +95,7 @@ class URDFRobot:
                 geom = pin.buildGeomFromUrdf(model, str(p), kind, package_dirs=dirs)
             except Exception as exc:
                 raise MeshError(
-                    f"{field}: URDF {str(p)!r} refers to a mesh that cannot be loaded: {exc}"
+                    f"URDF {str(p)!r} refers to a mesh that cannot be loaded: {exc}", field=field
                 ) from exc
             if geom.ngeoms:
                 geometry = geom

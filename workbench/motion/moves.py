@@ -101,7 +101,7 @@ def follow_poses(
             track="nearest",
         )
     except UnreachableError as exc:
-        raise PlanningError(str(exc)) from exc
+        raise PlanningError(exc.detail, field=exc.field) from exc
     # follow_path bounds the steps between the poses; the step onto the first is the move's.
     jump = float(np.abs(path.q[0] - q_prev).max())
     if jump > max_joint_step:

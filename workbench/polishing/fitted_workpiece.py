@@ -32,6 +32,7 @@ def fit_workpiece(
     units: MeshUnits,
     T_world_workpiece: ArrayLike,
     tolerance: StepTolerance | None = None,
+    name: str | None = None,
 ) -> FittedWorkpiece:
     """Return the `FittedWorkpiece` of the mesh file `path` read in `units`, placed at
     `T_world_workpiece` (4, 4) [m]; a STEP file is tessellated with `tolerance`.
@@ -41,8 +42,9 @@ def fit_workpiece(
     area-weighted ones (on a tessellation's long triangles those are off by up to ~0.7 deg).
 
     Raises `MeshError` for a missing, empty or non-mesh file or a part in the wrong units
-    (`load_workpiece`), and the chart's errors for a part that folds over (`build_chart`)."""
-    mesh, report = load_workpiece(path, units=units, tolerance=tolerance)
+    (`load_workpiece`; messages name the file `name`, default `path`), and the chart's errors
+    for a part that folds over (`build_chart`)."""
+    mesh, report = load_workpiece(path, units=units, tolerance=tolerance, name=name)
     T = np.asarray(T_world_workpiece, dtype=float)
     mesh.apply_transform(T)
     chart = build_chart(mesh)

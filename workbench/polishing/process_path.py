@@ -104,8 +104,9 @@ def check_path_lengths(mesh: trimesh.Trimesh, step: float, spacing: float) -> No
     for name, val in (("step", step), ("spacing", spacing)):
         if val >= size:
             raise InputError(
-                f"{name}: {val / _MM:g} mm is larger than the part (largest extent "
-                f"{size / _MM:.1f} mm); give a {name} well below the part size"
+                f"{val / _MM:g} mm is larger than the part (largest extent "
+                f"{size / _MM:.1f} mm); give a {name} well below the part size",
+                field=name,
             )
 
 

@@ -44,27 +44,30 @@ class WorkpieceReport:
     warnings: tuple[str, ...]
 
 
-def _read(path: Path, tolerance: StepTolerance) -> trimesh.Trimesh:
+def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
     if not path.is_file():
         raise MeshError(
-            f"workpiece file {str(path)!r} does not exist; give the path of an STL, OBJ or PLY file"
+            f"workpiece file {name!r} does not exist; give the path of an STL, OBJ or PLY file"
         )
     if path.stat().st_size == 0:
         raise MeshError(
-            f"workpiece file {str(path)!r} is empty; give an STL, OBJ or PLY file with triangles"
+            f"workpiece file {name!r} is empty; give an STL, OBJ or PLY file with triangles"
         )
     if is_step(path):
-        return read_step_mesh(path.read_bytes(), str(path), "workpiece", tolerance)
+        return read_step_mesh(path.read_bytes(), name, "workpiece", tolerance)
     try:
         loaded = trimesh.load(str(path), force="mesh", process=True)
     except Exception as exc:  # trimesh raises many types for unreadable files
+        said = str(exc)  # trimesh's words may give the path it read: name it as `name` does
+        if name != str(path):
+            said = said.replace(repr(str(path)), repr(name)).replace(str(path), repr(name))
         raise MeshError(
-            f"workpiece file {str(path)!r} is not a readable mesh ({type(exc).__name__}: {exc}); "
+            f"workpiece file {name!r} is not a readable mesh ({type(exc).__name__}: {said}); "
             "give an STL, OBJ or PLY file with triangles"
         ) from exc
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
         raise MeshError(
-            f"workpiece file {str(path)!r} contains no triangles; give an STL, OBJ or PLY file with triangles"
+            f"workpiece file {name!r} contains no triangles; give an STL, OBJ or PLY file with triangles"
         )
     return loaded
 
@@ -94,7 +97,8 @@ def _choose_scale(raw_diag: float, units: str, path: str) -> tuple[str, float, l
         raise MeshError(
             f"workpiece {path!r} read with units={chosen!r} has a bounding-box diagonal of {diag:g} m, "
             f"outside the plausible range [{MIN_DIAGONAL_M:g}, {MAX_DIAGONAL_M:g}] m: the units look "
-            f"1000x off; pass units={other!r} (or fix the file)"
+            f"1000x off; pass units={other!r} (or fix the file)",
+            field="units",
         )
     return chosen, scale, warnings
 
@@ -179,7 +183,11 @@ def inspect_mesh(
 
 
 def load_workpiece(
-    path: str | Path, *, units: MeshUnits = "auto", tolerance: StepTolerance | None = None
+    path: str | Path,
+    *,
+    units: MeshUnits = "auto",
+    tolerance: StepTolerance | None = None,
+    name: str | None = None,
 ) -> tuple[trimesh.Trimesh, WorkpieceReport]:
     """Return the workpiece mesh in metres (degenerate faces removed) and a `WorkpieceReport`.
 
@@ -189,21 +197,24 @@ def load_workpiece(
     empty or non-mesh file, a STEP file read in "m", and a part whose size in the chosen
     units is implausible (bounding-box diagonal outside [2 mm, 20 m]); `InputError` for an
     unknown `units`. Vertex normals of the result (``mesh.vertex_normals``) follow the face
-    winding.
+    winding. Messages name the file `name` (default: `path`); errors about the units name
+    the field ``units``.
     """
     p = Path(path)
+    shown = str(p) if name is None else name
     if units not in MESH_UNITS:
         raise InputError(f"units must be 'auto', 'mm' or 'm', got {units!r}")
     if is_step(p):
         if units == "m":
             raise MeshError(
-                f"workpiece {str(p)!r} is a STEP file: it carries its own length unit and is read"
-                " in mm, so units='m' would make it 1000x too large; pass units='mm' or 'auto'"
+                f"workpiece {shown!r} is a STEP file: it carries its own length unit and is read"
+                " in mm, so units='m' would make it 1000x too large; pass units='mm' or 'auto'",
+                field="units",
             )
         units = "mm"
-    raw = _read(p, tolerance or StepTolerance())
+    raw = _read(p, tolerance or StepTolerance(), shown)
     raw_diag = _diagonal(np.asarray(raw.vertices))
-    chosen, scale, warnings = _choose_scale(raw_diag, units, str(p))
+    chosen, scale, warnings = _choose_scale(raw_diag, units, shown)
     scaled = trimesh.Trimesh(
         vertices=np.asarray(raw.vertices) * scale,
         faces=raw.faces,

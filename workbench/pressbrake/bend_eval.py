@@ -391,7 +391,8 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
     try:
         fold_state(part, k + 1)
     except InputError as exc:
-        problem = f"bend {name!r}: {str(exc).replace('bend sequence: ', '')}"
+        said = exc.detail if exc.field == "bend sequence" else str(exc)
+        problem = f"bend {name!r}: {said}"
         side = SideEval(False, problem)
         return BendEval(
             done,

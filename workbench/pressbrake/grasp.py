@@ -59,7 +59,7 @@ def check_flange(part: SheetMetalPart, flange: str, where: str = "grasp.flange")
     """Raise InputError naming `where` and the flanges when the part has no flange `flange`."""
     names = [f.name for f in part.flanges]
     if flange not in names:
-        raise InputError(f"{where}: no flange {flange!r}; flanges are {names}")
+        raise InputError(f"no flange {flange!r}; flanges are {names}", field=where)
 
 
 def checked_grasp(

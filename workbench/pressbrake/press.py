@@ -43,8 +43,9 @@ def punch_profile(width: float, height: float, tip_angle: float) -> F64:
     zw = half / np.tan(tip_angle / 2.0)
     if zw >= height:
         raise InputError(
-            f"punch: flanks of a {np.degrees(tip_angle):.1f} deg tip {width * 1e3:g} mm wide reach "
-            f"{zw * 1e3:.1f} mm, above the punch's height {height * 1e3:g} mm"
+            f"flanks of a {np.degrees(tip_angle):.1f} deg tip {width * 1e3:g} mm wide reach "
+            f"{zw * 1e3:.1f} mm, above the punch's height {height * 1e3:g} mm",
+            field="punch",
         )
     return np.array([[0.0, 0.0], [half, zw], [half, height], [-half, height], [-half, zw]])
 

@@ -232,7 +232,7 @@ class PartSpec(StrictModel):
             problem = self.radius_problem(air_radius, v_opening)
             if problem is not None:
                 field = f"{where}bends[{i}].inner_radius"
-                raise ProjectError(f"{field}: {problem}", [(field, problem)])
+                raise ProjectError(f"{problem}", [(field, problem)], field=field)
             assert air_radius is not None
             radii.append(float(air_radius))
         return PartSI(

@@ -38,9 +38,9 @@ def field_path(loc: tuple[int | str, ...]) -> str:
 
 
 def _message(err: dict[str, Any]) -> str:
-    msg = str(err["msg"])
-    for prefix in ("Value error, ", "Assertion failed, "):
-        msg = msg.removeprefix(prefix)
+    raised = err.get("ctx", {}).get("error")  # what a validator raised, as it said it
+    is_raised = err["type"] in ("value_error", "assertion_error") and raised is not None
+    msg = str(raised) if is_raised else str(err["msg"])
     if err["type"] == "extra_forbidden":
         msg = "unknown field; remove it or check its spelling"
     elif err["type"] == "finite_number":

@@ -17,6 +17,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from pydantic import Field, model_validator
 
+from workbench.errors import InputError
 from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.robot_library import LIBRARY, ROBOT_NAMES
 from workbench.project import bounds as B
@@ -352,7 +353,9 @@ class MoveSpec(StrictModel):
             speed.check(self.speed)
         except ValueError as exc:
             unit = "% of the joint speed limits" if self.type == "joint" else "mm/s"
-            raise ValueError(f"speed: {exc} (a {self.type} move's speed is in {unit})") from None
+            raise InputError(
+                f"{exc} (a {self.type} move's speed is in {unit})", field="speed"
+            ) from None
         return self
 
     def to_si(self, convention: JointConvention | None = None) -> MoveSI:

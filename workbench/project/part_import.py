@@ -63,8 +63,7 @@ def cad_kind(path: str | None) -> str | None:
 
 
 def _setting(field: str, message: str, prefix: str = "bending.part_import") -> ProjectError:
-    where = f"{prefix}.{field}"
-    return ProjectError(f"{where}: {message}", [(where, message)])
+    return ProjectError(message, field=f"{prefix}.{field}")
 
 
 def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str) -> PartSpec:
@@ -126,7 +125,7 @@ def _from_step(data: bytes, name: str, settings: PartImportSpec, where: str) -> 
     try:
         spec = recognise_part(brep, where=where, base=settings.base).spec
     except InputError as exc:
-        raise _setting("base", str(exc).removeprefix("base: ")) from None
+        raise ProjectError.of(exc.within("bending.part_import")) from exc
     t = spec["thickness"] / MM
     if settings.thickness is not None and abs(settings.thickness - t) > MATCH_MM:
         raise _setting(
@@ -195,7 +194,7 @@ def import_part(
         spec = _from_dxf(data, name, settings, shown)
         note = f"from the DXF flat pattern {name!r} (bend lines on layer {settings.layer!r})"
     else:
-        raise ProjectError(f"{where}: {name!r} is not a .step, .stp or .dxf file")
+        raise ProjectError(f"{name!r} is not a .step, .stp or .dxf file", field=where)
     return part_spec_from_si(spec, name=PurePath(name).stem, note=note, where=shown)
 
 

@@ -64,12 +64,6 @@ def shown_path(path: object) -> str:
     return os.path.basename(text) if os.path.isabs(text) or text.startswith("~") else text
 
 
-def without_real_path(exc: WorkbenchError, real: PathArg, path: object) -> WorkbenchError:
-    """Return `exc` again, with the real path `real` replaced by `path` as `shown_path` names it."""
-    real_text, shown = os.fspath(real), repr(shown_path(path))
-    return type(exc)(str(exc).replace(repr(real_text), shown).replace(real_text, shown))
-
-
 def size_limit(kind: str) -> int:
     """Return the largest file of `kind` ('project', 'part', 'urdf', 'mesh') read [bytes]."""
     env, default = SIZE_LIMITS[kind]
@@ -89,26 +83,30 @@ def _mb(n: int) -> str:
     return f"{n / MiB:.1f} MB"
 
 
-def read_regular_file(path: PathArg, *, kind: str, field: str) -> bytes:
+def read_regular_file(path: PathArg, *, kind: str, field: str, shown: str | None = None) -> bytes:
     """Return the bytes of the regular file `path`, refusing other kinds and oversized files.
 
     The file is opened without following a FIFO's block (O_NONBLOCK) and checked on the open
-    descriptor, so what is checked is what is read. `field` names the input in errors.
+    descriptor, so what is checked is what is read. `field` names the input in errors, `shown`
+    the file (default: `path` as it is).
     """
     limit = size_limit(kind)
     name = os.fspath(path)
-    where = field if field == name else f"{field} ({name})"
+    shown = name if shown is None else shown
+    where = field if field == name else f"{field} ({shown})"
     try:
         fd = os.open(name, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError:
         cls, message = _MISSING[kind]
-        raise cls(message.format(where=field, shown=name)) from None
+        raise cls(message.format(where=field, shown=shown)) from None
     except OSError as exc:
-        raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+        raise InputError(f"cannot read ({exc.strerror})", field=where) from None
     try:
         st = os.fstat(fd)
         if not stat.S_ISREG(st.st_mode):
-            raise InputError(f"{where}: not a regular file (a folder, device or pipe); give a file")
+            raise InputError(
+                "not a regular file (a folder, device or pipe); give a file", field=where
+            )
         if st.st_size > limit:
             raise InputError(_too_big(where, st.st_size, kind, limit))
         chunks, total = [], 0
@@ -122,7 +120,7 @@ def read_regular_file(path: PathArg, *, kind: str, field: str) -> bytes:
                 raise InputError(_too_big(where, total, kind, limit))
         return b"".join(chunks)
     except OSError as exc:
-        raise InputError(f"{where}: cannot read ({exc.strerror})") from None
+        raise InputError(f"cannot read ({exc.strerror})", field=where) from None
     finally:
         os.close(fd)
 
@@ -199,30 +197,29 @@ class ProjectFolders:
         The refusal reads the same whether or not the file exists.
         """
         if not isinstance(path, str | os.PathLike):
-            raise InputError(f"{field}: expected a file path (text), got {type(path).__name__}")
+            raise InputError(f"expected a file path (text), got {type(path).__name__}", field=field)
         text = os.fspath(path)
         if not text or "\x00" in text:
-            raise InputError(f"{field}: {text!r} is not a file path; give a relative path")
+            raise InputError(f"{text!r} is not a file path; give a relative path", field=field)
         p = Path(text).expanduser() if text.startswith("~") else Path(text)
         candidate = p if p.is_absolute() else Path(self.base) / p
         real = Path(os.path.realpath(candidate))
         if not any(real == r or real.is_relative_to(r) for r in self.roots()):
             raise InputError(
-                f"{field}: {text!r} lies outside the project's folder and the allowed folders;"
+                f"{text!r} lies outside the project's folder and the allowed folders;"
                 " put the file in the project's folder and give a path relative to the project"
                 " file, or allow its folder (workbench serve --allow-dir DIR;"
-                " Workbench.open(path, allowed_dirs=[DIR]))"
+                " Workbench.open(path, allowed_dirs=[DIR]))",
+                field=field,
             )
         return real
 
     def read(self, path: object, field: str, *, kind: str) -> tuple[Path, bytes]:
         """Return the real path and the bytes of project path `path` (see `resolve`)."""
         real = self.check_file(path, field, kind=kind)
-        try:
-            return real, read_regular_file(real, kind=kind, field=field)
-        except WorkbenchError as exc:
-            # Name the path as the project gave it, not where its symlinks lead.
-            raise without_real_path(exc, real, path) from None
+        # Name the path as the project gave it, not where its symlinks lead.
+        shown = repr(shown_path(path))
+        return real, read_regular_file(real, kind=kind, field=field, shown=shown)
 
     def check_file(self, path: object, field: str, *, kind: str) -> Path:
         """Return the real path of `path` after checking it is a regular file within the limit.
@@ -238,7 +235,8 @@ class ProjectFolders:
             raise cls(message.format(where=field, shown=shown)) from None
         if not stat.S_ISREG(st.st_mode):
             raise InputError(
-                f"{field}: {shown} is not a regular file (a folder, device or pipe); give a file"
+                f"{shown} is not a regular file (a folder, device or pipe); give a file",
+                field=field,
             )
         if st.st_size > size_limit(kind):
             raise InputError(_too_big(f"{field} ({shown})", st.st_size, kind, size_limit(kind)))
@@ -253,11 +251,11 @@ class ProjectFolders:
         real = self.check_file(path, field, kind="urdf")
         data = read_regular_file(real, kind="urdf", field=field)
         if b"<!ENTITY" in data or b"<!DOCTYPE" in data:
-            raise InputError(f"{field}: the URDF declares a DOCTYPE or entities; remove them")
+            raise InputError("the URDF declares a DOCTYPE or entities; remove them", field=field)
         try:
             root = ET.fromstring(data)
         except ET.ParseError as exc:
-            raise InputError(f"{field}: the URDF is not valid XML ({exc})") from None
+            raise InputError(f"the URDF is not valid XML ({exc})", field=field) from None
         here = real.parent
         for i, mesh in enumerate(root.iter("mesh")):
             name = mesh.get("filename", "")

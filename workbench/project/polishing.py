@@ -284,4 +284,4 @@ def _validated(data: dict[str, Any]) -> PolishingSpec:
     except ValidationError as exc:
         where, msg = problems_from(exc)[0]
         where = "polishing" if where == "(top level)" else f"polishing.{where}"
-        raise InputError(f"{where}: {msg}") from None
+        raise InputError(f"{msg}", field=where) from None

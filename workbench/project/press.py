@@ -109,7 +109,7 @@ class PunchSpec(StrictModel):
                 self.profile_si()
             except InputError as exc:
                 raise ValueError(
-                    f"{str(exc).removeprefix('punch: ')}; make the punch taller or narrower, "
+                    f"{exc.detail}; make the punch taller or narrower, "
                     "its tip angle wider, or give its profile"
                 ) from None
         return self

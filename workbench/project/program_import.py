@@ -119,7 +119,7 @@ def _move_items(
         )
     for tgt in targets:
         if tgt.T_wobj_tcp is None:
-            raise InputError(f"{where}: a {mv.kind} move needs a Cartesian target")
+            raise InputError(f"a {mv.kind} move needs a Cartesian target", field=where)
         item = {"name": tgt.name, "type": "linear", "pose": _pose(T_world_wobj @ tgt.T_wobj_tcp)}
         item.update(speed=float(to_mm(mv.speed)), zone=zone)
         if wobj:

@@ -85,7 +85,7 @@ class BendingService(SectionService[BendingSpec]):
         try:
             return SheetMetalPart.from_spec(spec)
         except InputError as exc:
-            raise InputError(f"bending.part: {exc}") from None
+            raise exc.within("bending.part") from exc
 
     @property
     def sequence(self) -> list[str]:

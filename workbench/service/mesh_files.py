@@ -51,17 +51,18 @@ def load_mesh_file(
         return step
     if kind not in MESH_TYPES:
         raise MeshError(
-            f"{field}: {path!r} is not a mesh file ({', '.join(MESH_TYPES + STEP_TYPES)});"
-            " export it as STL or STEP"
+            f"{path!r} is not a mesh file ({', '.join(MESH_TYPES + STEP_TYPES)});"
+            " export it as STL or STEP",
+            field=field,
         )
     try:
         mesh = trimesh.load(io.BytesIO(data), file_type=kind, force="mesh")
     except Exception as exc:  # trimesh raises many types for broken files
-        raise MeshError(f"{field}: cannot read mesh {path!r}: {type(exc).__name__}") from None
+        raise MeshError(f"cannot read mesh {path!r}: {type(exc).__name__}", field=field) from None
     if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
-        raise MeshError(f"{field}: {path!r} holds no triangles; export it as STL, OBJ or PLY")
+        raise MeshError(f"{path!r} holds no triangles; export it as STL, OBJ or PLY", field=field)
     if not np.all(np.isfinite(mesh.vertices)):
-        raise MeshError(f"{field}: {path!r} has NaN or infinite vertex coordinates")
+        raise MeshError(f"{path!r} has NaN or infinite vertex coordinates", field=field)
     mesh = mesh.copy()
     mesh.apply_scale(scale)
     return mesh

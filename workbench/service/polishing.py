@@ -16,7 +16,7 @@ import numpy as np
 import trimesh
 from numpy.typing import NDArray
 
-from workbench.errors import InputError, MeshError, WorkbenchError
+from workbench.errors import InputError, WorkbenchError
 from workbench.polishing import (
     MESH_UNITS,
     PATTERNS,
@@ -36,7 +36,7 @@ from workbench.polishing.force_control import HybridForceParams
 from workbench.polishing.process_path import check_path_lengths, point_labels
 from workbench.polishing.program import RobotProgram, polishing_program
 from workbench.project.cad import step_tolerance
-from workbench.project.paths import without_real_path
+from workbench.project.paths import shown_path
 from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
@@ -99,11 +99,12 @@ class PolishingService(SectionService[PolishingSpec]):
         real = self._resolve(file)  # InputError naming polishing.workpiece if it leaves
         try:
             tol = step_tolerance(self.wb.project.cad)
-            fitted = fit_workpiece(real, u, self.T_world_workpiece, tol)  # type: ignore[arg-type]
+            fitted = fit_workpiece(real, u, self.T_world_workpiece, tol, shown_path(file))  # type: ignore[arg-type]
         except WorkbenchError as exc:
-            msg = str(without_real_path(exc, real, file))
-            units_off = isinstance(exc, MeshError) and "units" in msg and "1000x" in msg
-            raise type(exc)(f"polishing.{'units' if units_off else 'workpiece'}: {msg}") from None
+            # The loader names the units field; anything else is about the file.
+            raise exc.within(
+                "polishing" if exc.field == "units" else "polishing.workpiece"
+            ) from exc
         # Commit only what loaded: a bad file leaves the previous workpiece in place.
         if path is not None:
             spec.workpiece = str(path)
@@ -173,7 +174,7 @@ class PolishingService(SectionService[PolishingSpec]):
         try:
             check_path_lengths(mesh, step, spacing)
         except InputError as exc:
-            raise InputError(f"polishing.{exc}") from None
+            raise exc.within("polishing") from exc
 
     def params(self) -> HybridForceParams:
         """Return the controller gains and contact model of the section in SI.
@@ -211,7 +212,7 @@ class PolishingService(SectionService[PolishingSpec]):
                 progress=report,
             )
         except InputError as exc:
-            raise InputError(f"polishing: {exc}") from None
+            raise exc.within("polishing") from exc
         self.last_path = out
         self.last_motion = self.last_simulation = None
         report(1.0, "done")
@@ -292,7 +293,7 @@ class PolishingService(SectionService[PolishingSpec]):
         try:
             sim = simulate_process(pp, si.force, si.feed, si.dwell, si.control)
         except InputError as exc:
-            raise InputError(f"polishing: {exc}") from None
+            raise exc.within("polishing") from exc
         self.last_simulation = sim
         report(1.0, "done")
         return sim

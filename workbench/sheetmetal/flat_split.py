@@ -34,17 +34,17 @@ def _radii(pattern: FlatPattern, t: float, default: float | None, field: str) ->
         r = line.inner_radius if line.inner_radius is not None else default
         if r is None:
             raise FlatPatternError(
-                field,
                 f"{bend_label(i, line)} has no inner radius: write it in its bend note "
                 "('UP 90° R1.5') or give inner_radius (the import setting) for the bends "
                 "without one; the bend zones' width, and so every flange's size, depends on it",
+                field=field,
             )
         if not np.isfinite(r) or r < MIN_R_OVER_T * t - 1e-12:
             raise FlatPatternError(
-                field,
                 f"{bend_label(i, line)}: inner radius {r * 1e3:.4g} mm is below Table 1's "
                 f"minimum {MIN_R_OVER_T} x thickness = {MIN_R_OVER_T * t * 1e3:.4g} mm; "
                 "use a larger radius",
+                field=field,
             )
         radii.append(float(r))
     return radii
@@ -89,9 +89,9 @@ def split_flanges(
     """
     t = float(thickness)
     if not (np.isfinite(t) and t > 0):
-        raise FlatPatternError(field, f"thickness: must be > 0 m, got {thickness!r}")
+        raise FlatPatternError(f"thickness: must be > 0 m, got {thickness!r}", field=field)
     if k_factor is not None and not (np.isfinite(k_factor) and 0.0 <= k_factor <= 1.0):
-        raise FlatPatternError(field, f"k_factor: must be in [0, 1], got {k_factor!r}")
+        raise FlatPatternError(f"k_factor: must be in [0, 1], got {k_factor!r}", field=field)
     lines = pattern.bend_lines
     radii = _radii(pattern, t, inner_radius, field)
     ba = [
@@ -106,16 +106,16 @@ def split_flanges(
         for j in range(i + 1, len(zones)):
             if zones[i].intersection(zones[j]).area > TOUCH_TOL**2:
                 raise FlatPatternError(
-                    field,
                     f"the bend zones of {bend_label(i, lines[i])} and {bend_label(j, lines[j])} "
                     f"({ba[i] * 1e3:.3g} and {ba[j] * 1e3:.3g} mm wide) overlap; move the bend "
                     "lines apart or enlarge the relief between them",
+                    field=field,
                 )
     rings = _regions(pattern)
     if len(rings) != len(lines) + 1:
         raise FlatPatternError(
-            field,
             f"{len(lines)} bend lines cut the blank into {len(rings)} pieces, not {len(lines) + 1}",
+            field=field,
         )
     # sides[i] = (region on the bend line's left, region on its right)
     polys = [shapely.Polygon(r) for r in rings]
@@ -130,7 +130,9 @@ def split_flanges(
             k = int(np.argmin([p.distance(probe) for p in polys]))
             e = _bend_edge(rings[k], ln.start, ln.end)
             if e < 0:
-                raise FlatPatternError(field, f"{bend_label(i, ln)}: cannot find its bend edge")
+                raise FlatPatternError(
+                    f"{bend_label(i, ln)}: cannot find its bend edge", field=field
+                )
             edges[k][i] = e
             pair.append(k)
         sides.append(tuple(pair))
@@ -150,10 +152,10 @@ def split_flanges(
         if poly is None or not poly.is_valid or signed_area(moved) <= 0 or -1 in found.values():
             names = ", ".join(bend_label(i, lines[i]) for i in edges[k])
             raise FlatPatternError(
-                field,
                 f"cutting the bend zones of {names} out of the blank leaves no simple flange "
                 "between them: the outline must run across each bend zone (make corner reliefs "
                 "at least half a bend allowance deep, or the flange wider than its zones)",
+                field=field,
             )
         rings[k], edges[k] = moved, found
     return _spec(rings, edges, sides, lines, radii, t, k_factor)

@@ -240,6 +240,7 @@ def _check_intersections(part: SheetMetalPart, state: FoldedState) -> None:
                     else "in the flat blank"
                 )
                 raise InputError(
-                    f"bend sequence: flanges '{part.flanges[i].name}' and '{part.flanges[j].name}' "
-                    f"intersect {after}; change the sequence, angles or flange sizes"
+                    f"flanges '{part.flanges[i].name}' and '{part.flanges[j].name}' "
+                    f"intersect {after}; change the sequence, angles or flange sizes",
+                    field="bend sequence",
                 )

@@ -70,8 +70,9 @@ def _bend_edge(across: NDArray[np.int64], cylinder: int, flange: str, where: str
     hits = np.flatnonzero(across == cylinder)
     if len(hits) != 1:
         raise MeshError(
-            f"{where}: flange {flange} meets bend face {cylinder} along {len(hits)} edges of "
-            "its outline; a bend edge must be one straight edge"
+            f"flange {flange} meets bend face {cylinder} along {len(hits)} edges of "
+            "its outline; a bend edge must be one straight edge",
+            field=where,
         )
     return int(hits[0])
 
@@ -105,8 +106,9 @@ def _joins(
         )
         if len(touched) != 2:
             raise MeshError(
-                f"{where}: bend faces {b.inner} and {b.outer} join {len(touched)} flange(s) "
-                f"{touched}; a bend joins two flanges"
+                f"bend faces {b.inner} and {b.outer} join {len(touched)} flange(s) "
+                f"{touched}; a bend joins two flanges",
+                field=where,
             )
         joined.append(touched)
     return joined
@@ -156,7 +158,9 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
         areas = [brep.faces[f.first - 1].area for f in sf.flanges]
         base = names[int(np.argmax(np.round(np.asarray(areas) / TOL**2)))]
     elif base not in names:
-        raise InputError(f"base: no flange {base!r}; the part's flanges are {', '.join(names)}")
+        raise InputError(
+            f"no flange {base!r}; the part's flanges are {', '.join(names)}", field="base"
+        )
     near = [b for b, j in zip(sf.bends, joined, strict=True) if base in j]
     top = {base: _base_top(brep, faces_of[base], [b.inner for b in near], [b.outer for b in near])}
     T, pts, across = _base_polygon(brep, top[base], t)
@@ -171,8 +175,9 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
             child = next(n for n in joined[k] if n != parent)
             if child in top:
                 raise MeshError(
-                    f"{where}: bend faces {b.inner} and {b.outer} close a ring of bends "
-                    f"(flange {child} is reached twice): the part cannot be unfolded flat"
+                    f"bend faces {b.inner} and {b.outer} close a ring of bends "
+                    f"(flange {child} is reached twice): the part cannot be unfolded flat",
+                    field=where,
                 )
             up = b.inner in brep.faces[top[parent] - 1].neighbours
             cyl = b.inner if up else b.outer
@@ -182,9 +187,10 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
             between = float(np.arccos(np.clip(np.dot(zp, zc), -1.0, 1.0)))  # type: ignore[arg-type]
             if abs(between - b.span) > ANGLE_TOL:
                 raise MeshError(
-                    f"{where}: bend faces {b.inner} and {b.outer} span "
+                    f"bend faces {b.inner} and {b.outer} span "
                     f"{np.degrees(b.span):.4g} deg, but flanges {parent} and {child} are "
-                    f"{np.degrees(between):.4g} deg apart"
+                    f"{np.degrees(between):.4g} deg apart",
+                    field=where,
                 )
             bends.append(
                 {
@@ -201,7 +207,7 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
             frontier.append(child)
     missing = [n for n in names if n not in top]
     if missing:
-        raise MeshError(f"{where}: flanges {missing} are not joined to {base} by bends")
+        raise MeshError(f"flanges {missing} are not joined to {base} by bends", field=where)
     spec = {
         "thickness": t,
         "k_factor": None,

@@ -78,13 +78,14 @@ def outline(face: BrepFace, axes: NDArray[np.float64]) -> shapely.Polygon:
 def _check_surfaces(brep: SheetBrep, where: str) -> None:
     if brep.solids != 1:
         raise MeshError(
-            f"{where}: the file holds {brep.solids} solids; a sheet-metal part is one solid"
+            f"the file holds {brep.solids} solids; a sheet-metal part is one solid", field=where
         )
     for f in brep.faces:
         if f.kind not in ("plane", "cylinder"):
             raise MeshError(
-                f"{where}: face {f.index} is a {f.kind}: a sheet-metal part has only planar "
-                "and cylindrical faces (flanges and bends)"
+                f"face {f.index} is a {f.kind}: a sheet-metal part has only planar "
+                "and cylindrical faces (flanges and bends)",
+                field=where,
             )
 
 
@@ -118,16 +119,18 @@ def _pair_bends(brep: SheetBrep, where: str) -> list[BendFaces]:
         if c.convex or not partners:
             side = "r - t, inside it" if c.convex else "r + t, outside it"
             raise MeshError(
-                f"{where}: cylinder face {c.index} (radius {_mm(c.radius)}, "
+                f"cylinder face {c.index} (radius {_mm(c.radius)}, "
                 f"{'convex' if c.convex else 'concave'}) has no coaxial partner at {side}: "
                 "a bend has an inner and an outer cylinder face, one thickness apart; a fillet "
-                "or a rounded edge is not sheet metal"
+                "or a rounded edge is not sheet metal",
+                field=where,
             )
         o = min(partners, key=lambda f: f.radius)
         if not o.convex:
             raise MeshError(
-                f"{where}: cylinder faces {c.index} and {o.index} are both concave: "
-                "a bend's outer face is convex"
+                f"cylinder faces {c.index} and {o.index} are both concave: "
+                "a bend's outer face is convex",
+                field=where,
             )
         used |= {c.index, o.index}
         bends.append(BendFaces(c.index, o.index, c.radius, c.span))
@@ -174,8 +177,9 @@ def _check_outlines(brep: SheetBrep, a: int, b: int, where: str) -> None:
     gap = pa.symmetric_difference(pb).area
     if gap > TOL * max(pa.length, pb.length):
         raise MeshError(
-            f"{where}: faces {a} and {b} (a flange's two sides) have outlines differing by "
-            f"{gap * 1e6:.4g} mm²: a flange's edges must be square to the sheet"
+            f"faces {a} and {b} (a flange's two sides) have outlines differing by "
+            f"{gap * 1e6:.4g} mm²: a flange's edges must be square to the sheet",
+            field=where,
         )
 
 
@@ -187,15 +191,17 @@ def _check_side_face(brep: SheetBrep, f: BrepFace, flange_faces: set[int], where
             assert g.axis is not None
             if 1 - abs(float(np.dot(f.normal, g.axis))) > SQUARE:
                 raise MeshError(
-                    f"{where}: face {f.index} meets bend face {n} off its axis: a sheet-metal "
-                    "part's side faces are square to the sheet"
+                    f"face {f.index} meets bend face {n} off its axis: a sheet-metal "
+                    "part's side faces are square to the sheet",
+                    field=where,
                 )
         elif n in flange_faces:
             assert g.normal is not None
             if abs(float(np.dot(f.normal, g.normal))) > SQUARE:
                 raise MeshError(
-                    f"{where}: face {f.index} has no parallel partner one thickness away and "
-                    f"is not square to flange face {n}: it is neither a flange nor a side face"
+                    f"face {f.index} has no parallel partner one thickness away and "
+                    f"is not square to flange face {n}: it is neither a flange nor a side face",
+                    field=where,
                 )
 
 
@@ -206,8 +212,9 @@ def sheet_faces(brep: SheetBrep, where: str) -> SheetFaces:
     bends = _pair_bends(brep, where)
     if not bends:
         raise MeshError(
-            f"{where}: no bends found (no pair of coaxial cylinder faces r and r + t): this is "
-            "a solid block or a flat plate, not a bent sheet-metal part"
+            "no bends found (no pair of coaxial cylinder faces r and r + t): this is "
+            "a solid block or a flat plate, not a bent sheet-metal part",
+            field=where,
         )
     pairs = _pair_flanges(brep)
     flanges = sorted(
@@ -219,7 +226,7 @@ def sheet_faces(brep: SheetBrep, where: str) -> SheetFaces:
         key=lambda f: f.first,
     )
     if not flanges:
-        raise MeshError(f"{where}: no flange found (two parallel planar faces t apart)")
+        raise MeshError("no flange found (two parallel planar faces t apart)", field=where)
     b0 = bends[0]
     t = brep.faces[b0.outer - 1].radius - b0.radius
     ref = f"bend faces {b0.inner} and {b0.outer}"
@@ -227,15 +234,17 @@ def sheet_faces(brep: SheetBrep, where: str) -> SheetFaces:
         d = brep.faces[b.outer - 1].radius - b.radius
         if abs(d - t) > TOL:
             raise MeshError(
-                f"{where}: bend faces {b.inner} and {b.outer}: thickness {_mm(d)} here, "
-                f"{_mm(t)} elsewhere ({ref}); a sheet-metal part has one thickness"
+                f"bend faces {b.inner} and {b.outer}: thickness {_mm(d)} here, "
+                f"{_mm(t)} elsewhere ({ref}); a sheet-metal part has one thickness",
+                field=where,
             )
     for f in flanges:
         d = pairs[f.first][1]
         if abs(d - t) > TOL:
             raise MeshError(
-                f"{where}: faces {f.first} and {f.second}: thickness {_mm(d)} here, "
-                f"{_mm(t)} elsewhere ({ref}); a sheet-metal part has one thickness"
+                f"faces {f.first} and {f.second}: thickness {_mm(d)} here, "
+                f"{_mm(t)} elsewhere ({ref}); a sheet-metal part has one thickness",
+                field=where,
             )
         _check_outlines(brep, f.first, f.second, where)
     on_flange = {i for f in flanges for i in (f.first, f.second)}

@@ -120,7 +120,7 @@ def parse_config(text: str, where: str) -> tuple[ArmConfiguration, tuple[int, in
         r"\s*([NF])\s*([UD])\s*([TB])\s*(?:,\s*(-?\d+)\s*,\s*(-?\d+)\s*,\s*(-?\d+))?\s*", text, re.I
     )
     if not m:
-        raise InputError(f"{where}: CONFIG {text!r} is not 'N|F U|D T|B, t1, t4, t6'")
+        raise InputError(f"CONFIG {text!r} is not 'N|F U|D T|B, t1, t4, t6'", field=where)
     f, u, t = (g.upper() for g in m.groups()[:3])
     turns = tuple(int(g) if g is not None else 0 for g in m.groups()[3:])
     return ArmConfiguration(front=t == "T", elbow_up=u == "U", wrist_flip=f == "F"), turns  # type: ignore[return-value]
@@ -146,7 +146,7 @@ def _num(s: str, where: str) -> float:
     try:
         return float(s)
     except ValueError as exc:
-        raise InputError(f"{where}: {s!r} is not a number") from exc
+        raise InputError(f"{s!r} is not a number", field=where) from exc
 
 
 def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
@@ -172,11 +172,11 @@ def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
         body = " ".join(block)
         where = f"line {no} (P[{m.group(1)}])"
         if re.search(r"\bGP[2-9]\s*:", body) or re.search(r"\bE\d\s*=", body):
-            raise InputError(f"{where}: extra motion groups and axes are not supported")
+            raise InputError("extra motion groups and axes are not supported", field=where)
         uf = re.search(r"UF\s*:\s*(\d+)", body)
         ut = re.search(r"UT\s*:\s*(\d+)", body)
         if not uf or not ut:
-            raise InputError(f"{where}: the position needs 'UF : m, UT : n'")
+            raise InputError("the position needs 'UF : m, UT : n'", field=where)
         pos = _Position(
             no, (m.group(2) or "").strip() or f"P{m.group(1)}", int(uf.group(1)), int(ut.group(1))
         )
@@ -186,17 +186,19 @@ def _positions(lines: list[tuple[int, str]]) -> dict[int, _Position]:
         if joints:
             n = len(joints)
             if sorted(joints) != [str(i) for i in range(1, n + 1)]:
-                raise InputError(f"{where}: joint position needs J1..J{n}, got {sorted(joints)}")
+                raise InputError(
+                    f"joint position needs J1..J{n}, got {sorted(joints)}", field=where
+                )
             pos.joints = np.array([_num(joints[str(i)], where) for i in range(1, n + 1)])
         elif len(cart) == 6:
             pos.xyzwpr = np.array([_num(cart[c], where) for c in "XYZWPR"])
             if not cfg:
                 raise InputError(
-                    f"{where}: a Cartesian position needs CONFIG : 'F U T, t1, t4, t6'"
+                    "a Cartesian position needs CONFIG : 'F U T, t1, t4, t6'", field=where
                 )
             pos.config = cfg.group(1)
         else:
-            raise InputError(f"{where}: expected J1..J6 [deg] or X, Y, Z [mm], W, P, R [deg]")
+            raise InputError("expected J1..J6 [deg] or X, Y, Z [mm], W, P, R [deg]", field=where)
         out[int(m.group(1))] = pos
     return out
 
@@ -348,12 +350,14 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         elif hit == "pr_elem":
             k, j = int(g[0]), int(g[1])
             if not 1 <= j <= 6:
-                raise InputError(f"{where}: PR[{k},{j}]: a Cartesian element is 1..6 (X Y Z W P R)")
+                raise InputError(
+                    f"PR[{k},{j}]: a Cartesian element is 1..6 (X Y Z W P R)", field=where
+                )
             st.pr.setdefault(k, np.zeros(6))[j - 1] = _num(g[2], where)
         elif hit == "frame":
             k = int(g[2])
             if k not in st.pr:
-                raise InputError(f"{where}: PR[{k}] is used before the program sets it")
+                raise InputError(f"PR[{k}] is used before the program sets it", field=where)
             (st.tool_values if g[0].upper() == "UTOOL" else st.frame_values)[int(g[1])] = st.pr[
                 k
             ].copy()

@@ -99,7 +99,7 @@ def nearest_ik(
     try:
         sols = np.asarray(model.ik(T_base_flange, q_near=q_near), float)
     except UnreachableError as exc:
-        raise UnreachableError(f"{where}: {exc}") from None
+        raise exc.within(where) from exc
     if len(sols) == 0:
         raise UnreachableError(f"{where}: no IK solution within the joint limits")
     return np.asarray(sols[0], float)

@@ -147,7 +147,7 @@ def _aggregate(text: str, where: str) -> tuple[str | None, dict[str, object]]:
     """Return (type prefix or None, {COMPONENT: value}) of a KRL aggregate '{[TYPE:] K v, ...}'."""
     t = text.strip()
     if not (t.startswith("{") and t.endswith("}")):
-        raise InputError(f"{where}: expected an aggregate {{...}}, got {text!r}")
+        raise InputError(f"expected an aggregate {{...}}, got {text!r}", field=where)
     inner = t[1:-1].strip()
     kind = None
     m = re.match(rf"^({_NAME})\s*:\s*", inner)
@@ -158,7 +158,7 @@ def _aggregate(text: str, where: str) -> tuple[str | None, dict[str, object]]:
         m = re.match(rf"^({_NAME})\s+(.+)$", part, re.S)
         if not m:
             raise InputError(
-                f"{where}: cannot read the aggregate component {part!r}; write it as NAME value"
+                f"cannot read the aggregate component {part!r}; write it as NAME value", field=where
             )
         out[m.group(1).upper()] = _value(m.group(2), where)
     return kind, out
@@ -167,7 +167,7 @@ def _aggregate(text: str, where: str) -> tuple[str | None, dict[str, object]]:
 def _float(agg: dict[str, object], key: str, where: str) -> float:
     v = agg.get(key)
     if not isinstance(v, float) or not np.isfinite(v):
-        raise InputError(f"{where}: component {key} must be a finite number, got {v!r}")
+        raise InputError(f"component {key} must be a finite number, got {v!r}", field=where)
     return v
 
 
@@ -175,7 +175,9 @@ def _frame(agg: dict[str, object], where: str) -> np.ndarray:
     """Return the 4x4 [m] of a FRAME/POS aggregate (mm; A, B, C deg: R = Rz(A) Ry(B) Rx(C))."""
     missing = [k for k in _FRAME_KEYS if k not in agg]
     if missing:
-        raise InputError(f"{where}: the frame lacks {', '.join(missing)}; give X, Y, Z, A, B, C")
+        raise InputError(
+            f"the frame lacks {', '.join(missing)}; give X, Y, Z, A, B, C", field=where
+        )
     x, y, z, a, b, c = (_float(agg, k, where) for k in _FRAME_KEYS)
     R = rpy_to_matrix(np.radians([c, b, a]))
     return make_transform(R, np.array([x, y, z]) / 1000.0)
@@ -491,7 +493,7 @@ class _Reader:
             kind, agg = _aggregate(expr, where)
             return self._make_target(f"line{n}", kind, agg, where, st, joint_ok)
         if not re.fullmatch(_NAME, expr):
-            raise InputError(f"{where}: cannot read the move's target {expr!r}")
+            raise InputError(f"cannot read the move's target {expr!r}", field=where)
         var = self.vars.get(expr.lower())
         if var is None or var.value is None:
             if self.dat_name is None:
@@ -515,7 +517,7 @@ class _Reader:
         if is_axis:
             if not joint_ok:
                 raise InputError(
-                    f"{where}: a LIN/CIRC target must be a pose (X, Y, Z, A, B, C), not axes"
+                    "a LIN/CIRC target must be a pose (X, Y, Z, A, B, C), not axes", field=where
                 )
             vals = []
             for k, a in enumerate(_AXES):
@@ -525,7 +527,8 @@ class _Reader:
                     vals.append(float(st.last_joints[k]))
                 else:
                     raise InputError(
-                        f"{where}: the joint target lacks {a} and no earlier joint target gives it"
+                        f"the joint target lacks {a} and no earlier joint target gives it",
+                        field=where,
                     )
             q = np.array(vals)
             st.last_joints = q
@@ -564,7 +567,7 @@ class _Reader:
             parts = _split_top(rest)
             if len(parts) != 2:
                 raise InputError(
-                    f"{where}: CIRC needs an auxiliary point and an end point: CIRC aux, end"
+                    "CIRC needs an auxiliary point and an end point: CIRC aux, end", field=where
                 )
             via = self._target(parts[0], n, where, st, joint_ok=False)
             target = self._target(parts[1], n, where, st, joint_ok=False)

@@ -294,32 +294,39 @@ def check_program(program: RobotProgram, *, needs_mass: bool = False) -> None:
                 continue
             q = np.asarray(tgt.q, float)
             if q.shape != (program.dof,) or not np.all(np.isfinite(q)):
-                raise InputError(f"{where}: target {tgt.name!r} needs {program.dof} finite joints")
+                raise InputError(
+                    f"target {tgt.name!r} needs {program.dof} finite joints", field=where
+                )
             if tgt.T_wobj_tcp is not None and tgt.configuration is None:
-                raise InputError(f"{where}: Cartesian target {tgt.name!r} has no arm configuration")
+                raise InputError(
+                    f"Cartesian target {tgt.name!r} has no arm configuration", field=where
+                )
         if mv.kind == "circular" and (
             mv.via is None or not mv.via.cartesian or not mv.target.cartesian
         ):
-            raise InputError(f"{where}: a circular move needs Cartesian via and end targets")
+            raise InputError("a circular move needs Cartesian via and end targets", field=where)
         if mv.kind != "joint" and not mv.target.cartesian:
-            raise InputError(f"{where}: a {mv.kind} move needs a Cartesian target")
+            raise InputError(f"a {mv.kind} move needs a Cartesian target", field=where)
         if not np.isfinite(mv.speed) or mv.speed <= 0:
-            raise InputError(f"{where}: speed {mv.speed!r} must be positive and finite")
+            raise InputError(f"speed {mv.speed!r} must be positive and finite", field=where)
         if mv.kind == "joint" and mv.speed > 1.0 + 1e-12:
             raise InputError(
-                f"{where}: joint speed {mv.speed * 100:g} % is over 100 % of the joints' maximum"
+                f"joint speed {mv.speed * 100:g} % is over 100 % of the joints' maximum",
+                field=where,
             )
         if mv.kind != "joint" and mv.speed > lim.max_tcp_speed:
             raise InputError(
-                f"{where}: TCP speed {mv.speed * 1000:g} mm/s is over the robot's"
-                f" {lim.max_tcp_speed * 1000:g} mm/s; lower the move's speed"
+                f"TCP speed {mv.speed * 1000:g} mm/s is over the robot's"
+                f" {lim.max_tcp_speed * 1000:g} mm/s; lower the move's speed",
+                field=where,
             )
         if not np.isfinite(mv.zone) or not 0.0 <= mv.zone <= lim.max_zone:
             raise InputError(
-                f"{where}: zone {mv.zone * 1000:g} mm must be within [0, {lim.max_zone * 1000:g}] mm"
+                f"zone {mv.zone * 1000:g} mm must be within [0, {lim.max_zone * 1000:g}] mm",
+                field=where,
             )
         if not np.isfinite(mv.duration) or mv.duration < 0.0:
-            raise InputError(f"{where}: planned duration {mv.duration!r} s must be >= 0")
+            raise InputError(f"planned duration {mv.duration!r} s must be >= 0", field=where)
     if needs_mass:
         for name in sorted(used_tools):
             t = program.tool(name)

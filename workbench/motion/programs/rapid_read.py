@@ -160,7 +160,7 @@ def _strip_comment(line: str, where: str) -> str:
             break
         out.append(ch)
     if in_str:
-        raise InputError(f"{where}: unterminated string; close it with '\"'")
+        raise InputError("unterminated string; close it with '\"'", field=where)
     return "".join(out)
 
 
@@ -243,7 +243,7 @@ def _tokens(text: str, where: str) -> list[tuple[str, str]]:
             if depth < 0:
                 break
     if depth != 0:
-        raise InputError(f"{where}: unbalanced brackets in {text.strip()[:60]!r}")
+        raise InputError(f"unbalanced brackets in {text.strip()[:60]!r}", field=where)
     return out
 
 
@@ -367,8 +367,9 @@ def _quat_matrix(q, where: str) -> np.ndarray:  # noqa: ANN001
     n = float(np.linalg.norm(qv))
     if not abs(n - 1.0) < 1e-3:
         raise InputError(
-            f"{where}: the quaternion {qv.tolist()} has norm {n:.6f}; RAPID needs a unit"
-            " quaternion [q1,q2,q3,q4] (q1^2+q2^2+q3^2+q4^2 = 1)"
+            f"the quaternion {qv.tolist()} has norm {n:.6f}; RAPID needs a unit"
+            " quaternion [q1,q2,q3,q4] (q1^2+q2^2+q3^2+q4^2 = 1)",
+            field=where,
         )
     return np.asarray(wxyz_to_matrix(qv / n), float)
 
@@ -379,7 +380,7 @@ def _numbers(v, n: int, what: str, where: str) -> list[float]:  # noqa: ANN001
         or len(v) != n
         or not all(_is_num(x) and math.isfinite(x) for x in v)
     ):
-        raise InputError(f"{where}: {what} needs {n} finite numbers, got {_show(v)}")
+        raise InputError(f"{what} needs {n} finite numbers, got {_show(v)}", field=where)
     return [float(x) for x in v]
 
 
@@ -398,7 +399,7 @@ def _show(v) -> str:  # noqa: ANN001
 def _pose(v, what: str, where: str) -> np.ndarray:  # noqa: ANN001
     """Return the (4, 4) [m] of a RAPID pose [[x,y,z] mm,[q1..q4]]."""
     if not isinstance(v, list) or len(v) != 2:
-        raise InputError(f"{where}: {what} needs [[x,y,z],[q1,q2,q3,q4]], got {_show(v)}")
+        raise InputError(f"{what} needs [[x,y,z],[q1,q2,q3,q4]], got {_show(v)}", field=where)
     xyz = _numbers(v[0], 3, f"{what} position [x,y,z]", where)
     q = _numbers(v[1], 4, f"{what} quaternion [q1,q2,q3,q4]", where)
     return make_transform(_quat_matrix(q, where), np.array(xyz) / 1000.0)
@@ -408,12 +409,12 @@ def _robtarget(v, where: str) -> tuple[np.ndarray, list[float]]:  # noqa: ANN001
     """Return (T_wobj_tcp (4, 4) [m], confdata) of a robtarget value."""
     shape = "[[x,y,z],[q1,q2,q3,q4],[cf1,cf4,cf6,cfx],[eax_a,...,eax_f]]"
     if not isinstance(v, list) or len(v) != 4:
-        raise InputError(f"{where}: a robtarget is {shape}, got {_show(v)}")
+        raise InputError(f"a robtarget is {shape}, got {_show(v)}", field=where)
     T = _pose(v[:2], "the robtarget", where)
     conf = _numbers(v[2], 4, "confdata [cf1,cf4,cf6,cfx]", where)
     _numbers(v[3], 6, "the external axes", where)
     if any(c != int(c) for c in conf) or int(conf[3]) not in CFX_TABLE:
-        raise InputError(f"{where}: confdata {conf} must be integers with cfx in 0..7")
+        raise InputError(f"confdata {conf} must be integers with cfx in 0..7", field=where)
     return T, conf
 
 
@@ -430,7 +431,7 @@ def _read_target(name: str, v, where: str) -> ReadTarget:  # noqa: ANN001
 def _joint_target(name: str, v, where: str) -> ReadTarget:  # noqa: ANN001
     if not isinstance(v, list) or len(v) != 2:
         raise InputError(
-            f"{where}: a jointtarget is [[j1,...,j6],[eax_a,...,eax_f]], got {_show(v)}"
+            f"a jointtarget is [[j1,...,j6],[eax_a,...,eax_f]], got {_show(v)}", field=where
         )
     j = _numbers(v[0], DOF, "robax [j1..j6] [deg]", where)
     _numbers(v[1], 6, "the external axes", where)
@@ -558,7 +559,9 @@ class _Reader:
         where = self.where
         if dtype == "tooldata" and value is not None:
             if not (isinstance(value, list) and len(value) == 3 and isinstance(value[2], list)):
-                raise InputError(f"{where}: tooldata is [robhold,[[x,y,z],[q]],[mass,[cog],...]]")
+                raise InputError(
+                    "tooldata is [robhold,[[x,y,z],[q]],[mass,[cog],...]]", field=where
+                )
             if value[0] is not True:
                 self.notes.append(
                     f"line {stmt.line}: tooldata {name} is a stationary tool (robhold FALSE)"
@@ -567,13 +570,17 @@ class _Reader:
             T = _pose(value[1], f"tooldata {name} tframe", where)
             load = value[2]
             if len(load) != 6:
-                raise InputError(f"{where}: tooldata {name} tload is [mass,[cog],[aom],ix,iy,iz]")
+                raise InputError(
+                    f"tooldata {name} tload is [mass,[cog],[aom],ix,iy,iz]", field=where
+                )
             mass = _numbers([load[0]], 1, "tload mass [kg]", where)[0]
             cog = np.array(_numbers(load[1], 3, "tload cog [x,y,z] [mm]", where)) / 1000.0
             self.tools[name.lower()] = ToolData(name, T, mass=mass, cog=cog)
         elif dtype == "wobjdata" and value is not None:
             if not (isinstance(value, list) and len(value) == 5):
-                raise InputError(f"{where}: wobjdata is [robhold,ufprog,ufmec,[uframe],[oframe]]")
+                raise InputError(
+                    "wobjdata is [robhold,ufprog,ufmec,[uframe],[oframe]]", field=where
+                )
             if value[0] is not False or value[2] not in ("",):
                 self.notes.append(
                     f"line {stmt.line}: wobjdata {name} is held by the robot or moved by a"

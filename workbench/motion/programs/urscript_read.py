@@ -67,14 +67,14 @@ def _split_args(s: str, where: str) -> list[str]:
         elif ch in ")]":
             depth -= 1
             if depth < 0:
-                raise InputError(f"{where}: unbalanced brackets in {s!r}")
+                raise InputError(f"unbalanced brackets in {s!r}", field=where)
         if ch == "," and depth == 0:
             out.append(cur.strip())
             cur = ""
         else:
             cur += ch
     if depth != 0:
-        raise InputError(f"{where}: unbalanced brackets in {s!r}")
+        raise InputError(f"unbalanced brackets in {s!r}", field=where)
     if cur.strip():
         out.append(cur.strip())
     return out
@@ -98,17 +98,17 @@ def _args(inner: str, where: str) -> tuple[list[str], dict[str, str]]:
 
 def _num(s: str, where: str) -> float:
     if not _NUMBER.match(s.strip()):
-        raise InputError(f"{where}: {s!r} is not a number")
+        raise InputError(f"{s!r} is not a number", field=where)
     return float(s)
 
 
 def _vector(s: str, where: str, n: int | None = None) -> np.ndarray:
     m = re.fullmatch(r"\[(.*)\]", s.strip())
     if not m:
-        raise InputError(f"{where}: expected a list [..], got {s!r}")
+        raise InputError(f"expected a list [..], got {s!r}", field=where)
     v = np.array([_num(x, where) for x in _split_args(m.group(1), where)])
     if n is not None and v.shape != (n,):
-        raise InputError(f"{where}: expected {n} numbers, got {len(v)}")
+        raise InputError(f"expected {n} numbers, got {len(v)}", field=where)
     return v
 
 
@@ -146,18 +146,22 @@ class _Reader:
         if c and c[0] == "pose_trans":
             a, _ = _args(c[1], where)
             if len(a) != 2:
-                raise InputError(f"{where}: pose_trans needs two poses, got {s!r}")
+                raise InputError(f"pose_trans needs two poses, got {s!r}", field=where)
             frame = a[0].strip()
             if frame not in self.poses:
-                raise InputError(f"{where}: pose_trans of {frame!r}, which is not a pose variable")
+                raise InputError(
+                    f"pose_trans of {frame!r}, which is not a pose variable", field=where
+                )
             self.wobjs[frame] = WorkObject(frame, self.poses[frame])
             T = self.literal_pose(a[1], where)
             if T is None:
                 if a[1].strip() not in self.poses:
-                    raise InputError(f"{where}: {a[1]!r} is not a pose p[..] or a pose variable")
+                    raise InputError(
+                        f"{a[1]!r} is not a pose p[..] or a pose variable", field=where
+                    )
                 T = self.poses[a[1].strip()]
             return frame, T
-        raise InputError(f"{where}: {s!r} is not a pose (p[..], a pose variable or pose_trans)")
+        raise InputError(f"{s!r} is not a pose (p[..], a pose variable or pose_trans)", field=where)
 
     def base(self) -> str:
         name = "base"
@@ -203,7 +207,7 @@ class _Reader:
         default = f"target_{no}"
         if fn == "movej":
             if len(pos) != 1:
-                raise InputError(f"{where}: movej needs one target, got {inner!r}")
+                raise InputError(f"movej needs one target, got {inner!r}", field=where)
             tgt, wobj = self.joint_target(pos[0], name or default, where)
             if tgt.T_wobj_tcp is None and self.frame in self.poses:
                 wobj = self.frame
@@ -216,7 +220,7 @@ class _Reader:
             return
         if fn == "movel":
             if len(pos) != 1:
-                raise InputError(f"{where}: movel needs one target, got {inner!r}")
+                raise InputError(f"movel needs one target, got {inner!r}", field=where)
             wobj, T = self.pose(pos[0], where)
             tgt = self.cart_target(name or default, T, q_c, where)
             self.items.append(
@@ -226,7 +230,7 @@ class _Reader:
             )
             return
         if len(pos) != 2:
-            raise InputError(f"{where}: movec needs a via and an end pose, got {inner!r}")
+            raise InputError(f"movec needs a via and an end pose, got {inner!r}", field=where)
         wv, Tv = self.pose(pos[0], where)
         wobj, T = self.pose(pos[1], where)
         if wv != wobj:
@@ -263,7 +267,7 @@ class _Reader:
             a, kw = _args(c[1], where)
             qn = kw.get("qnear", a[1] if len(a) > 1 else None)
             if not a or qn is None:
-                raise InputError(f"{where}: get_inverse_kin needs a pose and qnear=[..]")
+                raise InputError("get_inverse_kin needs a pose and qnear=[..]", field=where)
             wobj, T = self.pose(a[0], where)
             q = self.qvars.get(qn.strip()) if qn.strip() in self.qvars else _vector(qn, where)
             return ReadTarget(name, joints=q, T_wobj_tcp=T), wobj
@@ -276,7 +280,7 @@ class _Reader:
         a, _ = _args(inner, where)
         if not m or len(a) != 2 or a[1] not in ("True", "False"):
             raise InputError(
-                f"{where}: expected set_standard_digital_out(n, True|False), got {fn}({inner})"
+                f"expected set_standard_digital_out(n, True|False), got {fn}({inner})", field=where
             )
         n = int(_num(a[0], where)) + (STANDARD_IO if m.group(1) == "configurable" else 0)
         self.items.append(SetOutput(Signal(f"DO{n}", n), a[1] == "True"))
@@ -443,7 +447,9 @@ def _set_tcp(rd: _Reader, arg: str, where: str) -> None:
     else:
         T = rd.literal_pose(arg, where)
         if T is None:
-            raise InputError(f"{where}: set_tcp needs a pose p[..] or a pose variable, got {arg!r}")
+            raise InputError(
+                f"set_tcp needs a pose p[..] or a pose variable, got {arg!r}", field=where
+            )
         rd.literal_tcps += 1
         name = f"tcp_{rd.literal_tcps}"
     old = rd.tools.get(name)
@@ -454,7 +460,7 @@ def _set_tcp(rd: _Reader, arg: str, where: str) -> None:
 def _set_payload(rd: _Reader, inner: str, where: str) -> None:
     a, kw = _args(inner, where)
     if not a or rd.tool is None:
-        raise InputError(f"{where}: set_payload(mass, cog) needs a mass and a set_tcp before it")
+        raise InputError("set_payload(mass, cog) needs a mass and a set_tcp before it", field=where)
     mass = _num(a[0], where)
     cog = _vector(a[1] if len(a) > 1 else kw.get("cog", "[0, 0, 0]"), where, 3)
     t = rd.tools[rd.tool]
