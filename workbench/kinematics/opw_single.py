@@ -52,26 +52,13 @@ def solve_single(
         sg23,
         Py,
     ) = g.scalar_constants
-    atan2, hypot, sqrt, pi = math.atan2, math.hypot, math.sqrt, math.pi
+    atan2, sqrt, pi = math.atan2, math.sqrt, math.pi
     G00, G01, G02 = r00, r10, r20
     G20, G21, G22 = sa6 * r01 + ca6 * r02, sa6 * r11 + ca6 * r12, sa6 * r21 + ca6 * r22
     x = px - r01 * w1 - r02 * w2
     y = py - r11 * w1 - r12 * w2
     z = pz - r21 * w1 - r22 * w2
-    rho = hypot(x, y)
-    if rho > 0.0:
-        cpsi, spsi = x / rho, y / rho
-        sb = min(1.0, max(-1.0, k / rho))
-    else:
-        cpsi, spsi, sb = 1.0, 0.0, 0.0
-    cb = sqrt(1.0 - sb * sb)
-    psi, beta = atan2(y, x), math.asin(sb)
-    shoulders = [
-        (psi - beta, cpsi * cb + spsi * sb, spsi * cb - cpsi * sb, rho * cb - a1),
-        (psi - pi + beta, spsi * sb - cpsi * cb, -(spsi * cb + cpsi * sb), -rho * cb - a1),
-    ]
-    if distinct and cb < _COINCIDE:
-        del shoulders[1]
+    shoulders = _shoulders(x, y, k, a1, distinct)
     py1 = sig1 * (z - d1)
     G = (G00, G01, G02, G20, G21, G22)
     wc = (e2, sig1, sig4, sig5, ss4, sg23)
@@ -98,6 +85,29 @@ def solve_single(
             out.append((t1, t2, t3, t4, t5, t6, err))
             out.append((t1, t2, t3, t4 + pi, -t5, t6 + pi, err))
     return out
+
+
+def _shoulders(
+    x: float, y: float, k: float, a1: float, distinct: bool
+) -> list[tuple[float, float, float, float]]:
+    """Return the shoulder branches (t1 [rad], cos t1, sin t1, px1 [m]) of the wrist centre
+    (x, y) [m] (front, back; with `distinct`, back only where it differs from front)."""
+    atan2, hypot, sqrt, pi = math.atan2, math.hypot, math.sqrt, math.pi
+    rho = hypot(x, y)
+    if rho > 0.0:
+        cpsi, spsi = x / rho, y / rho
+        sb = min(1.0, max(-1.0, k / rho))
+    else:
+        cpsi, spsi, sb = 1.0, 0.0, 0.0
+    cb = sqrt(1.0 - sb * sb)
+    psi, beta = atan2(y, x), math.asin(sb)
+    shoulders = [
+        (psi - beta, cpsi * cb + spsi * sb, spsi * cb - cpsi * sb, rho * cb - a1),
+        (psi - pi + beta, spsi * sb - cpsi * cb, -(spsi * cb + cpsi * sb), -rho * cb - a1),
+    ]
+    if distinct and cb < _COINCIDE:
+        del shoulders[1]
+    return shoulders
 
 
 Six = tuple[float, float, float, float, float, float]
