@@ -19,6 +19,7 @@ import trimesh
 from workbench.geometry.distance import point_triangle_distance2
 from workbench.geometry.lbvh import LBVH
 from workbench.geometry.sdf import SparseSDF
+from workbench.kinematics.robot_library import preset_robot
 
 
 def _cell(subdivisions: int) -> trimesh.Trimesh:
@@ -169,10 +170,9 @@ def robot_checks() -> None:
     from workbench.collision import RobotCollisionChecker, Solid
     from workbench.collision.engine import CollisionEngine
     from workbench.collision.shapes import bvh_model
-    from workbench.kinematics import DHRobot
     from workbench.kinematics.link_shapes import link_meshes
 
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     meshes = link_meshes(robot)
     parts = []
     for centre, size in (
@@ -347,10 +347,9 @@ def robot_checks() -> None:
 def sphere_fits() -> None:
     """Volume overshoot of the fitted spheres per MZ07 link (and the fit time, no cache)."""
     from workbench.geometry.spheres import fit_spheres
-    from workbench.kinematics import DHRobot
     from workbench.kinematics.link_shapes import link_meshes
 
-    meshes = link_meshes(DHRobot.mz07())
+    meshes = link_meshes(preset_robot("mz07"))
     print(
         "sphere fits, MZ07 links (volume overshoot = union / mesh volume - 1; fit time, no cache)"
     )

@@ -25,6 +25,7 @@ import numpy as np
 import pinocchio as pin
 
 from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 
 
 def best_of(fn: Callable[[], object], repeat: int) -> float:
@@ -146,7 +147,7 @@ def main() -> None:
     n = 1000 if args.quick else 10000
     n_single = min(n, 2000)
     n_clik = min(n, 1000)
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     rng = np.random.default_rng(0)
     Q = rng.uniform(robot.limits[:, 0], robot.limits[:, 1], (n, 6))
     T = robot.fk(Q)

@@ -11,9 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from workbench.geometry.transforms import invert_transform, make_transform, rpy_to_matrix
-from workbench.kinematics import DHRobot
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.exported import ReadProgram
 from workbench.motion.programs.model import (
     Comment,
@@ -62,7 +62,7 @@ def sample_program(
     model: RobotModel | None = None, name: str = "demo"
 ) -> tuple[RobotProgram, RobotModel]:
     """Return (program, model): every move kind, every action, two tools, two work objects."""
-    model = model or DHRobot.mz07()
+    model = model or preset_robot("mz07")
     tool = sample_tool()
     flange = ToolData("flange", np.eye(4), mass=0.1, cog=np.zeros(3))
     wobj = sample_wobj()

@@ -30,6 +30,7 @@ import pytest
 
 import workbench
 import workbench.errors
+from workbench.kinematics.robot_library import preset_robot
 from workbench.service import (
     AssemblyService,
     BendingService,
@@ -357,13 +358,12 @@ def test_the_public_contract() -> None:
     from workbench import Workbench as Wb
     from workbench import WorkbenchError
     from workbench.geometry import OBB, obb_overlap
-    from workbench.kinematics import DHRobot
     from workbench.sheetmetal import bend_allowance, k_factor
 
     assert Wb is Workbench and issubclass(workbench.errors.InputError, WorkbenchError)
     assert all(callable(getattr(Wb, n)) for n in ("open", "from_dict", "save"))
     assert isinstance(inspect.getattr_static(Wb, "project"), property)
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     q = np.array([0.1, -0.2, 0.3, 0.4, -0.5, 0.6])
     T = robot.fk(q)
     assert T.shape == (4, 4) and robot.fk(np.stack([q, q])).shape == (2, 4, 4)

@@ -8,9 +8,9 @@ import pytest
 from workbench.assembly.carry import MAX_JOINT_STEP, carry_ik
 from workbench.errors import UnreachableError
 from workbench.geometry.transforms import xyz_rpy_to_transform
-from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 
-ROBOT = DHRobot.mz07()
+ROBOT = preset_robot("mz07")
 BASE = xyz_rpy_to_transform([0.1, -0.2, 0.3], [0, 0, np.radians(30)])
 TOOL = xyz_rpy_to_transform([0, 0, 0.15], [0, 0, 0])
 

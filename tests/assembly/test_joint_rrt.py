@@ -27,10 +27,11 @@ from workbench.assembly.planners.joint_rrt import (
 from workbench.collision import RobotCollisionChecker, Solid
 from workbench.errors import CollisionError, PlanningError, UnreachableError
 from workbench.geometry.transforms import xyz_rpy_to_transform
-from workbench.kinematics import DHRobot, link_meshes
+from workbench.kinematics import link_meshes
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.joint_rrt import bisection_order, plan_joint_rrt_connect
 
-ROBOT = DHRobot.mz07()
+ROBOT = preset_robot("mz07")
 Q_HOME = np.array([0.0, 0.0, 0.0, 0.0, -np.pi / 2, 0.0])
 TOOL = trimesh.creation.box(extents=[0.04, 0.06, 0.12])
 TOOL.apply_translation([0.0, 0.0, 0.06])

@@ -24,9 +24,9 @@ from workbench.assembly.tasks import TaskPlan, tcp_line, time_waypoints
 from workbench.assembly.timeline import arm_motion, colliding_samples, part_poses, sample_times
 from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_rpy, xyz_rpy_to_transform
-from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 
-ROBOT = DHRobot.mz07()
+ROBOT = preset_robot("mz07")
 BASE = xyz_rpy_to_transform([0.1, 0.0, 0.2], [0.0, 0.0, 0.3])
 TOOL = xyz_rpy_to_transform([0.0, 0.0, 0.15], [0.0, 0.0, 0.0])
 HOME = np.array([0.0, 0.3, 0.0, 0.0, -1.2, 0.0])

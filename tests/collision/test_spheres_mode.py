@@ -17,6 +17,7 @@ from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_wxyz
 from workbench.kinematics import DHRobot
 from workbench.kinematics.link_shapes import link_meshes
+from workbench.kinematics.robot_library import preset_robot
 
 BOXES = [
     ((0.45, 0.0, 0.25), (0.25, 0.5, 0.3)),
@@ -124,7 +125,7 @@ def _translation(c: tuple[float, float, float]) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def setup() -> tuple[DHRobot, list[trimesh.Trimesh], SpheresMode]:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     meshes = link_meshes(robot)
     eng = CollisionEngine(_checker(robot, meshes), "spheres", spheres_per_link=6, resolution=24)
     assert isinstance(eng.checker, SpheresMode)

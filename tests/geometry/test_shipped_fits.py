@@ -17,13 +17,13 @@ import pytest
 from workbench.collision.plan_check import SPHERES_PER_LINK
 from workbench.geometry import spheres as sp
 from workbench.geometry.npz_cache import cache_path
-from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def _preset_meshes() -> list:
-    return list(DHRobot.mz07().link_meshes())
+    return list(preset_robot("mz07").link_meshes())
 
 
 def _key(mesh) -> str:

@@ -14,6 +14,7 @@ from workbench.kinematics.arm_configuration import (
     every_solution,
     select_solution,
 )
+from workbench.kinematics.robot_library import preset_robot
 
 DEG = np.pi / 180.0
 QUARTER = np.pi / 2
@@ -28,7 +29,7 @@ def _quadrant_ranges(robot: DHRobot, q: np.ndarray) -> np.ndarray:
 
 
 def test_branch_and_quadrants_select_the_planned_joints_among_every_solution() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     rng = np.random.default_rng(7)
     Q = rng.uniform(robot.limits[:, 0] + 0.05, robot.limits[:, 1] - 0.05, size=(300, 6))
     confs = arm_configurations(robot, Q)
@@ -46,7 +47,7 @@ def test_branch_and_quadrants_select_the_planned_joints_among_every_solution() -
 
 
 def test_configuration_of_the_upright_posture_and_its_mirror_images() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     # model convention: upper arm vertical, forearm reaching forward, wrist bent 30 deg
     q = np.array([0.0, 0.0, 0.0, 0.0, -60.0, 0.0]) * DEG
     F = robot.link_transforms(q)
@@ -62,7 +63,7 @@ def test_configuration_of_the_upright_posture_and_its_mirror_images() -> None:
 
 
 def test_a_configuration_the_pose_lacks_names_the_target_and_what_exists() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     q = np.array([10.0, -20.0, 30.0, 40.0, -60.0, 20.0]) * DEG
     sols = every_solution(robot, robot.fk(q))
     have = {arm_configuration(robot, s) for s in sols}
@@ -80,7 +81,7 @@ def test_a_configuration_the_pose_lacks_names_the_target_and_what_exists() -> No
 
 
 def test_without_turn_data_a_wide_joint_is_ambiguous_and_says_so() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     q = np.array([10.0, -20.0, 30.0, 40.0, -60.0, 20.0]) * DEG
     with pytest.raises(UnreachableError, match="does not select one"):
         select_solution(robot, robot.fk(q), arm_configuration(robot, q))

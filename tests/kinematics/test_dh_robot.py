@@ -13,13 +13,14 @@ from workbench.geometry.transforms import rot_x
 from workbench.kinematics import MZ07_SEED_DH, MZ07_SEED_TOOL, DHRobot
 from workbench.kinematics.configurations import branch_solutions, pick_solution
 from workbench.kinematics.dh_chain import dh_fk, joint_vector
+from workbench.kinematics.robot_library import preset_robot
 
 RNG_SEED = 0
 
 
 @pytest.fixture(scope="module")
 def robot() -> DHRobot:
-    return DHRobot.mz07()
+    return preset_robot("mz07")
 
 
 def random_q(robot: DHRobot, n: int, seed: int = RNG_SEED) -> np.ndarray:
@@ -238,7 +239,7 @@ def test_pick_solution_by_index_label_or_nearest():
 
 
 def test_branch_solutions_are_the_valid_branches_and_reach_the_pose():
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     rng = np.random.default_rng(7)
     lo, hi = robot.limits[:, 0], robot.limits[:, 1]
     for _ in range(50):
@@ -261,7 +262,7 @@ def test_labelled_solutions_are_every_configuration_and_turn_stable_across_picks
     from workbench.kinematics.arm_configuration import arm_configuration, every_solution
     from workbench.kinematics.configurations import labelled_solutions
 
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     rng = np.random.default_rng(11)
     lo, hi = robot.limits[:, 0], robot.limits[:, 1]
     for _ in range(20):

@@ -9,6 +9,7 @@ from workbench.errors import InputError
 from workbench.kinematics import DHRobot, JointConvention, URDFRobot, presets
 from workbench.kinematics.dh_chain import dh_fk, dh_frames
 from workbench.kinematics.model import RobotModel
+from workbench.kinematics.robot_library import preset_robot
 
 DEG = np.pi / 180.0
 RNG = np.random.default_rng(7)
@@ -91,7 +92,7 @@ def test_models_carry_a_convention() -> None:
 # -- NACHI's convention of the MZ07 preset --------------------------------------------------
 def test_mz07_upright_posture_from_fk() -> None:
     """FK of to_model(J2 = 90, others 0): upper arm vertical, forearm horizontal, wrist straight."""
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     conv = robot.convention
     q = conv.to_model(presets.MZ07_CONTROLLER_UPRIGHT_DEG * DEG)
     np.testing.assert_allclose(q / DEG, [0, 0, 0, 0, -90, 0], atol=1e-12)
@@ -108,7 +109,7 @@ def test_mz07_upright_posture_from_fk() -> None:
 
 
 def test_mz07_limits_match_the_controller_limits() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     ctrl = robot.convention.limits_to_controller(robot.limits) / DEG
     np.testing.assert_allclose(ctrl, presets.MZ07_CONTROLLER_LIMITS_DEG, atol=1e-9)
     np.testing.assert_allclose(ctrl[4], [-120.0, 120.0])  # J5 about the straight wrist
@@ -156,7 +157,7 @@ def _angle_deg(Ra: np.ndarray, Rb: np.ndarray) -> float:
 
 def test_mz07_convention_reproduces_nachi_pendant_poses() -> None:
     """Pendant joints -> to_model -> our FK: the pendant's flange orientation and wrist centre."""
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     q = robot.convention.to_model(PENDANT_J * DEG)
     T = robot.fk(q)
     for i, x in enumerate(PENDANT_X):
@@ -169,7 +170,7 @@ def test_mz07_convention_reproduces_nachi_pendant_poses() -> None:
 
 def test_the_wrong_convention_fails_the_pendant_check() -> None:
     """The check above can fail: identity, or one sign flipped, misses the pendant poses."""
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     c = presets.MZ07_CONVENTION
     for conv in (
         JointConvention.identity(6),
@@ -204,7 +205,7 @@ def test_pendant_chain_itself_matches_its_poses() -> None:
     # and that chain is upright at the pendant's (0, 90, 0, 0, 0, 0)
     F = dh_frames(dh, presets.MZ07_CONTROLLER_UPRIGHT_DEG * DEG)
     np.testing.assert_allclose(F[2, :3, 3] - F[1, :3, 3], [0, 0, 0.330], atol=1e-12)
-    ours = DHRobot.mz07().fk(
+    ours = preset_robot("mz07").fk(
         presets.MZ07_CONVENTION.to_model(presets.MZ07_CONTROLLER_UPRIGHT_DEG * DEG)
     )
     np.testing.assert_allclose(ours[:3, :3], F[6, :3, :3], atol=1e-12)

@@ -6,9 +6,9 @@ import math
 
 import numpy as np
 
-from workbench.kinematics import DHRobot
 from workbench.kinematics.ik_report import branch_name
 from workbench.kinematics.joint_turns import all_turns, joint_turn, wrap_to_pi
+from workbench.kinematics.robot_library import preset_robot
 
 TWO_PI = 2 * math.pi
 
@@ -47,7 +47,7 @@ def test_all_turns_enumerates_every_variant() -> None:
 
 
 def test_branch_names_say_configuration_and_turns() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     conv = robot.convention
     # Straight up, elbow bent forward: the twin is the controller's own reading of the joints
     # (J5 sign for the flip, J6 between 180 and 540 deg for +1 turn).

@@ -9,11 +9,12 @@ from mesh_overlap import fcl_overlap
 
 from workbench.kinematics import DHRobot
 from workbench.kinematics.link_shapes import flange_mesh, link_meshes
+from workbench.kinematics.robot_library import preset_robot
 
 
 @pytest.fixture(scope="module")
 def robot() -> DHRobot:
-    return DHRobot.mz07()
+    return preset_robot("mz07")
 
 
 @pytest.fixture(scope="module")

@@ -12,13 +12,14 @@ from workbench.kinematics.numeric_ik import numeric_ik
 from workbench.kinematics.opw import opw_geometry, solve_batch
 from workbench.kinematics.opw_single import solve_single
 from workbench.kinematics.presets import MZ07_DH
+from workbench.kinematics.robot_library import preset_robot
 
 TWO_PI = 2 * math.pi
 
 
 @pytest.fixture(scope="module")
 def robot() -> DHRobot:
-    return DHRobot.mz07()
+    return preset_robot("mz07")
 
 
 def angle_diff(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -8,9 +8,10 @@ import pytest
 
 from workbench.errors import PlanningError, UnreachableError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
-from workbench.kinematics import DHRobot, PathIK, RobotModel, URDFRobot, branch_name, follow_path
+from workbench.kinematics import PathIK, RobotModel, URDFRobot, branch_name, follow_path
+from workbench.kinematics.robot_library import preset_robot
 
-ROBOT = DHRobot.mz07()
+ROBOT = preset_robot("mz07")
 Q0 = np.radians([0.0, 10.0, 10.0, 0.0, -70.0, 0.0])
 
 

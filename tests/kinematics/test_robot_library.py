@@ -25,9 +25,9 @@ import pytest
 from mesh_overlap import fcl_overlap
 
 from workbench.errors import InputError
-from workbench.kinematics import IK_TOL, DHRobot, JointConvention
+from workbench.kinematics import IK_TOL, JointConvention
 from workbench.kinematics.arm_configuration import arm_configuration
-from workbench.kinematics.robot_library import LIBRARY, ROBOT_NAMES, library_robot
+from workbench.kinematics.robot_library import LIBRARY, ROBOT_NAMES, library_robot, preset_robot
 from workbench.motion.programs.fanuc import config_text
 from workbench.motion.programs.krl import status_turn
 from workbench.motion.programs.rapid import confdata
@@ -96,7 +96,7 @@ def ros_to_controller(name: str, q_ros: np.ndarray) -> np.ndarray:
 
 @pytest.mark.parametrize("name", ROBOT_NAMES)
 def test_fk_at_the_published_postures(name: str) -> None:
-    robot = DHRobot.preset(name)
+    robot = preset_robot(name)
     for q_deg, xyz in FLANGE_AT[name]:
         q = robot.convention.to_model(np.radians(q_deg))
         assert np.allclose(robot.fk(q)[:3, 3] * 1000, xyz, atol=0.05), (name, q_deg)
@@ -110,7 +110,7 @@ def test_fk_at_the_published_postures(name: str) -> None:
 @pytest.mark.parametrize("name", sorted(OPW))
 def test_fk_is_opw_kinematics_forward(name: str) -> None:
     params, offsets, signs = OPW[name]
-    robot = DHRobot.preset(name)
+    robot = preset_robot(name)
     rng = np.random.default_rng(1)
     for q_ros in rng.uniform(-math.pi, math.pi, (200, 6)):
         q_model = robot.convention.to_model(ros_to_controller(name, q_ros))
@@ -121,7 +121,7 @@ def test_fk_is_opw_kinematics_forward(name: str) -> None:
 
 @pytest.mark.parametrize("name", ROBOT_NAMES)
 def test_fk_matches_pinocchio_and_meshes_are_sane(name: str) -> None:
-    robot = DHRobot.preset(name)
+    robot = preset_robot(name)
     model, data = robot.pinocchio_model()
     fid = model.getFrameId("flange")
     rng = np.random.default_rng(2)
@@ -138,7 +138,7 @@ def test_fk_matches_pinocchio_and_meshes_are_sane(name: str) -> None:
 
 @pytest.mark.parametrize("name", ROBOT_NAMES)
 def test_ik_round_trip_1000_poses(name: str) -> None:
-    robot = DHRobot.preset(name)
+    robot = preset_robot(name)
     rng = np.random.default_rng(3)
     lo, hi = robot.limits[:, 0], robot.limits[:, 1]
     qs = rng.uniform(lo, hi, (3000, 6))
@@ -158,7 +158,7 @@ def test_ik_round_trip_1000_poses(name: str) -> None:
 
 @pytest.mark.parametrize("name", ROBOT_NAMES)
 def test_link_shapes_touch_neighbours_and_keep_two_apart_at_home(name: str) -> None:
-    robot = DHRobot.preset(name)
+    robot = preset_robot(name)
     q = robot.convention.to_model(np.radians(LIBRARY[name].home_deg))
     frames = robot.link_transforms(q)
     world = [m.copy().apply_transform(F) for m, F in zip(robot.link_meshes(), frames, strict=True)]
@@ -175,7 +175,7 @@ def test_link_shapes_touch_neighbours_and_keep_two_apart_at_home(name: str) -> N
 
 
 def test_ur5e_has_the_closed_form_ik_checked_by_pinocchio() -> None:
-    robot = DHRobot.preset("ur5e")
+    robot = preset_robot("ur5e")
     assert robot.ur is not None and not robot.is_analytic
     model, data = robot.pinocchio_model()
     fid = model.getFrameId("flange")
@@ -194,33 +194,33 @@ def test_ur5e_has_the_closed_form_ik_checked_by_pinocchio() -> None:
 def test_conventions_put_the_vendors_postures_where_the_vendors_say() -> None:
     # ABB: tool0 at the calibration position points forward, x down: quaternion
     # [0.707107, 0, 0.707107, 0] (RAPID's home robtargets); J5 = +90 points it down.
-    abb = DHRobot.preset("irb1200_7_70")
+    abb = preset_robot("irb1200_7_70")
     R = abb.fk(np.zeros(6))[:3, :3]
     assert np.allclose(R, [[0, 0, 1], [0, 1, 0], [-1, 0, 0]], atol=1e-12)
     assert np.allclose(abb.fk(np.radians([0, 0, 0, 0, 90, 0]))[:3, 2], [0, 0, -1], atol=1e-12)
     # KUKA: A1 positive turns the arm clockwise seen from above (towards -y); A5 positive
     # points the flange down at HOME.
-    kuka = DHRobot.preset("kr6_r900_2")
+    kuka = preset_robot("kr6_r900_2")
     conv = kuka.convention
     assert kuka.fk(conv.to_model(np.radians([30, -90, 90, 0, 0, 0])))[1, 3] < -0.2
     T = kuka.fk(conv.to_model(np.radians([0, -90, 90, 0, 90, 0])))
     assert np.allclose(T[:3, 2], [0, 0, -1], atol=1e-12)
     # FANUC: J3 counts from the horizontal, so J2 alone leaves the forearm's direction;
     # J5 = -90 points the flange down.
-    fanuc = DHRobot.preset("m10ia")
+    fanuc = preset_robot("m10ia")
     for j2 in (-40.0, 0.0, 60.0):
         F = fanuc.link_transforms(fanuc.convention.to_model(np.radians([0, j2, 0, 0, 0, 0])))
         assert np.allclose(F[3, :3, 2], [1, 0, 0], atol=1e-12)  # axis 4 horizontal, forward
     T = fanuc.fk(fanuc.convention.to_model(np.radians([0, 0, 0, 0, -90, 0])))
     assert np.allclose(T[:3, 2], [0, 0, -1], atol=1e-12)
     # UR: "home" (0, -90, 0, -90, 0, 0) stands the arm upright
-    ur = DHRobot.preset("ur5e")
+    ur = preset_robot("ur5e")
     F = ur.link_transforms(np.radians([0, -90, 0, -90, 0, 0]))
     assert np.allclose(F[3, :2, 3], F[1, :2, 3], atol=1e-12) and F[3, 2, 3] > 0.9
 
 
 def test_fanuc_coupling_is_exact_and_limits_are_the_controllers() -> None:
-    fanuc = DHRobot.preset("m10ia")
+    fanuc = preset_robot("m10ia")
     conv, lim = fanuc.convention, fanuc.controller_limits
     assert lim is not None
     rng = np.random.default_rng(5)
@@ -238,7 +238,7 @@ def test_fanuc_coupling_is_exact_and_limits_are_the_controllers() -> None:
 
 
 def test_configuration_data_follow_the_vendors_rules() -> None:
-    abb = DHRobot.preset("irb1200_7_70")
+    abb = preset_robot("irb1200_7_70")
     for q_deg, want in (
         ((0, 0, 0, 0, 30, 0), (0, 0, 0, 0)),  # the usual pose: ABB's cfx 0
         ((0, 0, 0, 0, -30, 0), (0, 0, 0, 1)),  # axis 5 negative
@@ -249,7 +249,7 @@ def test_configuration_data_follow_the_vendors_rules() -> None:
     ):
         q = np.radians(q_deg)
         assert confdata(q, arm_configuration(abb, q)) == want, q_deg
-    kuka = DHRobot.preset("kr6_r900_2")
+    kuka = preset_robot("kr6_r900_2")
     for q_deg, want in (
         ((0, -90, 90, 0, 30, 0), (2, 2)),  # HOME: S 'B010', T 'B000010' (A2 < 0)
         ((0, -90, 90, 0, -30, 0), (6, 18)),  # A5 negative: S bit 2, T bit 4
@@ -262,7 +262,7 @@ def test_configuration_data_follow_the_vendors_rules() -> None:
 
 
 def test_fanuc_configuration_strings() -> None:
-    fanuc = DHRobot.preset("m10ia")
+    fanuc = preset_robot("m10ia")
     for q_deg, want in (
         ((0, 0, 0, 0, -90, 0), "N U T, 0, 0, 0"),  # the usual tool-down posture
         ((0, 0, 0, 0, 30, 0), "F U T, 0, 0, 0"),  # J5 positive: flipped
@@ -275,8 +275,8 @@ def test_fanuc_configuration_strings() -> None:
 
 
 def test_preset_names_and_errors() -> None:
-    assert DHRobot.preset("mz07").name == DHRobot.mz07().name == "NACHI MZ07"
-    assert np.array_equal(DHRobot.preset("mz07").dh, DHRobot.mz07().dh)
+    assert preset_robot("mz07").name == preset_robot("mz07").name == "NACHI MZ07"
+    assert np.array_equal(preset_robot("mz07").dh, preset_robot("mz07").dh)
     with pytest.raises(InputError) as err:
         library_robot("irb6700")
     assert all(n in str(err.value) for n in ROBOT_NAMES)

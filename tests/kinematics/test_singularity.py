@@ -9,11 +9,12 @@ import pytest
 
 from workbench.errors import InputError
 from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 
 
 @pytest.fixture(scope="module")
 def robot() -> DHRobot:
-    return DHRobot.mz07()
+    return preset_robot("mz07")
 
 
 def test_regular_pose_has_none(robot: DHRobot) -> None:

@@ -1,4 +1,4 @@
-"""URDFRobot: the MZ07 written as a URDF (box links) has the same FK as DHRobot.mz07()."""
+"""URDFRobot: the MZ07 written as a URDF (box links) has the same FK as preset_robot("mz07")."""
 
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ from workbench.errors import InputError, MeshError, UnreachableError
 from workbench.geometry.transforms import matrix_to_rpy
 from workbench.kinematics import DHRobot
 from workbench.kinematics.dh_chain import dh_fixed_part
+from workbench.kinematics.robot_library import preset_robot
 from workbench.kinematics.urdf_robot import URDFRobot
 
 
@@ -58,7 +59,7 @@ def mz07_urdf(robot: DHRobot, mesh_file: str | None = None) -> str:
 
 @pytest.fixture(scope="module")
 def dh_robot() -> DHRobot:
-    return DHRobot.mz07()
+    return preset_robot("mz07")
 
 
 @pytest.fixture()

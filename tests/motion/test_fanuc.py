@@ -12,6 +12,7 @@ from program_round_trip import check_read_back, sample_program
 
 from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.fanuc import (
     cnt_of_zone,
     config_text,
@@ -270,12 +271,11 @@ def test_frames_the_program_does_not_set_read_as_identity_with_a_note() -> None:
 
 def test_a_joint_on_a_turn_boundary_is_found_in_one_turn_only() -> None:
     """J6 at exactly 180 deg (turn 1) and -180 deg (turn -1): the other turn is not taken too."""
-    from workbench.kinematics import DHRobot
     from workbench.kinematics.arm_configuration import arm_configuration, select_solution
     from workbench.motion.programs.fanuc import turn_number
     from workbench.motion.programs.fanuc_read import controller_ranges
 
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     for j6 in (180.0, -180.0, 0.0):
         q_ctrl = np.radians([10.0, 80.0, 20.0, 30.0, -40.0, j6])
         q = robot.convention.to_model(q_ctrl)

@@ -10,8 +10,8 @@ import pytest
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform, make_transform, rpy_to_matrix
-from workbench.kinematics import DHRobot
 from workbench.kinematics.arm_configuration import arm_configuration
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion import plan_program, time_program
 from workbench.motion.programs import (
     Comment,
@@ -46,7 +46,7 @@ def _pose(xyz_mm: list[float]) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def planned():  # noqa: ANN201
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     T_world_base = make_transform(rpy_to_matrix(np.radians([0, 0, 20])), [0.1, 0.05, 0.0])
     tool = ToolData("gripper", make_transform(np.eye(3), [0, 0, 0.15]), 2.0, np.array([0, 0, 0.06]))
     T_world_table = make_transform(rpy_to_matrix(np.radians([0, 0, 10])), [0.5, 0.0, 0.4])
@@ -145,7 +145,7 @@ def test_actions_keep_their_order(planned) -> None:  # noqa: ANN001
 
 
 def test_bad_moves_name_their_item() -> None:
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     q0 = np.radians([0, 0, 0, 0, -90, 0])
     with pytest.raises(
         # Said in the controller's values: model J2 200 deg is the pendant's 290 (offset 90).

@@ -12,6 +12,7 @@ from program_round_trip import check_read_back, sample_program
 from workbench.errors import InputError
 from workbench.kinematics import DHRobot
 from workbench.kinematics.arm_configuration import ArmConfiguration, arm_configuration
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.krl import status_turn, write_krl
 from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.model import SetOutput, SyncPoint, WaitInput
@@ -122,7 +123,7 @@ def test_status_turn_hand_checked_against_kukas_definition() -> None:
     rises, so the stretched arm is J3 ~ +82.5 deg), each case worked out from KUKA's text:
     S bit 0 overhead, bit 1 elbow up (A3 on the upright posture's side of the stretched arm),
     bit 2 A5 < 0; T bit i axis i+1 < 0."""
-    m = DHRobot.mz07()
+    m = preset_robot("mz07")
     # upright: wrist root in front of A1, elbow up, A5 = 0 -> S 'B010' = 2, all axes >= 0
     assert _kuka_case(m, [0, 90, 0, 0, 0, 0]) == (2, 0)
     # wrist bent to A5 = -30: bit 2 and T bit 4 -> S 6, T 16
@@ -142,7 +143,7 @@ def test_status_bits_against_an_independent_geometric_twin() -> None:
     """Bit 0 from the wrist root's x in the A1 coordinate system (the base turned by A1), bit 1
     from A3 against the stretched arm found as the A3 that puts the wrist root farthest from
     axis 2, bit 2 from A5: KUKA's definitions computed without ArmConfiguration."""
-    m = DHRobot.mz07()
+    m = preset_robot("mz07")
     rng = np.random.default_rng(12)
     lo, hi = m.limits[:, 0], m.limits[:, 1]
 

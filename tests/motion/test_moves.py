@@ -155,7 +155,7 @@ def test_a_jump_from_the_moves_start_to_its_first_point_is_refused():
 
 def test_mz07_linear_and_blended_moves():
     kin = pytest.importorskip("workbench.kinematics")
-    robot = kin.DHRobot.mz07()
+    robot = kin.preset_robot("mz07")
     q0 = np.radians([0.0, 10.0, -10.0, 0.0, -60.0, 0.0])
     T0 = robot.fk(q0)
     T1 = T0.copy()

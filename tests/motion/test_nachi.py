@@ -17,7 +17,7 @@ import pytest
 from program_round_trip import check_read_back, sample_program
 
 from workbench.errors import InputError
-from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.model import MoveInstr, SyncPoint, Target
 from workbench.motion.programs.nachi import accuracy_levels, nachi_pose, write_nachi
 from workbench.motion.programs.nachi_read import nachi_transform, read_nachi
@@ -110,7 +110,7 @@ def test_pose_convention_matches_the_mz07f_pendant() -> None:
     """A hand-written M1X line with the pendant's pose reads to the orientation our MZ07 model
     (through NACHI's joint convention) has at the pendant's joints, and the post's angles of
     that FK orientation are the pendant's (X, Y, Z, RZ, RY, RX) numbers: R = Rz Ry Rx."""
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     for joints, pose in PENDANT:
         x, y, z, rz, ry, rx = pose
         text = (
@@ -212,7 +212,7 @@ def test_without_header_tools_and_levels_are_noted() -> None:
     mv = read.moves[0]
     assert mv.zone == 0.0 and mv.tool == "H2"
     assert any("A=4" in n for n in read.notes) and any("H=2" in n for n in read.notes)
-    q = solve_moves(read, DHRobot.mz07())[0]
+    q = solve_moves(read, preset_robot("mz07"))[0]
     np.testing.assert_allclose(q / DEG, [0, 0, 0, 0, -90, 0], atol=1e-9)
 
 

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion import Move, Program, plan_program, time_program
 from workbench.motion.programs.exported import ExportedProgram, merge_exports
 from workbench.motion.programs.from_plan import (
@@ -30,7 +31,7 @@ def _line_target(model: DHRobot, dx: float) -> np.ndarray:
 
 
 def test_planner_durations_are_the_plans_arrivals() -> None:
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     q1 = Q0 + np.array([30.0, -10.0, 5.0, 20.0, 10.0, -40.0]) * DEG
     prog = Program(
         "p", (Move.joint(q1, speed=0.5), Move.linear(_line_target(model, 0.05), speed=0.1))
@@ -44,7 +45,7 @@ def test_planner_durations_are_the_plans_arrivals() -> None:
 
 
 def test_fit_linear_speed_gives_the_duration_at_the_slowest_speed() -> None:
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     T = _line_target(model, 0.08)
 
     def took(v: float) -> float:
@@ -78,7 +79,7 @@ def test_corner_zones_keep_the_blend_within_the_tolerance() -> None:
 
 
 def test_a_first_move_shorter_than_the_tolerance_is_no_move() -> None:
-    model = DHRobot.mz07()
+    model = preset_robot("mz07")
     q1 = Q0 + np.array([20.0, 0, 0, 0, 0, 0]) * DEG
     prog = Program("p", (Move.joint(Q0 + 1e-8, speed=1.0), Move.joint(q1, speed=1.0)))
     near = planner_durations(model, prog, Q0, np.eye(4))  # ruckig refused this micro-move once

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.program import JOINT, LINEAR
 from workbench.polishing.process_motion import ZONE, plan_process_motion, segment_speeds
 from workbench.polishing.robot_path import tool_frames
@@ -37,7 +37,7 @@ def test_segment_speeds_move_the_tcp_at_the_feed_within_the_limits() -> None:
 
 
 def test_motion_follows_the_poses_in_one_configuration_with_one_move_per_point() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     T_world_base = np.eye(4)
     T_world_base[:3, 3] = [0.0, 0.0, 0.05]
     T_flange_tcp = np.eye(4)

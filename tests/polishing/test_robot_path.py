@@ -11,6 +11,7 @@ import pytest
 
 from workbench.errors import InputError, PlanningError, UnreachableError
 from workbench.kinematics import DHRobot
+from workbench.kinematics.robot_library import preset_robot
 from workbench.polishing.robot_path import solve_path_ik, tool_frames
 
 
@@ -53,7 +54,7 @@ def _line(robot: DHRobot, n: int = 40, x: float = 0.45) -> np.ndarray:
 
 
 def test_ik_in_one_configuration_reproduces_the_poses() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     T = _line(robot)
     q0 = np.radians([0.0, 10.0, 10.0, 0.0, -70.0, 0.0])
     q, label = solve_path_ik(robot, T, q0)
@@ -80,7 +81,7 @@ def test_ik_in_one_configuration_reproduces_the_poses() -> None:
 
 
 def test_unreachable_points_are_named() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     T = _line(robot)
     T[7, :3, 3] = [2.0, 0.0, 0.25]
     labels = [f"process point {i + 1}" for i in range(len(T))]
@@ -89,7 +90,7 @@ def test_unreachable_points_are_named() -> None:
 
 
 def test_a_joint_jump_is_refused() -> None:
-    robot = DHRobot.mz07()
+    robot = preset_robot("mz07")
     T = _line(robot, n=3)
     with pytest.raises(PlanningError, match="joint jump"):
         solve_path_ik(robot, T, np.radians([0, 10, 10, 0, -70, 0]), max_joint_step=1e-4)

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from workbench.errors import ProjectError
-from workbench.kinematics import DHRobot
 from workbench.kinematics.presets import MZ07_CONVENTION
+from workbench.kinematics.robot_library import preset_robot
 from workbench.project.io import load_project, parse_project_json, project_to_json, save_project
 from workbench.project.migrate import v1_to_v2
 from workbench.project.models import SCHEMA_VERSION
@@ -41,7 +41,7 @@ def _v1() -> dict:
 
 
 def _fk(q_model_deg: list[float] | np.ndarray) -> np.ndarray:
-    return DHRobot.mz07().fk(np.radians(np.asarray(q_model_deg, float)))
+    return preset_robot("mz07").fk(np.radians(np.asarray(q_model_deg, float)))
 
 
 def test_schema_version_is_2() -> None:

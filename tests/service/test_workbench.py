@@ -11,6 +11,7 @@ import pytest
 from workbench import Workbench, WorkbenchError
 from workbench.errors import InputError, JointLimitError, MeshError, ProjectError, UnreachableError
 from workbench.geometry.transforms import make_transform
+from workbench.kinematics.robot_library import preset_robot
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "mz07_cell.json"
@@ -128,9 +129,8 @@ def test_replace_project_with_bad_one_keeps_the_old() -> None:
 
 
 def test_dh_robot_from_rows_matches_preset() -> None:
-    from workbench.kinematics import DHRobot
 
-    mz = DHRobot.mz07()
+    mz = preset_robot("mz07")
     rows = [
         {
             "theta_offset": float(np.degrees(r[0])),

@@ -48,6 +48,8 @@ NO_BOUND = -1e9
 #: (down to 1/4096 of it, 2.4 us of a 10 ms step) before it is reported "not certified at the
 #: finest subdivision" (`EnginePathReport.uncertified_indices`), i.e. treated as touching.
 MAX_DEPTH = 12
+# An interval of the path: (start node, end node, bisection depth, index of its sample interval).
+Interval = tuple[PathNode, PathNode, int, int]
 
 
 class PathCertifier:
@@ -200,13 +202,13 @@ class PathCertifier:
         report = progress or (lambda _f, _m: None)
         report(0.0, f"fast check of {len(q)} samples")
         nodes = self._nodes(t, q)
-        lev = self.lev
+        lev = self.lev  # the samples' group levers (midpoints' `_nodes` replace self.lev)
         sample_hits = {i: n.hits for i, n in enumerate(nodes) if n.hits}
         flagged = int(sum(bool(np.any(n.gmin <= 0.0)) for n in nodes))
         report(0.3, f"{flagged} flagged samples confirmed exactly; certifying between samples")
         evaluated = len(nodes)
         events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]] = []
-        work = [
+        work: list[Interval] = [
             (nodes[i], nodes[i + 1], 0, i)
             for i in range(len(nodes) - 1)
             if not nodes[i].hits and not nodes[i + 1].hits
@@ -216,83 +218,14 @@ class PathCertifier:
         # Certified intervals: per group the clearance bound, and whether it is fcl's.
         cert: list[tuple[Any, FloatArray, NDArray[np.bool_], FloatArray, FloatArray]] = []
         while work:
-            a = np.array([w[0].clr for w in work])
-            b = np.array([w[1].clr for w in work])
-            dq = np.array([np.abs(w[1].q - w[0].q) for w in work])
-            h = np.array([w[1].t - w[0].t for w in work])
-            if callable(acceleration):
-                t0 = np.array([w[0].t for w in work])
-                acc = np.abs(np.asarray(acceleration(t0, t0 + h), float))
-                dev = acc * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
-            elif acceleration is not None:
-                dev = acceleration[None] * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
-            else:
-                dev = np.broadcast_to(deviation, dq.shape)
-            travel, tube = thin_matmul(dq, lev.T), thin_matmul(dev, lev.T)
-            group_lo = chord_bound(a, b, travel) - tube
-            group_fail = ~(group_lo > 0.0)
-            ga = np.array([w[0].gmin for w in work])
-            gb = np.array([w[1].gmin for w in work])
-            depth = np.array([w[2] for w in work])
-            exact = (ga <= 0.0) | (gb <= 0.0) | (group_fail & (depth >= PROMOTE_DEPTH)[:, None])
-            # Exact pairs of the exact groups, tier 0 (box gaps) for all at once.
-            pa = np.array([w[0].gaps for w in work])
-            pb = np.array([w[1].gaps for w in work])
-            ptravel, ptube = thin_matmul(dq, self.plev.T), thin_matmul(dev, self.plev.T)
-            pair_lo = chord_bound(pa, pb, ptravel) - ptube  # (W, P)
-            # Pairs of the exact groups: box gaps first; anchors and fcl only where those fail
-            # and the interval's fast items pass.
-            fast_fail = np.any(group_fail & ~exact, axis=1)
-            pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
-            # Pair tables: lower bounds of the distance at both ends, the same chord bound.
-            want = pairs_in & ~(pair_lo > 0.0)
-            ta = self._tabs([w[0] for w in work], want)
-            tb = self._tabs([w[1] for w in work], want)
-            pair_lo = np.where(
-                want, np.maximum(pair_lo, chord_bound(ta, tb, ptravel) - ptube), pair_lo
-            )
-            pb = np.where(pairs_in, pair_lo, np.inf)
-            failed: set[int] = set()
-            for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
-                if k in failed:
-                    continue  # bisected anyway
-                pb[k, j] = self._pair_interval(
-                    work[k], self.pairs[j], ptravel[k, j], ptube[k, j], pair_lo[k, j]
-                )
-                if not pb[k, j] > 0.0:
-                    failed.add(int(k))
-            safe = ~fast_fail & np.all(pb > 0.0, axis=1)
-            glo = np.where(exact, np.inf, group_lo)
-            for g, cols in enumerate(self.group_cols):
-                if len(cols) == 0:
-                    continue
-                glo[:, g] = np.where(exact[:, g], pb[:, cols].min(axis=1), glo[:, g])
+            safe, glo, dq, dev = self._bound_round(work, lev, acceleration, deviation)
             bisect = [w for w, ok in zip(work, safe, strict=True) if not ok]
             cert += [
                 (work[k], glo[k], np.zeros(glo.shape[1], bool), dq[k], dev[k])
                 for k in np.flatnonzero(safe)
             ]
-            done = [w for w in bisect if w[2] >= max_depth]
-            bisect = [w for w in bisect if w[2] < max_depth]
-            for w in done:  # not certified at the finest subdivision: reported as such
-                tm = (w[0].t + w[1].t) / 2
-                events.append((tm, w[3], (w[0].q + w[1].q) / 2, ()))
-            work = []
-            if bisect:
-                t_mid = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
-                qm = (
-                    sampler(t_mid)
-                    if sampler is not None
-                    else np.array([(w[0].q + w[1].q) / 2 for w in bisect])
-                )
-                mids = self._nodes(t_mid, qm)
-                evaluated += len(mids)
-                for w, m in zip(bisect, mids, strict=True):
-                    if m.hits:
-                        events.append((m.t, w[3], m.q, m.hits))
-                        continue
-                    work.append((w[0], m, w[2] + 1, w[3]))
-                    work.append((m, w[1], w[2] + 1, w[3]))
+            work = self._bisect(bisect, sampler, max_depth, events)
+            evaluated += sum(1 for w in bisect if w[2] < max_depth)
             level = min(w[2] for w in work) if work else max_depth
             report(
                 0.3 + 0.6 * level / max(max_depth, 1),
@@ -303,6 +236,106 @@ class PathCertifier:
         return PathOutcome(
             sample_hits, flagged, events, float(clearance), evaluated, self.exact_pairs
         )
+
+    def _bound_round(
+        self,
+        work: list[Interval],
+        lev: FloatArray,
+        acceleration: FloatArray | AccelerationBound | None,
+        deviation: FloatArray,
+    ) -> tuple[NDArray[np.bool_], FloatArray, FloatArray, FloatArray]:
+        """Return, per interval of `work`: whether it is certified free, its clearance bound
+        per group (W, G) [m], its joint travel |dq| (W, dof) and deviation bound (W, dof) [rad].
+
+        A group's bound is its fast item's chord bound, or for an exact group (flagged at an
+        end, or failing from PROMOTE_DEPTH on) the least bound of its exact pairs."""
+        a = np.array([w[0].clr for w in work])
+        b = np.array([w[1].clr for w in work])
+        dq = np.array([np.abs(w[1].q - w[0].q) for w in work])
+        dev = _deviation(work, dq, acceleration, deviation)
+        travel, tube = thin_matmul(dq, lev.T), thin_matmul(dev, lev.T)
+        group_lo = chord_bound(a, b, travel) - tube
+        group_fail = ~(group_lo > 0.0)
+        ga = np.array([w[0].gmin for w in work])
+        gb = np.array([w[1].gmin for w in work])
+        depth = np.array([w[2] for w in work])
+        exact = (ga <= 0.0) | (gb <= 0.0) | (group_fail & (depth >= PROMOTE_DEPTH)[:, None])
+        fast_fail = np.any(group_fail & ~exact, axis=1)
+        pb = self._pair_bounds(work, exact, fast_fail, dq, dev)
+        safe = ~fast_fail & np.all(pb > 0.0, axis=1)
+        glo = np.where(exact, np.inf, group_lo)
+        for g, cols in enumerate(self.group_cols):
+            if len(cols) == 0:
+                continue
+            glo[:, g] = np.where(exact[:, g], pb[:, cols].min(axis=1), glo[:, g])
+        return safe, glo, dq, dev
+
+    def _pair_bounds(
+        self,
+        work: list[Interval],
+        exact: NDArray[np.bool_],
+        fast_fail: NDArray[np.bool_],
+        dq: FloatArray,
+        dev: FloatArray,
+    ) -> FloatArray:
+        """Return the exact pairs' clearance bounds (W, P) [m] over the intervals (inf for the
+        pairs of no exact group, and where the interval's fast items fail): box gaps first,
+        then pair tables, anchors and fcl only where those fail; an interval stops at its
+        first failing pair (it is bisected anyway)."""
+        # Exact pairs of the exact groups, tier 0 (box gaps) for all at once.
+        pa = np.array([w[0].gaps for w in work])
+        pb = np.array([w[1].gaps for w in work])
+        ptravel, ptube = thin_matmul(dq, self.plev.T), thin_matmul(dev, self.plev.T)
+        pair_lo = chord_bound(pa, pb, ptravel) - ptube  # (W, P)
+        pairs_in = (exact.astype(np.int64) @ self.group_member > 0) & ~fast_fail[:, None]
+        # Pair tables: lower bounds of the distance at both ends, the same chord bound.
+        want = pairs_in & ~(pair_lo > 0.0)
+        ta = self._tabs([w[0] for w in work], want)
+        tb = self._tabs([w[1] for w in work], want)
+        pair_lo = np.where(want, np.maximum(pair_lo, chord_bound(ta, tb, ptravel) - ptube), pair_lo)
+        pb = np.where(pairs_in, pair_lo, np.inf)
+        failed: set[int] = set()
+        for k, j in zip(*np.nonzero(pairs_in & ~(pair_lo > 0.0)), strict=True):
+            if k in failed:
+                continue  # bisected anyway
+            pb[k, j] = self._pair_interval(
+                work[k], self.pairs[j], ptravel[k, j], ptube[k, j], pair_lo[k, j]
+            )
+            if not pb[k, j] > 0.0:
+                failed.add(int(k))
+        return pb
+
+    def _bisect(
+        self,
+        bisect: list[Interval],
+        sampler: Sampler | None,
+        max_depth: int,
+        events: list[tuple[float, int, FloatArray, tuple[Pair, ...]]],
+    ) -> list[Interval]:
+        """Return the halves of the intervals not certified; add to `events` the ones at
+        `max_depth` (not certified at the finest subdivision) and the colliding midpoints."""
+        for w in bisect:
+            if w[2] >= max_depth:  # not certified at the finest subdivision: reported as such
+                tm = (w[0].t + w[1].t) / 2
+                events.append((tm, w[3], (w[0].q + w[1].q) / 2, ()))
+        bisect = [w for w in bisect if w[2] < max_depth]
+        work: list[Interval] = []
+        if not bisect:
+            return work
+        t_mid = np.array([(w[0].t + w[1].t) / 2 for w in bisect])
+        qm = (
+            sampler(t_mid)
+            if sampler is not None
+            else np.array([(w[0].q + w[1].q) / 2 for w in bisect])
+        )
+        mids = self._nodes(t_mid, qm)
+        for w, m in zip(bisect, mids, strict=True):
+            if m.hits:
+                events.append((m.t, w[3], m.q, m.hits))
+                continue
+            work.append((w[0], m, w[2] + 1, w[3]))
+            work.append((m, w[1], w[2] + 1, w[3]))
+        return work
 
     def _pair_interval(
         self, w: Any, pair: Pair, travel: float, tube: float, lo: float, *, fcl: bool = False
@@ -376,3 +409,21 @@ class PathCertifier:
             tight[k, g] = True
             best = min(best, float(B[k, g]))
         return float(B.min())
+
+
+def _deviation(
+    work: list[Interval],
+    dq: FloatArray,
+    acceleration: FloatArray | AccelerationBound | None,
+    deviation: FloatArray,
+) -> FloatArray:
+    """Return each interval's bound (W, dof) [rad] of the motion's deviation from its chord:
+    acceleration * h**2 / 8 plus PIECE_JUMP with an acceleration bound, else `deviation`."""
+    h = np.array([w[1].t - w[0].t for w in work])
+    if callable(acceleration):
+        t0 = np.array([w[0].t for w in work])
+        acc = np.abs(np.asarray(acceleration(t0, t0 + h), float))
+        return acc * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
+    if acceleration is not None:
+        return acceleration[None] * (h[:, None] ** 2) / 8.0 + PIECE_JUMP
+    return np.broadcast_to(deviation, dq.shape)

@@ -10,7 +10,12 @@ from workbench.kinematics.link_shapes import flange_mesh, link_meshes
 from workbench.kinematics.model import RobotModel
 from workbench.kinematics.path_ik import PathIK, follow_path
 from workbench.kinematics.presets import MZ07_SEED_DH, MZ07_SEED_TOOL
-from workbench.kinematics.robot_library import ROBOT_NAMES, LibraryRobot, library_robot
+from workbench.kinematics.robot_library import (
+    ROBOT_NAMES,
+    LibraryRobot,
+    library_robot,
+    preset_robot,
+)
 from workbench.kinematics.singularity import Singularities
 from workbench.kinematics.urdf_robot import URDFRobot
 
@@ -32,4 +37,5 @@ __all__ = [
     "labelled_solutions",
     "library_robot",
     "link_meshes",
+    "preset_robot",
 ]

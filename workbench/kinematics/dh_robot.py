@@ -129,31 +129,6 @@ class DHRobot:
             ok &= self.convention.within_controller_limits(qa, self.controller_limits, tol)
         return np.asarray(ok)
 
-    @classmethod
-    def preset(cls, name: str) -> DHRobot:
-        """Return the robot of the library called `name` (see `robot_library.ROBOT_NAMES`).
-
-        Raises InputError listing the library's names when there is none of that name.
-        """
-        from workbench.kinematics.robot_library import library_robot
-
-        return library_robot(name).dh_robot()
-
-    @classmethod
-    def mz07(cls) -> DHRobot:
-        """Return the NACHI MZ07 of seed 003 (flange without tool; see presets.MZ07_SEED_TOOL).
-
-        Its `convention` is NACHI's (presets.MZ07_CONVENTION): the upright posture is the
-        model's (0, 0, 0, 0, -90, 0) deg and the controller's (0, 90, 0, 0, 0, 0) deg.
-        """
-        return cls(
-            presets.MZ07_DH,
-            presets.MZ07_LIMITS,
-            name="NACHI MZ07",
-            max_velocity=presets.MZ07_MAX_VELOCITY,
-            convention=presets.MZ07_CONVENTION,
-        )
-
     @property
     def is_analytic(self) -> bool:
         """Return True when `ik` uses the closed-form OPW solver."""

@@ -149,7 +149,28 @@ def solve_batch(
     G2 = sa6 * Tt[:, 1] + ca6 * Tt[:, 2]
     pc = Tt[:, 3] - (Tt[:, 1] * g.w6[1] + Tt[:, 2] * g.w6[2])
     x, y, z = pc[0], pc[1], pc[2]
-    # Shoulder: arrays (2, N), axis 0 = front/back.
+    c1, s1, t1, px1, py1 = _shoulder(g, x, y, z)
+    c2, s2, t2, c3, s3, t3, u, w = _elbow(g, px1, py1)
+    c1e, s1e = c1[:, None], s1[:, None]
+    err = _wrist_centre_error(g, c1e, s1e, c2, s2, u, w, pc)
+    M = _wrist_matrix(g, c1e, s1e, c2, s2, c3, s3, G0, G2)
+    t4, t5, t6 = _wrist(g, M, theta4_ref, N, err)
+    per_joint = (
+        t1[:, None, None, :],
+        t2[:, :, None, :],
+        t3[:, :, None, :],
+        np.stack([t4, t4 + np.pi], axis=2),
+        np.stack([t5, -t5], axis=2),
+        np.stack([t6, t6 + np.pi], axis=2),
+    )
+    return _assemble(per_joint, err, N, joint_map)
+
+
+def _shoulder(
+    g: OPWGeometry, x: FloatArray, y: FloatArray, z: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
+    """Return cos, sin and angle of joint 1 (2, N) (axis 0 = front/back) for wrist centres
+    (x, y, z) (N,) [m], and the wrist centre in the shoulder's plane: px1 (2, N), py1 (N,)."""
     rho = np.hypot(x, y)
     pos = rho > 0.0
     inv = 1.0 / np.where(pos, rho, 1.0)
@@ -171,7 +192,12 @@ def solve_batch(
     rcb = rho * cb
     px1 = np.stack([rcb, -rcb]) - g.a1
     py1 = g.sig1 * (z - g.d1)
-    # Elbow: arrays (2, 2, N), axes = shoulder, elbow.
+    return c1, s1, t1, px1, py1
+
+
+def _elbow(g: OPWGeometry, px1: FloatArray, py1: FloatArray) -> tuple[FloatArray, ...]:
+    """Return c2, s2, t2, c3, s3, t3 (2, 2, N) (axes = shoulder, elbow) and the forearm's
+    reach u, w in the upper arm's frame, for the wrist centre (px1, py1) in the shoulder's plane."""
     K, phi = g.K, g.phi
     r2 = px1 * px1 + py1 * py1
     cg = np.clip((r2 - g.a2 * g.a2 - K * K) / (2.0 * g.a2 * K), -1.0, 1.0)
@@ -189,15 +215,42 @@ def solve_batch(
     c2 = (px1e * u + py1e * w) / den
     s2 = (py1e * u - px1e * w) / den
     t2 = np.arctan2(s2, c2)
-    # Forward wrist centre, for the residual.
+    return c2, s2, t2, c3, s3, t3, u, w
+
+
+def _wrist_centre_error(
+    g: OPWGeometry,
+    c1e: FloatArray,
+    s1e: FloatArray,
+    c2: FloatArray,
+    s2: FloatArray,
+    u: FloatArray,
+    w: FloatArray,
+    pc: FloatArray,
+) -> FloatArray:
+    """Return the largest deviation (2, 2, N) [m] of the forward wrist centre from `pc` (3, N)."""
     Px = g.a1 + c2 * u - s2 * w
     Py = -g.sig1 * g.b
     Pz = g.d1 + g.sig1 * (s2 * u + c2 * w)
-    c1e, s1e = c1[:, None], s1[:, None]
-    err = np.abs(c1e * Px - s1e * Py - x)
-    np.maximum(err, np.abs(s1e * Px + c1e * Py - y), out=err)
-    np.maximum(err, np.abs(Pz - z), out=err)
-    # R03 columns and the needed entries of M = R03^T G.
+    err = np.abs(c1e * Px - s1e * Py - pc[0])
+    np.maximum(err, np.abs(s1e * Px + c1e * Py - pc[1]), out=err)
+    np.maximum(err, np.abs(Pz - pc[2]), out=err)
+    return err
+
+
+def _wrist_matrix(
+    g: OPWGeometry,
+    c1e: FloatArray,
+    s1e: FloatArray,
+    c2: FloatArray,
+    s2: FloatArray,
+    c3: FloatArray,
+    s3: FloatArray,
+    G0: FloatArray,
+    G2: FloatArray,
+) -> tuple[FloatArray, ...]:
+    """Return the needed entries M00, M10, M20, M02, M12, M22 (2, 2, N) of M = R03^T G,
+    from R03's columns and the target's columns 0 and 2 (G0, G2 (3, N))."""
     es3 = g.e2 * s3
     c23, s23 = c2 * c3 - s2 * es3, s2 * c3 + c2 * es3
     sg23 = g.e2 * g.s3
@@ -210,6 +263,19 @@ def solve_batch(
     M02 = a0 * G2[0] + a1_ * G2[1] + a2_ * G2[2]
     M12 = b0 * G2[0] + b1 * G2[1]
     M22 = d0 * G2[0] + d1_ * G2[1] + d2_ * G2[2]
+    return M00, M10, M20, M02, M12, M22
+
+
+def _wrist(
+    g: OPWGeometry,
+    M: tuple[FloatArray, ...],
+    theta4_ref: FloatArray | None,
+    N: int,
+    err: FloatArray,
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Return t4, t5, t6 (2, 2, N) of the wrist rotation M; raises `err` in place to the
+    wrist rotation's residual (columns 2 and 0 of the model against M; inf where undefined)."""
+    M00, M10, M20, M02, M12, M22 = M
     ss4 = g.sig4 * g.sig5
     # sin t5 = |(M02, M12)|: accurate near the wrist singularity, unlike sqrt(1 - c5^2).
     c5 = np.clip(-ss4 * M22, -1.0, 1.0)
@@ -229,7 +295,6 @@ def solve_batch(
     n6 = np.hypot(c6, s6)
     n6 = np.where(n6 > 0.0, n6, np.nan)
     c6, s6 = c6 / n6, s6 / n6
-    # Residual of the wrist rotation: columns 2 and 0 of the model against M.
     for e in (
         g.sig5 * c4 * s5 - M02,
         g.sig5 * s4 * s5 - M12,
@@ -240,15 +305,17 @@ def solve_batch(
     ):
         np.maximum(err, np.abs(e), out=err)
     err[np.isnan(n6)] = np.inf
-    # Assemble (N, shoulder, elbow, wrist, joint); map each joint on its own compact array.
-    per_joint = (
-        t1[:, None, None, :],
-        t2[:, :, None, :],
-        t3[:, :, None, :],
-        np.stack([t4, t4 + np.pi], axis=2),
-        np.stack([t5, -t5], axis=2),
-        np.stack([t6, t6 + np.pi], axis=2),
-    )
+    return t4, t5, t6
+
+
+def _assemble(
+    per_joint: tuple[FloatArray, ...],
+    err: FloatArray,
+    N: int,
+    joint_map: Callable[[int, FloatArray], tuple[FloatArray, NDArray[np.bool_]]] | None,
+) -> tuple[FloatArray, FloatArray]:
+    """Return (N, 8, 6) joints and (N, 8) residuals of the per-joint arrays (shoulder, elbow,
+    wrist, N), each joint mapped on its own compact array; misfits get an infinite residual."""
     # Built joint-major (6, 2, 2, 2, N), contiguous writes; returned as an (N, 8, 6) view.
     out = np.empty((6, 2, 2, 2, N))
     ok = np.isfinite(err)[:, :, None, :]

@@ -118,7 +118,8 @@ MZ07_LIMITS_DEG = JointConvention(
 MZ07_LIMITS = MZ07_LIMITS_DEG * _DEG
 """Joint limits [rad] in the seed model's convention: J2 -135..80, J5 -210..30 deg, ..."""
 
-MZ07_MAX_VELOCITY = np.array([450.0, 380.0, 520.0, 550.0, 550.0, 1000.0]) * _DEG
+MZ07_MAX_VELOCITY_DEG_S = np.array([450.0, 380.0, 520.0, 550.0, 550.0, 1000.0])
+MZ07_MAX_VELOCITY = MZ07_MAX_VELOCITY_DEG_S * _DEG
 """Joint speed limits [rad/s] (450, 380, 520, 550, 550, 1000 deg/s; sources in the docstring)."""
 
 ACCELERATION_TIME = 0.25

@@ -2,7 +2,8 @@
 
 Each `LibraryRobot` holds the published kinematics (as standard DH rows), the controller's
 joint convention, joint limits and speeds from the vendor's data, the vendor and its native
-program format. `library_robot(name)` returns one; `DHRobot.preset(name)` builds its model.
+program format. `library_robot(name)` returns one; `preset_robot(name)` builds its model.
+Every robot is data: no code tests a robot's name (tests/kinematics/test_robot_data.py).
 
 The OPW arms (ABB, KUKA, FANUC) are given by the seven OPW parameters of ROS-Industrial's
 support packages (a1, a2, b, c1, c2, c3, c4, joint offsets and sign corrections, the form of
@@ -102,6 +103,9 @@ class LibraryRobot:
     source: str
     controller_base_m: tuple[float, float, float] = (0.0, 0.0, 0.0)
     # the controller's base (world) frame's origin in the model's base [m]; axes parallel
+    model_limits_deg: FloatArray | None = None
+    # (6, 2) the model's joint limits [deg] where the data state them (the MZ07's, mapped
+    # from the controller's in whole degrees); None: derived from the controller's limits
 
     @property
     def T_base_controller(self) -> FloatArray:
@@ -118,8 +122,8 @@ class LibraryRobot:
     @property
     def model_limits(self) -> FloatArray:
         """Return the model's joint limits (6, 2) [rad] (see the module docstring for FANUC)."""
-        if self.name == "mz07":
-            return np.array(presets.MZ07_LIMITS)
+        if self.model_limits_deg is not None:
+            return self.model_limits_deg * _DEG
         lim = self.convention.limits_to_model(self.controller_limits_deg * _DEG)
         if self.convention.coupling is not None:
             coupled = np.any(self.convention.coupling != 0.0, axis=1)
@@ -128,8 +132,6 @@ class LibraryRobot:
 
     def dh_robot(self) -> DHRobot:
         """Return the `DHRobot` of this robot (flange without tool)."""
-        if self.name == "mz07":
-            return DHRobot.mz07()
         coupled = self.convention.coupling is not None
         return DHRobot(
             self.dh,
@@ -261,12 +263,13 @@ _ROBOTS = (
         vendor="nachi",
         dh=presets.MZ07_DH,
         controller_limits_deg=presets.MZ07_CONTROLLER_LIMITS_DEG,
-        max_velocity_deg_s=presets.MZ07_MAX_VELOCITY / _DEG,
+        max_velocity_deg_s=presets.MZ07_MAX_VELOCITY_DEG_S,
         convention=presets.MZ07_CONVENTION,
         payload_kg=7.0,
         reach_mm=723.0,
         home_deg=presets.MZ07_CONTROLLER_UPRIGHT_DEG,
         source="seed 003 Table 2; see presets.py",
+        model_limits_deg=presets.MZ07_LIMITS_DEG,
     ),
 )
 
@@ -283,3 +286,11 @@ def library_robot(name: str) -> LibraryRobot:
             f"robot preset {name!r} is not in the robot library; presets: {', '.join(ROBOT_NAMES)}"
         )
     return LIBRARY[name]
+
+
+def preset_robot(name: str) -> DHRobot:
+    """Return the `DHRobot` of the library robot called `name` (flange without tool).
+
+    Raises InputError listing the library's names when there is none of that name.
+    """
+    return library_robot(name).dh_robot()

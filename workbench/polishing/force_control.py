@@ -224,15 +224,44 @@ def simulate_hybrid_force_control(
     """
     prm = params or HybridForceParams()
     p, n = _check(points, normals, target_force, feed_speed, prm)
-    if tool_z0 is None:
-        z_start = -n[0]
-    else:
-        z_start = np.asarray(tool_z0, dtype=float).reshape(-1)
-        zn = float(np.linalg.norm(z_start)) if z_start.shape == (3,) else 0.0
-        if not (math.isfinite(zn) and zn > 1e-9):
-            raise InputError(f"tool_z0 must be a finite non-zero 3-vector, got {tool_z0!r}")
-        z_start = z_start / zn
+    z_start = -n[0] if tool_z0 is None else _start_axis(tool_z0)
     dt = 1.0 / prm.control_rate
+    s_path, t = _time_grid(p, feed_speed, dwell, dt, prm)
+    sig = _path_signals(p, n, s_path, t, feed_speed, dwell, float(target_force), prm)
+    run = _ControlLoop(prm, dt, float(target_force), len(t))
+    run.simulate(sig, p[0].tolist(), z_start.tolist())
+    return ForceControlResult(
+        t=t,
+        force=np.asarray(run.force),
+        force_measured=np.asarray(run.fmeas),
+        tracking_error=np.asarray(run.err),
+        orientation_error=np.asarray(run.oerr),
+        position=np.asarray(run.pos),
+        tool_z=np.asarray(run.zs),
+        commanded_velocity=np.asarray(run.vcmd),
+        commanded_rate=np.asarray(run.wcmd),
+        reference=sig.ref,
+        surface=sig.surf,
+        surface_normal=sig.n_act,
+        target_force=float(target_force),
+        params=prm,
+    )
+
+
+def _start_axis(tool_z0: ArrayLike) -> F64:
+    """Return the unit tool axis (3,) at the start; InputError unless a finite non-zero 3-vector."""
+    z_start = np.asarray(tool_z0, dtype=float).reshape(-1)
+    zn = float(np.linalg.norm(z_start)) if z_start.shape == (3,) else 0.0
+    if not (math.isfinite(zn) and zn > 1e-9):
+        raise InputError(f"tool_z0 must be a finite non-zero 3-vector, got {tool_z0!r}")
+    return z_start / zn
+
+
+def _time_grid(
+    p: F64, feed_speed: float, dwell: float, dt: float, prm: HybridForceParams
+) -> tuple[F64, F64]:
+    """Return the arc length at each point (N,) [m] and the control cycles' times (K,) [s];
+    InputError when the cycles would be more than MAX_STEPS."""
     seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
     s_path = np.concatenate([[0.0], np.cumsum(seg)])
     total = dwell + s_path[-1] / feed_speed
@@ -245,6 +274,38 @@ def simulate_hybrid_force_control(
             "or lower the control rate"
         )
     t: F64 = np.arange(k_steps, dtype=np.float64) * dt
+    return s_path, t
+
+
+@dataclass(frozen=True)
+class _PathSignals:
+    """What the path gives each control cycle (K rows): the reference point, planned normal
+    and velocity, the normal's rotation rate, the actual surface and its normal, the pressed
+    reference the position loop tracks, the sensor noise and the feed direction."""
+
+    ref: F64
+    nrm: F64
+    vel_ref: F64
+    w_ref: F64
+    surf: F64
+    n_act: F64
+    ref_cmd: F64
+    noise: F64
+    feed_dir: F64
+
+
+def _path_signals(
+    p: F64,
+    n: F64,
+    s_path: F64,
+    t: F64,
+    feed_speed: float,
+    dwell: float,
+    fdes: float,
+    prm: HybridForceParams,
+) -> _PathSignals:
+    """Return the `_PathSignals` of the reference moving along the path at `feed_speed`."""
+    dt = 1.0 / prm.control_rate
     s_ref = np.clip(feed_speed * (t - dwell), 0.0, s_path[-1])
     ref = np.stack([np.interp(s_ref, s_path, p[:, i]) for i in range(3)], axis=1)
     nrm = np.stack([np.interp(s_ref, s_path, n[:, i]) for i in range(3)], axis=1)
@@ -252,159 +313,212 @@ def simulate_hybrid_force_control(
     vel_ref = np.diff(ref, axis=0, append=ref[-1:]) / dt
     # Feed-forward rotation rate of the planned normal (eq. 7's omega_01 along the path).
     w_ref = rotation_vectors(nrm, np.vstack([nrm[1:], nrm[-1:]])) / dt
-    # The actual surface: nominal plus a form error h(s) along the normal, tilting it by -h'(s).
-    phase = np.random.default_rng(prm.seed).uniform(0.0, 2 * np.pi)
-    if prm.form_error:
-        arg = 2 * np.pi * s_ref / prm.form_wavelength + phase
-        form = prm.form_error * np.sin(arg)
-        slope = prm.form_error * 2 * np.pi / prm.form_wavelength * np.cos(arg)
-    else:
-        form = slope = 0 * s_ref
-    surf = ref + form[:, None] * nrm
-    # The position loop's reference is the path pressed D = F_d/k into the surface (the seed's
-    # offset trajectory): the tool's depth is then no position error seen through a tilt.
-    ref_cmd = ref - (float(target_force) / prm.stiffness) * nrm
-    n_act = _actual_normals(p, s_path, s_ref, nrm, slope) if prm.form_error else nrm
+    form, slope = _form_error(s_ref, prm)
     noise = (
-        np.random.default_rng(prm.seed + 1).normal(0.0, prm.noise_std, k_steps)
+        np.random.default_rng(prm.seed + 1).normal(0.0, prm.noise_std, len(t))
         if prm.noise_std
         else 0 * t
     )
     feed_dir = np.where(np.linalg.norm(vel_ref, axis=1, keepdims=True) > 0, vel_ref, 0.0)
     fd_norm = np.linalg.norm(feed_dir, axis=1, keepdims=True)
-    feed_dir = feed_dir / np.where(fd_norm > 0, fd_norm, 1.0)
-    alpha = (
-        1.0
-        if not math.isfinite(prm.filter_cutoff)
-        else 1.0 - math.exp(-2 * math.pi * prm.filter_cutoff * dt)
+    return _PathSignals(
+        ref=ref,
+        nrm=nrm,
+        vel_ref=vel_ref,
+        w_ref=w_ref,
+        surf=ref + form[:, None] * nrm,
+        n_act=_actual_normals(p, s_path, s_ref, nrm, slope) if prm.form_error else nrm,
+        # The position loop's reference is the path pressed D = F_d/k into the surface (the
+        # seed's offset trajectory): the tool's depth is then no position error seen through
+        # a tilt.
+        ref_cmd=ref - (fdes / prm.stiffness) * nrm,
+        noise=noise,
+        feed_dir=feed_dir / np.where(fd_norm > 0, fd_norm, 1.0),
     )
-    lag = int(round(prm.latency / dt))
-    k, c, fdes = prm.stiffness, prm.damping, float(target_force)
-    a_max = prm.max_accel * dt
-    loop = prm.orientation_loop
-    kop, kod, koi, w_max = prm.kop, prm.kod, prm.koi, prm.max_angular_speed
 
-    R, N, V, S, FD, NZ = (a.tolist() for a in (ref_cmd, nrm, vel_ref, surf, feed_dir, noise))
-    NA, WR = n_act.tolist(), w_ref.tolist()
-    force = [0.0] * k_steps
-    fmeas = [0.0] * k_steps
-    err = [0.0] * k_steps
-    oerr = [0.0] * k_steps
-    pos = [(0.0, 0.0, 0.0)] * k_steps
-    zs = [(0.0, 0.0, 0.0)] * k_steps
-    vcmd = [(0.0, 0.0, 0.0)] * k_steps
-    wcmd = [(0.0, 0.0, 0.0)] * k_steps
-    x0, x1, x2 = p[0].tolist()
-    z0, z1, z2 = z_start.tolist()  # tool axis, into the surface
-    m0, m1, m2 = NA[0]  # the controller's (filtered) estimate of the surface normal
-    queue = [(0.0, 0.0, 0.0)] * lag  # commands wait `lag` cycles before they move the robot
-    wqueue = [(0.0, 0.0, 0.0)] * lag
-    integ = 0.0
-    ff = 0.0
-    d_prev = 0.0
-    ep = (0.0, 0.0, 0.0)
-    c_prev = (0.0, 0.0, 0.0)
-    er_prev: tuple[float, float, float] | None = None
-    ri0 = ri1 = ri2 = 0.0
-    for i in range(k_steps):
-        nx, ny, nz = N[i]
-        ax_, ay_, az_ = NA[i]
-        sx, sy, sz = S[i]
-        if not loop:
-            z0, z1, z2 = -nx, -ny, -nz  # the tool axis held along the planned normal
-        zs[i] = (z0, z1, z2)
-        # Contact along the actual normal: penetration of the tool below the actual surface.
-        d = ax_ * (sx - x0) + ay_ * (sy - x1) + az_ * (sz - x2)
-        ddot = (d - d_prev) / dt if i else 0.0
-        d_prev = d
-        f = max(k * d + c * ddot, 0.0) if d > 0 else 0.0
-        force[i] = f
-        ff += alpha * (f + NZ[i] - ff)
-        fmeas[i] = ff
-        # Tool tip: deflected against the feed by friction through the lateral compliance.
-        defl = prm.friction * f / prm.lateral_stiffness
-        fx, fy, fz = FD[i]
-        tx, ty, tz = x0 - defl * fx, x1 - defl * fy, x2 - defl * fz
-        pos[i] = (tx, ty, tz)
-        rx, ry, rz = R[i]
+
+def _form_error(s_ref: F64, prm: HybridForceParams) -> tuple[F64, F64]:
+    """Return the actual surface's form error h(s) (K,) [m] along the normal and its slope h'(s)
+    (K,): a sine of random phase (the seed's generator), zero when params.form_error is 0."""
+    phase = np.random.default_rng(prm.seed).uniform(0.0, 2 * np.pi)
+    if not prm.form_error:
+        zero = 0 * s_ref
+        return zero, zero
+    arg = 2 * np.pi * s_ref / prm.form_wavelength + phase
+    form = prm.form_error * np.sin(arg)
+    slope = prm.form_error * 2 * np.pi / prm.form_wavelength * np.cos(arg)
+    return form, slope
+
+
+Vec3 = tuple[float, float, float]
+
+
+def _limited(c: Vec3, c_prev: Vec3, max_speed: float, a_max: float) -> Vec3:
+    """Return the velocity command c [m/s] cut to `max_speed` and then to a change of at most
+    `a_max` [m/s] from the previous command."""
+    cx, cy, cz = c
+    sp = math.sqrt(cx * cx + cy * cy + cz * cz)
+    if sp > max_speed:
+        cx, cy, cz = cx * max_speed / sp, cy * max_speed / sp, cz * max_speed / sp
+    dx, dy, dz = cx - c_prev[0], cy - c_prev[1], cz - c_prev[2]
+    dn = math.sqrt(dx * dx + dy * dy + dz * dz)
+    if dn > a_max:
+        cx, cy, cz = (
+            c_prev[0] + dx * a_max / dn,
+            c_prev[1] + dy * a_max / dn,
+            c_prev[2] + dz * a_max / dn,
+        )
+    return (cx, cy, cz)
+
+
+class _ControlLoop:
+    """The control cycles in scalar math: contact, sensor, the position/force loops (eq. 5) and
+    the orientation loop (eq. 7), with the commands delayed by the latency; one record per
+    cycle in the lists `force`, `fmeas`, `err`, `oerr`, `pos`, `zs`, `vcmd`, `wcmd`."""
+
+    def __init__(self, prm: HybridForceParams, dt: float, fdes: float, k_steps: int) -> None:
+        self.prm, self.dt, self.fdes = prm, dt, fdes
+        self.alpha = (
+            1.0
+            if not math.isfinite(prm.filter_cutoff)
+            else 1.0 - math.exp(-2 * math.pi * prm.filter_cutoff * dt)
+        )
+        self.lag = int(round(prm.latency / dt))
+        self.force = [0.0] * k_steps
+        self.fmeas = [0.0] * k_steps
+        self.err = [0.0] * k_steps
+        self.oerr = [0.0] * k_steps
+        zero = (0.0, 0.0, 0.0)
+        self.pos = [zero] * k_steps
+        self.zs = [zero] * k_steps
+        self.vcmd = [zero] * k_steps
+        self.wcmd = [zero] * k_steps
+        # position and force loops' state
+        self.integ = 0.0
+        self.ep = zero
+        self.c_prev = zero
+        # orientation loop's state: the filtered normal (set by `simulate`), the last error
+        # (None: no derivative kick on the first cycle) and its integral
+        self.m = zero
+        self.er_prev: Vec3 | None = None
+        self.ri = zero
+        # the path's signals as lists of rows (set by `simulate`)
+        self.N: list[list[float]] = []
+        self.NA: list[list[float]] = []
+        self.R: list[list[float]] = []
+        self.V: list[list[float]] = []
+        self.WR: list[list[float]] = []
+
+    def simulate(self, sig: _PathSignals, x_start: list[float], z_start: list[float]) -> None:
+        """Run every cycle from the tool tip's base point `x_start` and axis `z_start`."""
+        prm, dt, alpha = self.prm, self.dt, self.alpha
+        k, c = prm.stiffness, prm.damping
+        loop = prm.orientation_loop
+        S, NZ, FD = (a.tolist() for a in (sig.surf, sig.noise, sig.feed_dir))
+        self.N, self.NA = N, NA = sig.nrm.tolist(), sig.n_act.tolist()
+        self.R, self.V, self.WR = (a.tolist() for a in (sig.ref_cmd, sig.vel_ref, sig.w_ref))
+        x0, x1, x2 = x_start
+        z0, z1, z2 = z_start  # tool axis, into the surface
+        m0, m1, m2 = NA[0]
+        self.m = (m0, m1, m2)  # the controller's (filtered) estimate of the surface normal
+        queue = [(0.0, 0.0, 0.0)] * self.lag  # commands wait `lag` cycles before they move
+        wqueue = [(0.0, 0.0, 0.0)] * self.lag
+        ff = 0.0
+        d_prev = 0.0
+        for i in range(len(N)):
+            nx, ny, nz = N[i]
+            ax_, ay_, az_ = NA[i]
+            sx, sy, sz = S[i]
+            if not loop:
+                z0, z1, z2 = -nx, -ny, -nz  # the tool axis held along the planned normal
+            self.zs[i] = (z0, z1, z2)
+            # Contact along the actual normal: penetration of the tool below the actual surface.
+            d = ax_ * (sx - x0) + ay_ * (sy - x1) + az_ * (sz - x2)
+            ddot = (d - d_prev) / dt if i else 0.0
+            d_prev = d
+            f = max(k * d + c * ddot, 0.0) if d > 0 else 0.0
+            self.force[i] = f
+            ff += alpha * (f + NZ[i] - ff)
+            self.fmeas[i] = ff
+            # Tool tip: deflected against the feed by friction through the lateral compliance.
+            defl = prm.friction * f / prm.lateral_stiffness
+            fx, fy, fz = FD[i]
+            tip = (x0 - defl * fx, x1 - defl * fy, x2 - defl * fz)
+            self.pos[i] = tip
+            self.oerr[i] = math.atan2(
+                math.sqrt(
+                    (z1 * az_ - z2 * ay_) ** 2
+                    + (z2 * ax_ - z0 * az_) ** 2
+                    + (z0 * ay_ - z1 * ax_) ** 2
+                ),
+                -(z0 * ax_ + z1 * ay_ + z2 * az_),
+            )
+            cx, cy, cz = self._velocity(i, tip, (z0, z1, z2), ff)
+            queue.append((cx, cy, cz))
+            qx, qy, qz = queue.pop(0)
+            x0, x1, x2 = x0 + qx * dt, x1 + qy * dt, x2 + qz * dt
+            if loop:
+                wqueue.append(self._rate(i, (z0, z1, z2)))
+                a0, a1, a2 = wqueue.pop(0)
+                z0, z1, z2 = rotate3(z0, z1, z2, a0 * dt, a1 * dt, a2 * dt)
+
+    def _velocity(self, i: int, tip: Vec3, z: Vec3, ff: float) -> Vec3:
+        """Return cycle i's velocity command [m/s]: the position PD in the tool's xy plane and
+        the force PI along the tool z (eq. 5), limited; records the tracking error."""
+        prm, dt = self.prm, self.dt
+        z0, z1, z2 = z
+        nx, ny, nz = self.N[i]
+        rx, ry, rz = self.R[i]
+        tx, ty, tz = tip
         ex, ey, ez = rx - tx, ry - ty, rz - tz
         en = ex * nx + ey * ny + ez * nz
         gx, gy, gz = ex - en * nx, ey - en * ny, ez - en * nz  # tangential to the path
-        err[i] = math.sqrt(gx * gx + gy * gy + gz * gz)
-        oerr[i] = math.atan2(
-            math.sqrt(
-                (z1 * az_ - z2 * ay_) ** 2 + (z2 * ax_ - z0 * az_) ** 2 + (z0 * ay_ - z1 * ax_) ** 2
-            ),
-            -(z0 * ax_ + z1 * ay_ + z2 * az_),
-        )
+        self.err[i] = math.sqrt(gx * gx + gy * gy + gz * gz)
         # Position PD in the tool's xy plane (eq. 5, first row), with the tool z = (z0, z1, z2).
         ez_ = ex * z0 + ey * z1 + ez * z2
         ex, ey, ez = ex - ez_ * z0, ey - ez_ * z1, ez - ez_ * z2
-        vx, vy, vz = V[i]
+        vx, vy, vz = self.V[i]
+        ep = self.ep
         px = vx + prm.kpp * ex + prm.kpd * (ex - ep[0]) / dt
         py = vy + prm.kpp * ey + prm.kpd * (ey - ep[1]) / dt
         pz = vz + prm.kpp * ez + prm.kpd * (ez - ep[2]) / dt
-        ep = (ex, ey, ez)
+        self.ep = (ex, ey, ez)
         pn = px * z0 + py * z1 + pz * z2
         px, py, pz = px - pn * z0, py - pn * z1, pz - pn * z2
         # Force PI along the tool z (eq. 5, second row).
-        ef = fdes - ff
-        integ += ef * dt
-        vf = prm.kfp * ef + prm.kfi * integ
+        ef = self.fdes - ff
+        self.integ += ef * dt
+        vf = prm.kfp * ef + prm.kfi * self.integ
         if prm.normal_feedforward:
             vf += vx * z0 + vy * z1 + vz * z2
-        cx, cy, cz = px + vf * z0, py + vf * z1, pz + vf * z2
-        sp = math.sqrt(cx * cx + cy * cy + cz * cz)
-        if sp > prm.max_speed:
-            cx, cy, cz = cx * prm.max_speed / sp, cy * prm.max_speed / sp, cz * prm.max_speed / sp
-        dx, dy, dz = cx - c_prev[0], cy - c_prev[1], cz - c_prev[2]
-        dn = math.sqrt(dx * dx + dy * dy + dz * dz)
-        if dn > a_max:
-            cx, cy, cz = (
-                c_prev[0] + dx * a_max / dn,
-                c_prev[1] + dy * a_max / dn,
-                c_prev[2] + dz * a_max / dn,
-            )
-        c_prev = (cx, cy, cz)
-        vcmd[i] = (cx, cy, cz)
-        queue.append((cx, cy, cz))
-        qx, qy, qz = queue.pop(0)
-        x0, x1, x2 = x0 + qx * dt, x1 + qy * dt, x2 + qz * dt
-        if loop:
-            # Orientation PID on the rotation vector from the tool z to the measured normal (eq. 7).
-            m0 += alpha * (ax_ - m0)
-            m1 += alpha * (ay_ - m1)
-            m2 += alpha * (az_ - m2)
-            mn = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
-            r0, r1, r2, _ = rotation_vector3(z0, z1, z2, -m0 / mn, -m1 / mn, -m2 / mn)
-            if er_prev is None:
-                er_prev = (r0, r1, r2)  # no derivative kick on the first cycle
-            ri0, ri1, ri2 = ri0 + r0 * dt, ri1 + r1 * dt, ri2 + r2 * dt
-            wx0, wy0, wz0 = WR[i]
-            w0 = wx0 + kop * r0 + kod * (r0 - er_prev[0]) / dt + koi * ri0
-            w1 = wy0 + kop * r1 + kod * (r1 - er_prev[1]) / dt + koi * ri1
-            w2 = wz0 + kop * r2 + kod * (r2 - er_prev[2]) / dt + koi * ri2
-            er_prev = (r0, r1, r2)
-            wn = math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
-            if wn > w_max:
-                w0, w1, w2 = w0 * w_max / wn, w1 * w_max / wn, w2 * w_max / wn
-            wcmd[i] = (w0, w1, w2)
-            wqueue.append((w0, w1, w2))
-            a0, a1, a2 = wqueue.pop(0)
-            z0, z1, z2 = rotate3(z0, z1, z2, a0 * dt, a1 * dt, a2 * dt)
-    return ForceControlResult(
-        t=t,
-        force=np.asarray(force),
-        force_measured=np.asarray(fmeas),
-        tracking_error=np.asarray(err),
-        orientation_error=np.asarray(oerr),
-        position=np.asarray(pos),
-        tool_z=np.asarray(zs),
-        commanded_velocity=np.asarray(vcmd),
-        commanded_rate=np.asarray(wcmd),
-        reference=ref,
-        surface=surf,
-        surface_normal=n_act,
-        target_force=fdes,
-        params=prm,
-    )
+        c = (px + vf * z0, py + vf * z1, pz + vf * z2)
+        self.c_prev = self.vcmd[i] = _limited(c, self.c_prev, prm.max_speed, prm.max_accel * dt)
+        return self.c_prev
+
+    def _rate(self, i: int, z: Vec3) -> Vec3:
+        """Return cycle i's angular velocity command [rad/s]: the PID on the rotation vector
+        from the tool z to the filtered measured normal (eq. 7), limited; records it."""
+        prm, dt, alpha = self.prm, self.dt, self.alpha
+        ax_, ay_, az_ = self.NA[i]
+        m0, m1, m2 = self.m
+        m0 += alpha * (ax_ - m0)
+        m1 += alpha * (ay_ - m1)
+        m2 += alpha * (az_ - m2)
+        self.m = (m0, m1, m2)
+        mn = math.sqrt(m0 * m0 + m1 * m1 + m2 * m2)
+        r0, r1, r2, _ = rotation_vector3(*z, -m0 / mn, -m1 / mn, -m2 / mn)
+        er_prev = (r0, r1, r2) if self.er_prev is None else self.er_prev
+        ri0, ri1, ri2 = self.ri
+        ri0, ri1, ri2 = ri0 + r0 * dt, ri1 + r1 * dt, ri2 + r2 * dt
+        self.ri = (ri0, ri1, ri2)
+        wx0, wy0, wz0 = self.WR[i]
+        kop, kod, koi, w_max = prm.kop, prm.kod, prm.koi, prm.max_angular_speed
+        w0 = wx0 + kop * r0 + kod * (r0 - er_prev[0]) / dt + koi * ri0
+        w1 = wy0 + kop * r1 + kod * (r1 - er_prev[1]) / dt + koi * ri1
+        w2 = wz0 + kop * r2 + kod * (r2 - er_prev[2]) / dt + koi * ri2
+        self.er_prev = (r0, r1, r2)
+        wn = math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
+        if wn > w_max:
+            w0, w1, w2 = w0 * w_max / wn, w1 * w_max / wn, w2 * w_max / wn
+        self.wcmd[i] = (w0, w1, w2)
+        return self.wcmd[i]

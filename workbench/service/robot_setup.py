@@ -12,6 +12,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import ProjectError
 from workbench.kinematics.model import RobotModel
+from workbench.kinematics.robot_library import preset_robot
 from workbench.project.cad import CadSpec, step_tolerance
 from workbench.project.models import Robot, RobotSI, Tool, ToolSI
 from workbench.project.paths import ProjectFolders
@@ -53,7 +54,7 @@ def build_robot_model(spec: Robot | RobotSI, base_dir: Path | ProjectFolders) ->
     if isinstance(spec, Robot):
         spec = spec.to_si()
     if spec.preset is not None:
-        return DHRobot.preset(spec.preset)
+        return preset_robot(spec.preset)
     if spec.dh is not None and spec.limits is not None:
         return DHRobot(spec.dh, spec.limits, name=spec.name)
     from workbench.kinematics import URDFRobot

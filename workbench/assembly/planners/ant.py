@@ -29,6 +29,8 @@ one-by-one loop would; motions are checked AABB -> exact (`cells=False`).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -86,6 +88,47 @@ def plan_ant(
     if not isinstance(step, int | np.integer) or step < 1:
         raise InputError(f"step must be an integer >= 1, got {step!r}")
     res = checker.cell_size if resolution is None else float(resolution)
+    head, tail = _retreats(checker, start, goal, res)
+    s, e = head[-1], tail[0]
+    grid = _grid(checker, s, e, dis, half_width, min_dis, res, step)
+    B = scene_bounds(checker, start, goal) if bounds is None else np.asarray(bounds, float)
+    nodes = interpolate(s, e, np.arange(1, step) / step) if step > 1 else np.zeros((0, 4, 4))
+    path = list(head)
+    tried = 0
+    # Fast path: when the straight line through the nodes is free, every plane's first
+    # candidate (the node itself: it lies on the segment previous -> goal) is taken.
+    if _straight_line_free(checker, s, e, step, res):
+        path.extend(nodes)
+        nodes = nodes[:0]
+        tried += step
+    elif step == 1:
+        raise PlanningError(
+            "single-ant planner: the straight move with step=1 interferes; use step > 1"
+        )
+    refined_planes = refine_levels = 0
+    for i, node in enumerate(nodes):
+        point, level, n_tried = _plane_point(checker, grid, B, path, len(head), i, node, e)
+        tried += n_tried
+        if level:
+            refined_planes += 1
+            refine_levels = max(refine_levels, level)
+        T = node.copy()
+        T[:3, 3] = point
+        path.append(T)
+    # The moves start -> a and b -> goal are the retreats, which `retreat` checked sample
+    # by sample (b -> goal as goal -> b: the same samples, with the goal itself checked
+    # by plan_part_path instead of b).
+    path.extend(tail)
+    out = AntPath((np.asarray(path), tried))
+    out.refined_planes, out.refine_levels = refined_planes, refine_levels
+    return out
+
+
+def _retreats(
+    checker: InterferenceChecker, start: NDArray, goal: NDArray, res: float
+) -> tuple[list[NDArray], list[NDArray]]:
+    """Return the path's head [start, (withdrawn from start)] and tail [(withdrawn from the
+    goal), goal]: a part seated in a hole first leaves it along a free axis (`retreat`)."""
     head: list[NDArray] = [start]
     tail: list[NDArray] = [goal]
     a = retreat(checker, start, goal[:3, 3], res)
@@ -94,7 +137,37 @@ def plan_ant(
     b = retreat(checker, goal, head[-1][:3, 3], res)
     if b is not None:
         tail.insert(0, b)
-    s, e = head[-1], tail[0]
+    return head, tail
+
+
+@dataclass(frozen=True)
+class _Grid:
+    """The cutting planes' grids: normal axis `ax` (the dominant axis of e - s), in-plane axes
+    u_ax, v_ax, half width `hw`, spacing and the finest refined spacing [m], the motion
+    check spacing `res` [m] and the number of segments `step`."""
+
+    ax: int
+    u_ax: int
+    v_ax: int
+    hw: float
+    spacing: float
+    finest: float
+    res: float
+    step: int
+
+
+def _grid(
+    checker: InterferenceChecker,
+    s: NDArray,
+    e: NDArray,
+    dis: float | None,
+    half_width: float | None,
+    min_dis: float | None,
+    res: float,
+    step: int,
+) -> _Grid:
+    """Return the `_Grid` of the planes between s and e (defaults as `plan_ant` says);
+    InputError for a spacing <= 0 or a plane of more than MAX_PLANE_POINTS points."""
     delta = e[:3, 3] - s[:3, 3]
     D = float(np.linalg.norm(delta))
     ax = int(np.argmax(np.abs(delta)))
@@ -110,7 +183,6 @@ def plan_ant(
     )
     if not finest > 0:
         raise InputError(f"min_dis must be a grid spacing > 0 m, got {min_dis!r}")
-    B = scene_bounds(checker, start, goal) if bounds is None else np.asarray(bounds, float)
     n = int(np.floor(hw / spacing))
     if (2 * n + 1) ** 2 > MAX_PLANE_POINTS:
         raise InputError(
@@ -119,13 +191,15 @@ def plan_ant(
             f"(workbench.assembly.planners.ant.MAX_PLANE_POINTS); use dis >= "
             f"{2 * hw / (MAX_PLANE_POINTS**0.5 - 1):.2g} m"
         )
-    nodes = interpolate(s, e, np.arange(1, step) / step) if step > 1 else np.zeros((0, 4, 4))
-    path = list(head)
-    tried = 0
-    # Fast path: when the straight line through the nodes is free, every plane's first
-    # candidate (the node itself: it lies on the segment previous -> goal) is taken.
-    # The segments' samples are the whole line's at the same fractions (lerp and slerp
-    # restricted to a sub-interval are the same motion), so one call makes them all.
+    return _Grid(ax, u_ax, v_ax, hw, spacing, finest, res, step)
+
+
+def _straight_line_free(
+    checker: InterferenceChecker, s: NDArray, e: NDArray, step: int, res: float
+) -> bool:
+    """Return whether the straight move s -> e is free, sampled as the `step` segments' moves
+    would be (lerp and slerp restricted to a sub-interval are the same motion, so one call
+    makes them all); InputError above MAX_LINE_SAMPLES poses."""
     n_seg = max(1, int(np.ceil(float(pose_distance(s, e, checker.radius)) / (step * res))))
     if step * n_seg > MAX_LINE_SAMPLES:
         raise InputError(
@@ -135,64 +209,63 @@ def plan_ant(
             " or use a coarser cell_size"
         )
     u = (np.arange(step)[:, None] + np.arange(1, n_seg + 1)[None] / n_seg).ravel() / step
-    if checker.first_interference(interpolate(s, e, u), cells=False) < 0:
-        path.extend(nodes)
-        nodes = nodes[:0]
-        tried += step
-    elif step == 1:
-        raise PlanningError(
-            "single-ant planner: the straight move with step=1 interferes; use step > 1"
-        )
-    refined_planes = refine_levels = 0
-    for i, node in enumerate(nodes):
-        prev = path[-1]
-        last = i == len(nodes) - 1
-        level, dis_l, n_pts = 0, spacing, 0
-        while True:
-            c = _plane_candidates(node, prev, e, u_ax, v_ax, hw, dis_l, B, level > 0)
-            n_pts += len(c)
-            k, n_tried = _first_free(checker, prev, node[:3, :3], c, e if last else None, res)
+    return bool(checker.first_interference(interpolate(s, e, u), cells=False) < 0)
+
+
+def _plane_point(
+    checker: InterferenceChecker,
+    grid: _Grid,
+    B: NDArray,
+    path: list[NDArray],
+    n_head: int,
+    i: int,
+    node: NDArray,
+    e: NDArray,
+) -> tuple[NDArray, int, int]:
+    """Return (the position (3,) taken on cutting plane i, its refinement level, candidates
+    tried): the first free grid point from path[-1] within bounds B (2, 3) [m], the grid
+    refined while none is free.
+
+    May line up path[-1] (replaced in `path`) in front of the point; PlanningError naming
+    the plane and the finest spacing tried when no point is free."""
+    prev = path[-1]
+    last = i == grid.step - 2
+    level, dis_l, n_pts, tried = 0, grid.spacing, 0, 0
+    while True:
+        c = _plane_candidates(node, prev, e, grid.u_ax, grid.v_ax, grid.hw, dis_l, B, level > 0)
+        n_pts += len(c)
+        k, n_tried = _first_free(checker, prev, node[:3, :3], c, e if last else None, grid.res)
+        tried += n_tried
+        if k < 0 and i > 0 and len(path) > n_head:
+            # Line up: move the previous plane's point in front of a free point of this
+            # plane (same plane coordinates), so the part enters the passage straight.
+            k, n_tried, lined = _line_up(
+                checker, path[-2], prev, node, c, grid.ax, last, e, grid.res
+            )
             tried += n_tried
-            if k < 0 and i > 0 and len(path) > len(head):
-                # Line up: move the previous plane's point in front of a free point of this
-                # plane (same plane coordinates), so the part enters the passage straight.
-                k, n_tried, lined = _line_up(checker, path[-2], prev, node, c, ax, last, e, res)
-                tried += n_tried
-                if k >= 0:
-                    path[-1] = lined
-            nxt = dis_l / 2.0
-            if (
-                k >= 0
-                or nxt < finest * (1.0 - 1e-9)
-                or (2 * int(np.floor(hw / nxt)) + 1) ** 2 > MAX_PLANE_POINTS
-            ):
-                break
-            level, dis_l = level + 1, nxt
-        if k < 0:
-            how = (
-                f"refined down to dis = {dis_l:g} m (min_dis = {finest:g} m)"
-                if level
-                else f"dis = {spacing:g} m, not refined (min_dis = {finest:g} m)"
-            )
-            raise PlanningError(
-                f"single-ant planner: no interference-free grid point on cutting plane "
-                f"{i + 1} of {step - 1} ({_AXES[ax]} = {node[ax, 3]:.4f} m, {n_pts} points, "
-                f"{how}); the passage there is narrower than the part can take on this "
-                "greedy path: try a larger step, a smaller min_dis or planner='rrt_connect'"
-            )
-        if level:
-            refined_planes += 1
-            refine_levels = max(refine_levels, level)
-        T = node.copy()
-        T[:3, 3] = c[k]
-        path.append(T)
-    # The moves start -> a and b -> goal are the retreats, which `retreat` checked sample
-    # by sample (b -> goal as goal -> b: the same samples, with the goal itself checked
-    # by plan_part_path instead of b).
-    path.extend(tail)
-    out = AntPath((np.asarray(path), tried))
-    out.refined_planes, out.refine_levels = refined_planes, refine_levels
-    return out
+            if k >= 0:
+                path[-1] = lined
+        nxt = dis_l / 2.0
+        if (
+            k >= 0
+            or nxt < grid.finest * (1.0 - 1e-9)
+            or (2 * int(np.floor(grid.hw / nxt)) + 1) ** 2 > MAX_PLANE_POINTS
+        ):
+            break
+        level, dis_l = level + 1, nxt
+    if k < 0:
+        how = (
+            f"refined down to dis = {dis_l:g} m (min_dis = {grid.finest:g} m)"
+            if level
+            else f"dis = {grid.spacing:g} m, not refined (min_dis = {grid.finest:g} m)"
+        )
+        raise PlanningError(
+            f"single-ant planner: no interference-free grid point on cutting plane "
+            f"{i + 1} of {grid.step - 1} ({_AXES[grid.ax]} = {node[grid.ax, 3]:.4f} m, "
+            f"{n_pts} points, {how}); the passage there is narrower than the part can take on "
+            "this greedy path: try a larger step, a smaller min_dis or planner='rrt_connect'"
+        )
+    return c[k], level, tried
 
 
 def _line_up(
