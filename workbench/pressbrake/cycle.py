@@ -348,16 +348,7 @@ def check_cycle(
     wp_times = _WaypointTimes.of(traj, path)
     frame_ctx = _FrameContext(part, steps, cell, path, scene, wp_times, q_wp, _FoldCache(part))
     part_frames = _part_frames(frame_ctx, times, q, T_tcp)
-    hits = check_states(part_frames.states, part_frames.T_world_part, part_frames.obstacles)
-    between = carried_hits_between(
-        times,
-        q,
-        lambda t: traj.at(t)[0],
-        part_frames.phase,
-        lambda k: spaces.of_phase(k) if path.phases[k].kind == "carried" else None,
-    )
-    for n, hit in between.items():
-        hits[n] = hits[n] or hit
+    hits = _part_hits(part_frames, times, q, traj, path, spaces)
     report(0.55, "checking the robot against the part where it rests")
     robot_part = _robot_vs_resting_part(
         checker, path, part_frames.phase, q, part_frames.T_world_part, part_frames.states
@@ -366,18 +357,7 @@ def check_cycle(
     robot = check_trajectory(
         traj, times, q, checker, policy, progress=lambda f, m: report(0.6 + 0.38 * f, m)
     )
-    frames = CycleFrames(
-        part_frames.follow_error,
-        times,
-        q,
-        part_frames.step,
-        part_frames.T_world_part,
-        part_frames.punch_z,
-        part_frames.stop,
-        part_frames.phase,
-        tuple(hits),
-        tuple(robot_part),
-    )
+    frames = part_frames.cycle_frames(times, q, hits, robot_part)
     first = _first_problem(path, frames, robot)
     report(1.0, "done")
     return BendingCycle(
@@ -472,6 +452,51 @@ class _PartFrames:
     phase: NDArray[np.int64]
     obstacles: list[Obstacles]
     follow_error: F64
+
+    def cycle_frames(
+        self,
+        times: F64,
+        q: F64,
+        part_hits: list[PartHit | None],
+        robot_part_hits: list[str | None],
+    ) -> CycleFrames:
+        """Return the checked frames at `times` (F,) [s], joints `q` (F, dof) [rad], with the
+        part's collisions and the robot's links touching the resting part."""
+        return CycleFrames(
+            self.follow_error,
+            times,
+            q,
+            self.step,
+            self.T_world_part,
+            self.punch_z,
+            self.stop,
+            self.phase,
+            tuple(part_hits),
+            tuple(robot_part_hits),
+        )
+
+
+def _part_hits(
+    part_frames: _PartFrames,
+    times: F64,
+    q: F64,
+    traj: Trajectory,
+    path: CyclePath,
+    spaces: _TransitSpaces,
+) -> list[PartHit | None]:
+    """Return, per frame, the part's first collision (None: free): at the frame, or, carried,
+    on the way to the next frame."""
+    hits = check_states(part_frames.states, part_frames.T_world_part, part_frames.obstacles)
+    between = carried_hits_between(
+        times,
+        q,
+        lambda t: traj.at(t)[0],
+        part_frames.phase,
+        lambda k: spaces.of_phase(k) if path.phases[k].kind == "carried" else None,
+    )
+    for n, hit in between.items():
+        hits[n] = hits[n] or hit
+    return hits
 
 
 class _FoldCache:
