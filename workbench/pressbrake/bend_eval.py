@@ -386,39 +386,22 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
     part = ordered_part(base, done, bend)
     k = len(done)
     G = len(ctx.grasps)
-    dof = ctx.reach.model.dof
-    nan_q = np.full((G, dof), np.nan)
+    nan_q = np.full((G, ctx.reach.model.dof), np.nan)
     try:
         fold_state(part, k + 1)
     except InputError as exc:
         said = exc.detail if exc.field == "bend sequence" else str(exc)
-        problem = f"bend {name!r}: {said}"
-        side = SideEval(False, problem)
-        return BendEval(
-            done,
-            bend,
-            problem,
-            (side, side),
-            np.zeros(G, np.int64),
-            np.zeros(G, bool),
-            (problem,) * G,
-            nan_q,
-            nan_q.copy(),
-        )
-    child = part.bends[k].child
-    sides: list[SideEval] = []
-    poses: list[list[F64]] = []
+        return _not_foldable(done, bend, f"bend {name!r}: {said}", nan_q)
     states = [fold_state(part, k, f, check=False) for f in ctx.fractions]
-    for flange in (child, part.bends[k].parent):
-        verdict, p = _side(ctx, part, k, flange, name, states)
-        sides.append(verdict)
-        poses.append(p)
+    sides = [
+        _side(ctx, part, k, flange, name, states)[0]
+        for flange in (part.bends[k].child, part.bends[k].parent)
+    ]
     gflange = np.array([part.flange_index(g.flange) for g in ctx.grasps], dtype=np.int64)
     gside = np.array([0 if in_child_side(part, k, f) else 1 for f in gflange], dtype=np.int64)
     ok = np.zeros(G, bool)
     reasons: list[str | None] = [None] * G
     q0, q1, q_front = nan_q.copy(), nan_q.copy(), nan_q.copy()
-    robot_press = ctx.robot_press()
     for s in (0, 1):
         idx = np.flatnonzero(gside == s)
         if not len(idx):
@@ -427,105 +410,16 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
             for i in idx:
                 reasons[i] = sides[s].reason
             continue
-        # IK along the bend at the cycle's following fractions (the robot keeps pace)
-        follow = [fold_state(part, k, f, check=False) for f in follow_fractions()]
-        rep = Grasp(part.flanges[(part.bends[k].child, part.bends[k].parent)[s]].name)
-        station = ctx.press.station(sides[s].station or "")
-        along = [bend_pose(st, k, rep, ctx.press, station).T_die_part for st in follow]
-        states_f = follow
-        nf = len(follow)
-        # (nf, n, 4, 4): die pose at each fraction x the gripped flange x the grasp on it
-        T_wp = ctx.press.T_world_die @ np.array(along)  # (nf, 4, 4) world <- part
-        T_pf = np.array([st.T_part_flange[gflange[idx]] for st in follow])  # (nf, n, 4, 4)
-        tcp_f = (T_wp[:, None] @ T_pf @ ctx.flange_grasps()[idx][None]).reshape(-1, 4, 4)
-        n = len(idx)
-        tcp = np.concatenate([tcp_f[:n], tcp_f[-n:]])  # at the stop, at the end of the bend
-        # the moves in and out of the die: in front of the stop, and lifted out and pulled
-        # back after the bend (the cycle's waypoints; `cycle_path`)
-        pts = [part_points(follow[j]) for j in (0, -1)]
-        pts_die = tuple(
-            (along[j] @ np.c_[p, np.ones(len(p))].T).T[:, :3]
-            for j, p in zip((0, -1), pts, strict=True)
-        )
-        onto, out = _aside(ctx, tcp[:n], tcp[n:], sides[s].depth, pts_die)  # type: ignore[arg-type]
-        reach, q = _reach(
-            ctx, np.concatenate([tcp_f, onto.reshape(-1, 4, 4), out.reshape(-1, 4, 4)])
-        )
-        reach_f = reach[: nf * n].reshape(nf, n)
-        q_f = q[: nf * n].reshape(nf, n, dof)
-        k0 = nf * n + onto.shape[0] * n
-        q_in_front = q[k0 - n : k0]  # onto's last row: in front of the die
-        reach_onto: NDArray[np.bool_] = np.all(reach[nf * n : k0].reshape(-1, n), axis=0)
-        reach_out: NDArray[np.bool_] = np.all(reach[k0:].reshape(-1, n), axis=0)
-        depth = [
-            float(
-                apex_depth(
-                    st.angles[k],
-                    st.radii[k],
-                    part.thickness,
-                    ctx.press.die.v_opening,
-                    ctx.press.die.shoulder_radius,
-                )
-            )
-            for st in states_f
-        ]
-        speed = _following_speed(ctx, q_f, depth)
-        hits = _tool_hits(ctx, tcp, robot_press)
-        arm_hits = _links_hit(ctx, q_f.reshape(-1, dof), robot_press).reshape(nf, n)
-        arm_aside = _links_hit(ctx, q[nf * n :], robot_press).reshape(-1, n)
-        arm_onto: NDArray[np.bool_] = np.any(arm_aside[: k0 // n - nf], axis=0)
-        arm_out: NDArray[np.bool_] = np.any(arm_aside[k0 // n - nf :], axis=0)
+        sweep = _follow_sweep(ctx, part, k, s, sides[s], gflange[idx], idx)
         for m, i in enumerate(idx):
-            g = ctx.grasps[i]
-            label = grasp_label(g)
-            if not reach_f[:, m].all():
-                j = int(np.argmin(reach_f[:, m]))
-                when = (
-                    "at the die"
-                    if j == 0
-                    else f"at {np.degrees(states_f[j].angles[k]):.0f}° of the bend"
+            reasons[i] = _grasp_problem(ctx, sweep, m, f"bend {name!r}", k)
+            if reasons[i] is None:
+                ok[i], q0[i], q1[i], q_front[i] = (
+                    True,
+                    sweep.q_f[0, m],
+                    sweep.q_f[-1][m],
+                    sweep.q_in_front[m],
                 )
-                reasons[i] = (
-                    f"bend {name!r}: grasp {label} unreachable {when} in the arm configuration "
-                    f"{ctx.reach.configuration}"
-                )
-                continue
-            if not (reach_onto[m] and reach_out[m]):
-                when = (
-                    "on the way onto the die"
-                    if not reach_onto[m]
-                    else "on the way out of the die (lifted, then pulled back)"
-                )
-                reasons[i] = (
-                    f"bend {name!r}: grasp {label} unreachable {when} in the arm configuration "
-                    f"{ctx.reach.configuration}"
-                )
-                continue
-            if speed[m] > 1.0:
-                reasons[i] = (
-                    f"bend {name!r}: grasp {label}: following the flange needs {speed[m]:.1f}x a "
-                    "joint's top speed (a wrist near its singularity, or the grasp too far out)"
-                )
-                continue
-            if hits[m] or hits[n + m]:
-                when = "at the die" if hits[m] else "at the end of the bend"
-                reasons[i] = f"bend {name!r}: grasp {label}: the gripper hits the press {when}"
-                continue
-            if arm_hits[:, m].any():
-                j = int(np.argmax(arm_hits[:, m]))
-                reasons[i] = (
-                    f"bend {name!r}: grasp {label}: the arm hits the press at "
-                    f"{np.degrees(states_f[j].angles[k]):.0f}° of the bend"
-                )
-                continue
-            if arm_onto[m] or arm_out[m]:
-                when = "onto the die" if arm_onto[m] else "out of the die (lifted, pulled back)"
-                reasons[i] = (
-                    f"bend {name!r}: grasp {label}: the arm hits the press on the way {when}"
-                )
-                continue
-            q_end = q_f[-1]
-            ok[i], q0[i], q1[i], q_front[i] = True, q_f[0, m], q_end[m], q_in_front[m]
     station_ok = None
     if ctx.T_world_regrip is not None:
         station_ok = reach_where_part_rests(ctx, ctx.T_world_regrip, k, part)[0]
@@ -542,6 +436,159 @@ def evaluate(ctx: SweepContext, done: tuple[int, ...], bend: int) -> BendEval:
         station_ok,
         q_front,
     )
+
+
+def _not_foldable(done: tuple[int, ...], bend: int, problem: str, nan_q: F64) -> BendEval:
+    """Return the verdict of a bend the part cannot fold next: `problem` for every grasp."""
+    side = SideEval(False, problem)
+    G = len(nan_q)
+    return BendEval(
+        done,
+        bend,
+        problem,
+        (side, side),
+        np.zeros(G, np.int64),
+        np.zeros(G, bool),
+        (problem,) * G,
+        nan_q,
+        nan_q.copy(),
+    )
+
+
+@dataclass(frozen=True, eq=False)
+class _FollowSweep:
+    """The robot following one side's flange through the bend, for the n grasps on that side
+    (column m: the m-th of them): the grasps; the fold states at the following fractions
+    (nf); reachable (nf, n) and joints (nf, n, dof) [rad] along the bend; joints in front of
+    the die (n, dof); whether every pose of the straight moves onto the die and out of it is
+    reachable (n,); the highest ratio of joint speed to top speed while following (n,); the
+    gripper's box against the press at the stop, then at the end of the bend (2n,); the arm's
+    boxes against the press along the bend (nf, n) and on the moves onto and out of the die
+    (n,)."""
+
+    grasps: tuple[Grasp, ...]
+    states: list[FoldedState]
+    reach_f: NDArray[np.bool_]
+    q_f: F64
+    q_in_front: F64
+    reach_onto: NDArray[np.bool_]
+    reach_out: NDArray[np.bool_]
+    speed: F64
+    tool_hits: NDArray[np.bool_]
+    arm_hits: NDArray[np.bool_]
+    arm_onto: NDArray[np.bool_]
+    arm_out: NDArray[np.bool_]
+
+
+def _follow_sweep(
+    ctx: SweepContext,
+    part: SheetMetalPart,
+    k: int,
+    s: int,
+    side: SideEval,
+    flanges: NDArray[np.int64],
+    idx: NDArray[np.intp],
+) -> _FollowSweep:
+    """Return the IK and the press checks of the grasps `idx` (their flanges `flanges`) on
+    side `s` (0: the child's, 1: the parent's) of bend `k` of `part`, at the cycle's
+    following fractions (the robot keeps pace) and on the straight moves near the die."""
+    dof = ctx.reach.model.dof
+    follow = [fold_state(part, k, f, check=False) for f in follow_fractions()]
+    rep = Grasp(part.flanges[(part.bends[k].child, part.bends[k].parent)[s]].name)
+    station = ctx.press.station(side.station or "")
+    along = [bend_pose(st, k, rep, ctx.press, station).T_die_part for st in follow]
+    nf = len(follow)
+    # (nf, n, 4, 4): die pose at each fraction x the gripped flange x the grasp on it
+    T_wp = ctx.press.T_world_die @ np.array(along)  # (nf, 4, 4) world <- part
+    T_pf = np.array([st.T_part_flange[flanges] for st in follow])  # (nf, n, 4, 4)
+    tcp_f = (T_wp[:, None] @ T_pf @ ctx.flange_grasps()[idx][None]).reshape(-1, 4, 4)
+    n = len(idx)
+    tcp = np.concatenate([tcp_f[:n], tcp_f[-n:]])  # at the stop, at the end of the bend
+    # the moves in and out of the die: in front of the stop, and lifted out and pulled
+    # back after the bend (the cycle's waypoints; `cycle_path`)
+    pts = [part_points(follow[j]) for j in (0, -1)]
+    pts_die = tuple(
+        (along[j] @ np.c_[p, np.ones(len(p))].T).T[:, :3] for j, p in zip((0, -1), pts, strict=True)
+    )
+    onto, out = _aside(ctx, tcp[:n], tcp[n:], side.depth, pts_die)  # type: ignore[arg-type]
+    reach, q = _reach(ctx, np.concatenate([tcp_f, onto.reshape(-1, 4, 4), out.reshape(-1, 4, 4)]))
+    q_f = q[: nf * n].reshape(nf, n, dof)
+    k0 = nf * n + onto.shape[0] * n
+    depth = [
+        float(
+            apex_depth(
+                st.angles[k],
+                st.radii[k],
+                part.thickness,
+                ctx.press.die.v_opening,
+                ctx.press.die.shoulder_radius,
+            )
+        )
+        for st in follow
+    ]
+    robot_press = ctx.robot_press()
+    arm_aside = _links_hit(ctx, q[nf * n :], robot_press).reshape(-1, n)
+    return _FollowSweep(
+        grasps=tuple(ctx.grasps[i] for i in idx),
+        states=follow,
+        reach_f=reach[: nf * n].reshape(nf, n),
+        q_f=q_f,
+        q_in_front=q[k0 - n : k0],  # onto's last row: in front of the die
+        reach_onto=np.all(reach[nf * n : k0].reshape(-1, n), axis=0),
+        reach_out=np.all(reach[k0:].reshape(-1, n), axis=0),
+        speed=_following_speed(ctx, q_f, depth),
+        tool_hits=_tool_hits(ctx, tcp, robot_press),
+        arm_hits=_links_hit(ctx, q_f.reshape(-1, dof), robot_press).reshape(nf, n),
+        arm_onto=np.any(arm_aside[: k0 // n - nf], axis=0),
+        arm_out=np.any(arm_aside[k0 // n - nf :], axis=0),
+    )
+
+
+def _grasp_problem(ctx: SweepContext, sweep: _FollowSweep, m: int, bend: str, k: int) -> str | None:
+    """Return the first reason the m-th grasp of `sweep` cannot make bend `k` (named `bend`:
+    "bend 'A'"), or None when it can: reach along the bend, then near the die, the
+    following speed, the gripper, the arm along the bend, then near the die."""
+    label = grasp_label(sweep.grasps[m])
+    n = len(sweep.grasps)
+    where_unreachable = None
+    if not sweep.reach_f[:, m].all():
+        j = int(np.argmin(sweep.reach_f[:, m]))
+        where_unreachable = (
+            "at the die" if j == 0 else f"at {_degrees_at(sweep, j, k)}° of the bend"
+        )
+    elif not sweep.reach_onto[m]:
+        where_unreachable = "on the way onto the die"
+    elif not sweep.reach_out[m]:
+        where_unreachable = "on the way out of the die (lifted, then pulled back)"
+    if where_unreachable is not None:
+        return (
+            f"{bend}: grasp {label} unreachable {where_unreachable} in the arm configuration "
+            f"{ctx.reach.configuration}"
+        )
+    if sweep.speed[m] > 1.0:
+        return (
+            f"{bend}: grasp {label}: following the flange needs {sweep.speed[m]:.1f}x a "
+            "joint's top speed (a wrist near its singularity, or the grasp too far out)"
+        )
+    if sweep.tool_hits[m] or sweep.tool_hits[n + m]:
+        when = "at the die" if sweep.tool_hits[m] else "at the end of the bend"
+        return f"{bend}: grasp {label}: the gripper hits the press {when}"
+    if sweep.arm_hits[:, m].any():
+        j = int(np.argmax(sweep.arm_hits[:, m]))
+        return (
+            f"{bend}: grasp {label}: the arm hits the press at {_degrees_at(sweep, j, k)}° "
+            "of the bend"
+        )
+    if sweep.arm_onto[m] or sweep.arm_out[m]:
+        when = "onto the die" if sweep.arm_onto[m] else "out of the die (lifted, pulled back)"
+        return f"{bend}: grasp {label}: the arm hits the press on the way {when}"
+    return None
+
+
+def _degrees_at(sweep: _FollowSweep, j: int, k: int) -> str:
+    """Return bend k's angle at the sweep's j-th following fraction [deg], as the reasons
+    write it."""
+    return f"{np.degrees(sweep.states[j].angles[k]):.0f}"
 
 
 def _following_speed(ctx: SweepContext, q: F64, depth: list[float]) -> F64:

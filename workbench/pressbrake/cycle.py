@@ -285,6 +285,11 @@ class _PressScene:
     others: Obstacles
     press: PressObstacles
 
+    @property
+    def open_z(self) -> float:
+        """Return the punch tip's height [m] over the die's top with the ram open."""
+        return self.cell.press.ram.open + self.part.thickness
+
     def at(self, station: str, punch_z: float, stop: int, bend: int) -> Obstacles:
         press = self.cell.press
         ba = float(self.part.bend_allowances[max(bend, 0)])
@@ -324,33 +329,14 @@ def check_cycle(
     branch = home_branch(model, cell.q_home)
     q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
     scene = _PressScene(part, path, cell, cell_obstacles(cell_bodies), PressObstacles(cell.press))
-    open_z = cell.press.ram.open + part.thickness
     report(0.1, "checking the moves between stations (detours where one is blocked)")
-
-    spaces: dict[int, TransitSpace] = {}
-
-    def space_of(k: int) -> TransitSpace:
-        """Return the transit space of phase k (one per phase: the routing and the check
-        between frames share it; a detour keeps the phases' order)."""
-        if k in spaces:
-            return spaces[k]
-        ph = path.phases[k]
-        carried = None
-        if ph.kind == "carried":
-            j = min(int(ph.step), len(steps) - 1)
-            g = ph.grasp or steps[j].grasp
-            station = ph.station or steps[j].station
-            carried = Carried(
-                fold_state(part, ph.step, check=False),
-                T_part_tcp(part, g, ph.step),
-                scene.at(station, open_z, _last_stop(path, ph), -1),
-            )
-        spaces[k] = TransitSpace(model, T_world_base, T_flange_tcp, checker, policy, carried)
-        return spaces[k]
-
-    path, q_wp, transits = route_transits(
-        path, q_wp, space_of, lambda q: T_world_base @ model.fk(q) @ T_flange_tcp
+    spaces = _TransitSpaces(
+        part, steps, path, scene, model, T_world_base, T_flange_tcp, checker, policy
     )
+    path, q_wp, transits = route_transits(
+        path, q_wp, spaces.of_phase, lambda q: T_world_base @ model.fk(q) @ T_flange_tcp
+    )
+    spaces.path = path  # the same phases, in the same order, with the detours' waypoints
     report(0.2, "the jerk-limited trajectory")
     traj = cycle_trajectory(model, path, q_wp)
     times = _frame_times(traj, cell.frame_dt)
@@ -358,106 +344,21 @@ def check_cycle(
     from workbench.pressbrake.transfer import world_tcp
 
     T_tcp = world_tcp(model, T_world_base, T_flange_tcp, q)
-    wp_t = np.asarray(traj.waypoint_times, float)
-    arrive = wp_t
-    leave = np.array([traj.waypoint_times[i] + path.waypoints[i].hold for i in range(len(wp_t))])
-    # Hold times shift later waypoints: with_holds already moved waypoint_times; the hold at
-    # waypoint i lasts [arrive[i], arrive[i] + hold].
     report(0.3, f"checking the part in {len(times)} frames")
-    states: list[FoldedState] = []
-    T_part = np.zeros((len(times), 4, 4))
-    step = np.zeros(len(times))
-    punch = np.zeros(len(times))
-    stop_idx = np.full(len(times), -1)
-    phase_idx = np.zeros(len(times), dtype=np.int64)
-    obstacles: list[Obstacles] = []
-    press = cell.press
-    fold_cache: dict[float, FoldedState] = {}
-    follow_error = np.zeros(len(times))
-
-    def fold(s: float) -> FoldedState:
-        key = round(s, 9)
-        if key not in fold_cache:
-            fold_cache[key] = fold_state(part, s, check=False)
-        return fold_cache[key]
-
-    last_stop = -1
-    for n, t in enumerate(times):
-        ph_i = _phase_at(path.phases, arrive, leave, t)
-        ph = path.phases[ph_i]
-        phase_idx[n] = ph_i
-        s_stop = _stop_of(path, ph)
-        if s_stop >= 0:
-            last_stop = s_stop
-        station = ph.station or steps[max(0, min(int(ph.step), len(steps) - 1))].station
-        bend = -1
-        z = open_z
-        s = ph.step
-        if ph.kind == "bend":
-            k = ph.bend
-            bend = k
-            f = _bend_fraction(path, ph, arrive, leave, t, q[n], q_wp)
-            s = k + f
-            depth = bend_pose(fold(s), k, steps[k].grasp, press, press.station(station)).depth
-            z = part.thickness - depth
-            if f <= 0.0 and _in_first_hold(ph, arrive, leave, t):
-                z = part.thickness  # the ram closes onto the sheet during this hold
-        state = fold(s)
-        if ph.kind == "rest":
-            assert ph.T_world_part is not None
-            Tp = ph.T_world_part
-        elif ph.kind == "bend":
-            # the punch and die hold the part in the bend; the following robot is checked
-            # for how far its TCP strays from the grasp on the part (`follow_error`)
-            k = ph.bend
-            bp = bend_pose(state, k, steps[k].grasp, press, press.station(station))
-            Tp = press.T_world_die @ bp.T_die_part
-            if not ph.pressed:
-                T_grip = Tp @ T_part_tcp(part, steps[k].grasp, s, state)
-                follow_error[n] = float(np.linalg.norm(T_grip[:3, 3] - T_tcp[n][:3, 3]))
-        else:
-            grasp = ph.grasp or steps[min(int(np.floor(s + 1e-9)), len(steps) - 1)].grasp
-            Tp = T_tcp[n] @ invert_transform(T_part_tcp(part, grasp, s, state))
-        states.append(state)
-        T_part[n] = Tp
-        step[n] = s
-        punch[n] = z
-        stop_idx[n] = last_stop
-        obstacles.append(scene.at(station, z, last_stop, bend))
-    hits = check_states(states, T_part, obstacles)
-    between = carried_hits_between(
-        times,
-        q,
-        lambda t: traj.at(t)[0],
-        phase_idx,
-        lambda k: space_of(k) if path.phases[k].kind == "carried" else None,
-    )
-    for n, hit in between.items():
-        hits[n] = hits[n] or hit
+    wp_times = _WaypointTimes.of(traj, path)
+    frame_ctx = _FrameContext(part, steps, cell, path, scene, wp_times, q_wp, _FoldCache(part))
+    part_frames = _part_frames(frame_ctx, times, q, T_tcp)
+    hits = _part_hits(part_frames, times, q, traj, path, spaces)
     report(0.55, "checking the robot against the part where it rests")
-    robot_part = _robot_vs_resting_part(checker, path, phase_idx, q, T_part, states)
+    robot_part = _robot_vs_resting_part(
+        checker, path, part_frames.phase, q, part_frames.T_world_part, part_frames.states
+    )
     report(0.6, "checking the robot against the cell and the press")
     robot = check_trajectory(
         traj, times, q, checker, policy, progress=lambda f, m: report(0.6 + 0.38 * f, m)
     )
-    frames = CycleFrames(
-        follow_error,
-        times,
-        q,
-        step,
-        T_part,
-        punch,
-        stop_idx,
-        phase_idx,
-        tuple(hits),
-        tuple(robot_part),
-    )
+    frames = part_frames.cycle_frames(times, q, hits, robot_part)
     first = _first_problem(path, frames, robot)
-    first_step = None
-    if first is not None:
-        n = int(np.searchsorted(times, first[0], side="right")) - 1
-        ph = path.phases[int(phase_idx[max(n, 0)])]
-        first_step = int(ph.bend) if ph.kind == "bend" else _grasp_step(ph, steps)
     report(1.0, "done")
     return BendingCycle(
         part,
@@ -469,9 +370,252 @@ def check_cycle(
         frames,
         robot,
         None if first is None else first[1],
-        first_step,
+        None if first is None else _step_at(path, steps, frames, first[0]),
         transits,
     )
+
+
+class _TransitSpaces:
+    """The transit space of each phase of the cycle, built once (the routing and the check
+    between frames share it; a detour keeps the phases' order). `path`: the cycle's path,
+    updated once the detours are in."""
+
+    def __init__(
+        self,
+        part: SheetMetalPart,
+        steps: list[CycleStep],
+        path: CyclePath,
+        scene: _PressScene,
+        model: RobotModel,
+        T_world_base: F64,
+        T_flange_tcp: F64,
+        checker: RobotCollisionChecker,
+        policy: CollisionPolicy,
+    ) -> None:
+        self.part, self.steps, self.path, self.scene = part, steps, path, scene
+        self.robot = (model, T_world_base, T_flange_tcp, checker, policy)
+        self.spaces: dict[int, TransitSpace] = {}
+
+    def of_phase(self, k: int) -> TransitSpace:
+        """Return the transit space of phase k (the part carried in it, if any)."""
+        if k in self.spaces:
+            return self.spaces[k]
+        phase = self.path.phases[k]
+        carried = None
+        if phase.kind == "carried":
+            step = self.steps[min(int(phase.step), len(self.steps) - 1)]
+            carried = Carried(
+                fold_state(self.part, phase.step, check=False),
+                T_part_tcp(self.part, phase.grasp or step.grasp, phase.step),
+                self.scene.at(
+                    phase.station or step.station,
+                    self.scene.open_z,
+                    _last_stop(self.path, phase),
+                    -1,
+                ),
+            )
+        self.spaces[k] = TransitSpace(*self.robot, carried)
+        return self.spaces[k]
+
+
+@dataclass(frozen=True)
+class _WaypointTimes:
+    """When the robot reaches each waypoint (`arrive`) and leaves it after its hold
+    (`leave`) [s]: the hold at waypoint i lasts [arrive[i], leave[i]]."""
+
+    arrive: F64
+    leave: F64
+
+    @classmethod
+    def of(cls, traj: Trajectory, path: CyclePath) -> _WaypointTimes:
+        """Return the waypoints' times of `traj` (with_holds already moved later waypoints'
+        times by the holds before them)."""
+        arrive = np.asarray(traj.waypoint_times, float)
+        leave = np.array(
+            [traj.waypoint_times[i] + path.waypoints[i].hold for i in range(len(arrive))]
+        )
+        return cls(arrive, leave)
+
+
+@dataclass(frozen=True, eq=False)
+class _PartFrames:
+    """Per checked frame (F,): the part's fold state, its pose T_world_part (F, 4, 4) [m],
+    fold step, the punch tip's height [m], the back-gauge setting (-1: none yet), the phase
+    index, the obstacles it is checked against, and the following robot's TCP distance [m]
+    from its grasp (0 outside a followed bend)."""
+
+    states: list[FoldedState]
+    T_world_part: F64
+    step: F64
+    punch_z: F64
+    stop: NDArray[np.int64]
+    phase: NDArray[np.int64]
+    obstacles: list[Obstacles]
+    follow_error: F64
+
+    def cycle_frames(
+        self,
+        times: F64,
+        q: F64,
+        part_hits: list[PartHit | None],
+        robot_part_hits: list[str | None],
+    ) -> CycleFrames:
+        """Return the checked frames at `times` (F,) [s], joints `q` (F, dof) [rad], with the
+        part's collisions and the robot's links touching the resting part."""
+        return CycleFrames(
+            self.follow_error,
+            times,
+            q,
+            self.step,
+            self.T_world_part,
+            self.punch_z,
+            self.stop,
+            self.phase,
+            tuple(part_hits),
+            tuple(robot_part_hits),
+        )
+
+
+def _part_hits(
+    part_frames: _PartFrames,
+    times: F64,
+    q: F64,
+    traj: Trajectory,
+    path: CyclePath,
+    spaces: _TransitSpaces,
+) -> list[PartHit | None]:
+    """Return, per frame, the part's first collision (None: free): at the frame, or, carried,
+    on the way to the next frame."""
+    hits = check_states(part_frames.states, part_frames.T_world_part, part_frames.obstacles)
+    between = carried_hits_between(
+        times,
+        q,
+        lambda t: traj.at(t)[0],
+        part_frames.phase,
+        lambda k: spaces.of_phase(k) if path.phases[k].kind == "carried" else None,
+    )
+    for n, hit in between.items():
+        hits[n] = hits[n] or hit
+    return hits
+
+
+class _FoldCache:
+    """The part's fold states by fold step (rounded to 1e-9), each built once."""
+
+    def __init__(self, part: SheetMetalPart) -> None:
+        self.part = part
+        self.states: dict[float, FoldedState] = {}
+
+    def __call__(self, step: float) -> FoldedState:
+        key = round(step, 9)
+        if key not in self.states:
+            self.states[key] = fold_state(self.part, step, check=False)
+        return self.states[key]
+
+
+@dataclass(frozen=True, eq=False)
+class _FrameContext:
+    """What every frame's part check reads: the part, the steps, the cell, the routed path,
+    the press scene, the waypoints' times, the joints at the waypoints (N, dof) [rad] and
+    the fold states."""
+
+    part: SheetMetalPart
+    steps: list[CycleStep]
+    cell: CycleCell
+    path: CyclePath
+    scene: _PressScene
+    wp_times: _WaypointTimes
+    q_wp: F64
+    fold: _FoldCache
+
+
+def _part_frames(ctx: _FrameContext, times: F64, q: F64, T_tcp: F64) -> _PartFrames:
+    """Return where the part is, how far it is folded and what it meets at each frame
+    `times` (F,) [s] of the robot at joints `q` (F, dof) (TCP poses `T_tcp` (F, 4, 4))."""
+    n_frames = len(times)
+    out = _PartFrames(
+        [],
+        np.zeros((n_frames, 4, 4)),
+        np.zeros(n_frames),
+        np.zeros(n_frames),
+        np.full(n_frames, -1),
+        np.zeros(n_frames, dtype=np.int64),
+        [],
+        np.zeros(n_frames),
+    )
+    steps, path = ctx.steps, ctx.path
+    last_stop = -1
+    for n, t in enumerate(times):
+        phase_index = _phase_at(path.phases, ctx.wp_times.arrive, ctx.wp_times.leave, t)
+        phase = path.phases[phase_index]
+        stop = _stop_of(path, phase)
+        if stop >= 0:
+            last_stop = stop
+        station = phase.station or steps[max(0, min(int(phase.step), len(steps) - 1))].station
+        step, punch_z = _fold_and_punch(ctx, phase, station, t, q[n])
+        state = ctx.fold(step)
+        out.states.append(state)
+        out.T_world_part[n] = _part_pose(ctx, phase, station, step, state, T_tcp[n])
+        if phase.kind == "bend" and not phase.pressed:
+            grasp = steps[phase.bend].grasp
+            T_grip = out.T_world_part[n] @ T_part_tcp(ctx.part, grasp, step, state)
+            out.follow_error[n] = float(np.linalg.norm(T_grip[:3, 3] - T_tcp[n][:3, 3]))
+        out.step[n] = step
+        out.punch_z[n] = punch_z
+        out.stop[n] = last_stop
+        out.phase[n] = phase_index
+        bend = phase.bend if phase.kind == "bend" else -1
+        out.obstacles.append(ctx.scene.at(station, punch_z, last_stop, bend))
+    return out
+
+
+def _fold_and_punch(
+    ctx: _FrameContext, phase: Phase, station: str, t: float, q_t: F64
+) -> tuple[float, float]:
+    """Return the part's fold step and the punch tip's height [m] over the die's top at
+    time t [s] in `phase` (the robot at `q_t`): the ram open outside bends; in a bend, how
+    far it has gone."""
+    part, press = ctx.part, ctx.cell.press
+    if phase.kind != "bend":
+        return phase.step, ctx.scene.open_z
+    k = phase.bend
+    arrive, leave = ctx.wp_times.arrive, ctx.wp_times.leave
+    fraction = _bend_fraction(ctx.path, phase, arrive, leave, t, q_t, ctx.q_wp)
+    step = k + fraction
+    grasp = ctx.steps[k].grasp
+    depth = bend_pose(ctx.fold(step), k, grasp, press, press.station(station)).depth
+    punch_z = part.thickness - depth
+    if fraction <= 0.0 and _in_first_hold(phase, arrive, leave, t):
+        punch_z = part.thickness  # the ram closes onto the sheet during this hold
+    return step, punch_z
+
+
+def _part_pose(
+    ctx: _FrameContext, phase: Phase, station: str, step: float, state: FoldedState, T_tcp: F64
+) -> F64:
+    """Return the part's pose T_world_part (4, 4) [m] at fold `step` in `phase`: where it
+    rests, where the punch and die hold it in a bend (the following robot is checked for
+    how far its TCP strays from the grasp, `follow_error`), else where the robot's TCP
+    `T_tcp` carries it."""
+    if phase.kind == "rest":
+        assert phase.T_world_part is not None
+        return phase.T_world_part
+    steps = ctx.steps
+    if phase.kind == "bend":
+        press = ctx.cell.press
+        k = phase.bend
+        on_die = bend_pose(state, k, steps[k].grasp, press, press.station(station))
+        return press.T_world_die @ on_die.T_die_part  # type: ignore[no-any-return]
+    grasp = phase.grasp or steps[min(int(np.floor(step + 1e-9)), len(steps) - 1)].grasp
+    part_tcp = T_part_tcp(ctx.part, grasp, step, state)
+    return T_tcp @ invert_transform(part_tcp)  # type: ignore[no-any-return]
+
+
+def _step_at(path: CyclePath, steps: list[CycleStep], frames: CycleFrames, t: float) -> int:
+    """Return the step (bend) whose grasp is in use at time t [s]."""
+    n = int(np.searchsorted(frames.times, t, side="right")) - 1
+    phase = path.phases[int(frames.phase[max(n, 0)])]
+    return int(phase.bend) if phase.kind == "bend" else _grasp_step(phase, steps)
 
 
 def _phase_at(phases: tuple[Phase, ...], arrive: F64, leave: F64, t: float) -> int:

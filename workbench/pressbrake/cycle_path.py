@@ -30,7 +30,7 @@ from workbench.pressbrake.bend_setup import (
     part_points,
 )
 from workbench.pressbrake.grasp import Grasp, T_flange_grasp
-from workbench.pressbrake.press import PressBrake, ram_time
+from workbench.pressbrake.press import PressBrake, Station, ram_time
 from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.part import SheetMetalPart
 
@@ -175,243 +175,329 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
     """Return the waypoints and phases of one cycle of `part` (its bends in sequence order,
     one `CycleStep` per bend). InputError: steps that do not match the sequence, a station
     the press lacks, a back-gauge stop that cannot be made (naming the bend)."""
-    nb = len(part.bends)
     if [s.bend for s in steps] != [b.name for b in part.bends]:
         raise InputError(
             f"steps: expected one per bend in sequence order {[b.name for b in part.bends]}, "
             f"got {[s.bend for s in steps]}"
         )
-    press = cell.press
-    R_wd = press.T_world_die[:3, :3]
-    fr = follow_fractions(cell.follow_steps)
-    wps: list[Waypoint] = [Waypoint(None, "home", stop=True)]
-    phases: list[Phase] = []
-    bend_poses: list[tuple[BendPose, ...]] = []
-    stops: list[GaugeStop] = []
+    path = _PathBuilder(part, cell, follow_fractions(cell.follow_steps))
+    start = _pick_the_blank(path, steps[0].grasp)
+    prev = steps[0].grasp
+    for k, st in enumerate(steps):
+        if k > 0 and not _same(prev, st.grasp):
+            start = _regrip(path, k, st, prev, start)
+        on_die = _on_die(path, k, st)
+        i_stop = _onto_the_die(path, k, st, on_die, start)
+        if cell.follow:
+            start = _follow_the_bend(path, k, st, on_die, i_stop)
+        else:
+            start = _let_the_press_bend(path, k, st, on_die, i_stop)
+        _out_of_the_die(path, st, on_die)
+        prev = st.grasp
+    _to_the_pallet(path, steps[-1].grasp, start)
+    path.phases.sort(key=lambda p: (p.start, p.end))
+    return CyclePath(
+        tuple(path.waypoints),
+        tuple(path.phases),
+        path.fractions,
+        tuple(path.bend_poses),
+        tuple(path.stops),
+    )
 
-    def add(w: Waypoint) -> int:
-        """Append `w`; a vertical move (lift) from the previous TCP pose goes straight, by IK
-        waypoints every `line_step` (the part is near a table)."""
+
+@dataclass(eq=False)
+class _PathBuilder:
+    """The cycle's path as it is built: waypoints, phases, the bend poses and the back-gauge
+    stops so far, of `part` in `cell` with bend-following `fractions`."""
+
+    part: SheetMetalPart
+    cell: CycleCell
+    fractions: F64
+    waypoints: list[Waypoint] = field(default_factory=lambda: [Waypoint(None, "home", stop=True)])
+    phases: list[Phase] = field(default_factory=list)
+    bend_poses: list[tuple[BendPose, ...]] = field(default_factory=list)
+    stops: list[GaugeStop] = field(default_factory=list)
+
+    def add(self, w: Waypoint) -> int:
+        """Append `w` and return its index; a vertical move (lift) from the previous TCP
+        pose goes straight, by IK waypoints every `line_step` (the part is near a table)."""
+        wps = self.waypoints
         prev = wps[-1].T_world_tcp if wps else None
         if prev is not None and w.T_world_tcp is not None:
             d = w.T_world_tcp[:3, 3] - prev[:3, 3]
             vertical = np.linalg.norm(d[:2]) < 1e-9 and abs(d[2]) > 1e-9
             if vertical and np.allclose(prev[:3, :3], w.T_world_tcp[:3, :3]):
-                step = min(cell.line_step, abs(d[2]) / 5)
+                step = min(self.cell.line_step, abs(d[2]) / 5)
                 for j, T in enumerate(_line(prev, w.T_world_tcp, step)[1:-1]):
                     wps.append(Waypoint(T, f"{w.label} ({j + 1})"))
         wps.append(w)
         return len(wps) - 1
 
-    lift = cell.lift
-    g0 = steps[0].grasp
-    T_blank_tcp = cell.T_world_blank @ T_part_tcp(part, g0, 0)
-    phases.append(Phase("rest", 0, 2, 0.0, None, cell.T_world_blank, label="blank on the stack"))
-    add(Waypoint(_lift(T_blank_tcp, lift), "above the blank", stop=True, free=True))
-    i_pick = add(
+    def add_line(self, T_a: F64, T_b: F64, label: str, *, to_end: bool = False) -> None:
+        """Append the IK waypoints of the straight move from `T_a` to `T_b`, every
+        `line_step` or less, both ends left out (`to_end`: `T_b` kept), labelled
+        `label (1)`, `label (2)`, ..."""
+        poses = _line(T_a, T_b, self.cell.line_step)
+        for j, T in enumerate(poses[1:] if to_end else poses[1:-1]):
+            self.add(Waypoint(T, f"{label} ({j + 1})"))
+
+
+def _pick_the_blank(path: _PathBuilder, grasp: Grasp) -> int:
+    """Add the blank on its stack and its pick; return the pick's waypoint index."""
+    cell, lift = path.cell, path.cell.lift
+    T_blank_tcp = cell.T_world_blank @ T_part_tcp(path.part, grasp, 0)
+    path.phases.append(
+        Phase("rest", 0, 2, 0.0, None, cell.T_world_blank, label="blank on the stack")
+    )
+    path.add(Waypoint(_lift(T_blank_tcp, lift), "above the blank", stop=True, free=True))
+    i_pick = path.add(
         Waypoint(T_blank_tcp, "pick the blank", stop=True, hold=cell.settle, action="grip")
     )
-    add(Waypoint(_lift(T_blank_tcp, lift), "lift the blank off the stack"))
-    start = i_pick
-    prev: Grasp | None = g0
-    ram = press.ram
-    for k, st in enumerate(steps):
-        station = press.station(st.station)
-        g = st.grasp
-        if prev is not None and k > 0 and not _same(prev, g):
-            # Regrip: put the part down at the station, take it again at the new grasp.
-            T_rest = cell.T_world_regrip
-            T_put = T_rest @ T_part_tcp(part, prev, k)
-            if cell.via_home:
-                add(
-                    Waypoint(
-                        None, f"via home to the regrip station (before bend {st.bend!r})", free=True
-                    )
-                )
-            add(
-                Waypoint(
-                    _lift(T_put, lift),
-                    f"above the regrip station (before bend {st.bend!r})",
-                    free=True,
-                )
-            )
-            i_put = add(
-                Waypoint(
-                    T_put,
-                    "put the part on the regrip station",
-                    stop=True,
-                    hold=cell.release,
-                    action="release",
-                )
-            )
-            phases.append(
-                Phase("carried", start, i_put, float(k), prev, label="to the regrip station")
-            )
-            T_new = T_rest @ T_part_tcp(part, g, k)
-            add(Waypoint(_lift(T_put, lift), "off the regrip station"))
-            add(Waypoint(_lift(T_new, lift), "above the new grasp", free=True))
-            i_take = add(
-                Waypoint(
-                    T_new,
-                    "take the part at its new grasp",
-                    stop=True,
-                    hold=cell.settle,
-                    action="grip",
-                )
-            )
-            phases.append(
-                Phase("rest", i_put, i_take, float(k), None, T_rest, label="on the regrip station")
-            )
-            add(Waypoint(_lift(T_new, lift), "off the regrip station with the part"))
-            start = i_take
-        states = [fold_state(part, k + f, check=False) for f in fr]
-        poses = tuple(bend_pose(s, k, g, press, station) for s in states)
-        bend_poses.append(poses)
-        pts_die = [
-            (p.T_die_part @ np.c_[pts, np.ones(len(pts))].T).T[:, :3]
-            for p, pts in ((poses[0], part_points(states[0])), (poses[-1], part_points(states[-1])))
-        ]
-        stop = gauge_stop(pts_die[0], press, station)
-        if stop.problem is not None:
-            raise InputError(f"bend {st.bend!r}: {stop.problem}")
-        stops.append(stop)
-        tcp = [
-            press.T_world_die @ p.T_die_part @ T_part_tcp(part, g, k + f)
-            for p, f in zip(poses, fr, strict=True)
-        ]
-        close = press_wait(ram.open / ram.approach_speed)
-        opening = press_wait((ram.open + poses[-1].depth) / ram.return_speed)
-        # In front of the die, over to just above the stop, then straight down onto the die
-        # (`DROP` above it: the joints' path between the IK waypoints of the slide may sag).
-        if cell.via_home and wps[-1].label.startswith(("lift the blank", "off the regrip")):
-            add(Waypoint(None, f"via home to the die for bend {st.bend!r}", free=True))
-        # in front: the approach offset, or farther until the whole part is in front of the
-        # punch and beam (`CLEAR` before the bend line), so the moves to and from it do not
-        # sweep the part through the press
-        front = _shift(tcp[0], R_wd, clear_of_tools(cell.approach, pts_die[0]))
-        over = _shift(tcp[0], R_wd, np.array([0.0, 0.0, DROP]))
-        add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True, free=True))
-        for j, T in enumerate(_line(front, over, cell.line_step)[1:]):
-            add(Waypoint(T, f"onto the die for bend {st.bend!r} ({j + 1})"))
-        wps[-1] = Waypoint(over, f"over the stop for bend {st.bend!r}", stop=True)
-        i_stop = add(Waypoint(tcp[0], f"bend {st.bend!r} against the back-gauge", stop=True))
-        phases.append(
-            Phase(
-                "carried",
-                start,
-                i_stop,
-                float(k),
-                g,
-                punch_z=ram.open + part.thickness,
-                stop=stop,
-                station=station.name,
-                label=f"to the die for bend {st.bend!r}",
+    path.add(Waypoint(_lift(T_blank_tcp, lift), "lift the blank off the stack"))
+    return i_pick
+
+
+def _regrip(path: _PathBuilder, k: int, st: CycleStep, old: Grasp, start: int) -> int:
+    """Add the regrip before bend k: put the part down at the station (held at `old` since
+    waypoint `start`), take it again at the step's grasp; return the take's index."""
+    part, cell, lift = path.part, path.cell, path.cell.lift
+    T_rest = cell.T_world_regrip
+    T_put = T_rest @ T_part_tcp(part, old, k)
+    if cell.via_home:
+        path.add(
+            Waypoint(None, f"via home to the regrip station (before bend {st.bend!r})", free=True)
+        )
+    path.add(
+        Waypoint(
+            _lift(T_put, lift), f"above the regrip station (before bend {st.bend!r})", free=True
+        )
+    )
+    i_put = path.add(
+        Waypoint(
+            T_put,
+            "put the part on the regrip station",
+            stop=True,
+            hold=cell.release,
+            action="release",
+        )
+    )
+    path.phases.append(Phase("carried", start, i_put, float(k), old, label="to the regrip station"))
+    T_new = T_rest @ T_part_tcp(part, st.grasp, k)
+    path.add(Waypoint(_lift(T_put, lift), "off the regrip station"))
+    path.add(Waypoint(_lift(T_new, lift), "above the new grasp", free=True))
+    i_take = path.add(
+        Waypoint(
+            T_new, "take the part at its new grasp", stop=True, hold=cell.settle, action="grip"
+        )
+    )
+    path.phases.append(
+        Phase("rest", i_put, i_take, float(k), None, T_rest, label="on the regrip station")
+    )
+    path.add(Waypoint(_lift(T_new, lift), "off the regrip station with the part"))
+    return i_take
+
+
+@dataclass(frozen=True, eq=False)
+class _OnDie:
+    """Bend k on the die at the following fractions: the fold states, the part's poses on
+    the die, its points (P, 3) [m] in the die frame at the stop and at the end, the station,
+    the back-gauge stop and the TCP poses (world) of the step's grasp."""
+
+    states: list[FoldedState]
+    poses: tuple[BendPose, ...]
+    points_die: tuple[F64, F64]
+    station: Station
+    stop: GaugeStop
+    tcp: list[F64]
+
+
+def _on_die(path: _PathBuilder, k: int, st: CycleStep) -> _OnDie:
+    """Return bend k of the step on the die and record its poses and stop. InputError: a
+    station the press lacks, a stop that cannot be made."""
+    part, press = path.part, path.cell.press
+    station = press.station(st.station)
+    states = [fold_state(part, k + f, check=False) for f in path.fractions]
+    poses = tuple(bend_pose(s, k, st.grasp, press, station) for s in states)
+    path.bend_poses.append(poses)
+    pts_die = [
+        (p.T_die_part @ np.c_[pts, np.ones(len(pts))].T).T[:, :3]
+        for p, pts in ((poses[0], part_points(states[0])), (poses[-1], part_points(states[-1])))
+    ]
+    stop = gauge_stop(pts_die[0], press, station)
+    if stop.problem is not None:
+        raise InputError(f"bend {st.bend!r}: {stop.problem}")
+    path.stops.append(stop)
+    tcp = [
+        press.T_world_die @ p.T_die_part @ T_part_tcp(part, st.grasp, k + f)
+        for p, f in zip(poses, path.fractions, strict=True)
+    ]
+    return _OnDie(states, poses, (pts_die[0], pts_die[1]), station, stop, tcp)
+
+
+def _onto_the_die(path: _PathBuilder, k: int, st: CycleStep, on_die: _OnDie, start: int) -> int:
+    """Add the move of the part (carried since waypoint `start`) to the die for bend k: in
+    front of it, over to just above the stop, then straight down onto the die (`DROP` above
+    it: the joints' path between the IK waypoints of the slide may sag); return the stop's
+    waypoint index."""
+    cell, press = path.cell, path.cell.press
+    R_wd = press.T_world_die[:3, :3]
+    at_stop = on_die.tcp[0]
+    if cell.via_home and path.waypoints[-1].label.startswith(("lift the blank", "off the regrip")):
+        path.add(Waypoint(None, f"via home to the die for bend {st.bend!r}", free=True))
+    # in front: the approach offset, or farther until the whole part is in front of the
+    # punch and beam (`CLEAR` before the bend line), so the moves to and from it do not
+    # sweep the part through the press
+    front = _shift(at_stop, R_wd, clear_of_tools(cell.approach, on_die.points_die[0]))
+    over = _shift(at_stop, R_wd, np.array([0.0, 0.0, DROP]))
+    path.add(Waypoint(front, f"in front of the die for bend {st.bend!r}", stop=True, free=True))
+    path.add_line(front, over, f"onto the die for bend {st.bend!r}", to_end=True)
+    path.waypoints[-1] = Waypoint(over, f"over the stop for bend {st.bend!r}", stop=True)
+    i_stop = path.add(Waypoint(at_stop, f"bend {st.bend!r} against the back-gauge", stop=True))
+    path.phases.append(
+        Phase(
+            "carried",
+            start,
+            i_stop,
+            float(k),
+            st.grasp,
+            punch_z=press.ram.open + path.part.thickness,
+            stop=on_die.stop,
+            station=on_die.station.name,
+            label=f"to the die for bend {st.bend!r}",
+        )
+    )
+    return i_stop
+
+
+def _follow_the_bend(path: _PathBuilder, k: int, st: CycleStep, on_die: _OnDie, i_stop: int) -> int:
+    """Add bend k with the robot following the flange: the ram closes while it holds at the
+    stop, a waypoint per fraction timed by the ram, the ram opens at the last; return the
+    last's index."""
+    ram = path.cell.press.ram
+    poses, tcp = on_die.poses, on_die.tcp
+    close = press_wait(ram.open / ram.approach_speed)
+    opening = press_wait((ram.open + poses[-1].depth) / ram.return_speed)
+    depth = np.array([p.depth for p in poses])
+    wps = path.waypoints
+    wps[i_stop] = Waypoint(tcp[0], wps[i_stop].label, stop=True, hold=close, action="press_close")
+    n_fractions = len(path.fractions)
+    for j in range(1, n_fractions):
+        dt = (depth[j] - depth[j - 1]) / ram.bending_speed
+        last = j == n_fractions - 1
+        path.add(
+            Waypoint(
+                tcp[j],
+                f"bend {st.bend!r} at {np.degrees(on_die.states[j].angles[k]):.0f}°",
+                stop=last,
+                hold=opening if last else 0.0,
+                action="press_open" if last else "",
+                bend_time=max(dt, 1e-3),
             )
         )
-        depth = np.array([p.depth for p in poses])
-        if cell.follow:
-            wps[i_stop] = Waypoint(
-                tcp[0], wps[i_stop].label, stop=True, hold=close, action="press_close"
-            )
-            for j in range(1, len(fr)):
-                dt = (depth[j] - depth[j - 1]) / ram.bending_speed
-                last = j == len(fr) - 1
-                add(
-                    Waypoint(
-                        tcp[j],
-                        f"bend {st.bend!r} at {np.degrees(states[j].angles[k]):.0f}°",
-                        stop=last,
-                        hold=opening if last else 0.0,
-                        action="press_open" if last else "",
-                        bend_time=max(dt, 1e-3),
-                    )
-                )
-            i_end = len(wps) - 1
-            phases.append(
-                Phase(
-                    "bend",
-                    i_stop,
-                    i_end,
-                    float(k),
-                    g,
-                    bend=k,
-                    f0=0.0,
-                    f1=1.0,
-                    stop=stop,
-                    station=station.name,
-                    label=f"bend {st.bend!r}",
-                )
-            )
-        else:
-            # Let go, stand back along the tool, wait for the bend, grip the bent part again.
-            bend_total = press_wait(ram_time(press, poses[-1].depth))
-            wps[i_stop] = Waypoint(
-                tcp[0], wps[i_stop].label, stop=True, hold=cell.release, action="release"
-            )
-            back = tcp[0] @ _tz(-lift)
-            i_back = add(
-                Waypoint(
-                    back,
-                    f"clear of the part during bend {st.bend!r}",
-                    stop=True,
-                    hold=bend_total,
-                    action="press_bend",
-                )
-            )
-            add(Waypoint(tcp[-1] @ _tz(-lift), f"over the bent part after {st.bend!r}"))
-            i_end = add(
-                Waypoint(
-                    tcp[-1],
-                    f"grip the part after bend {st.bend!r}",
-                    stop=True,
-                    hold=cell.settle,
-                    action="grip",
-                )
-            )
-            phases.append(
-                Phase(
-                    "bend",
-                    i_stop,
-                    i_end,
-                    float(k),
-                    None,
-                    bend=k,
-                    f0=0.0,
-                    f1=1.0,
-                    pressed=True,
-                    stop=stop,
-                    station=station.name,
-                    label=f"bend {st.bend!r} (the press holds the part)",
-                )
-            )
-            del i_back
-        up = _shift(tcp[-1], R_wd, np.array([0.0, 0.0, cell.approach[2] + poses[-1].depth]))
-        for j, T in enumerate(_line(tcp[-1], up, cell.line_step)[1:-1]):
-            add(Waypoint(T, f"out of the die after bend {st.bend!r} ({j + 1})"))
-        add(Waypoint(up, f"lift out of the die after bend {st.bend!r}", stop=True))
-        back = clear_of_tools(cell.approach, pts_die[-1])
-        out = _shift(up, R_wd, np.array([0.0, back[1], 0.0]))
-        for j, T in enumerate(_line(up, out, cell.line_step)[1:-1]):
-            add(Waypoint(T, f"back from the die after bend {st.bend!r} ({j + 1})"))
-        add(Waypoint(out, f"pull back from the die after bend {st.bend!r}"))
-        start = i_end
-        prev = g
-    g_last = steps[-1].grasp
+    i_end = len(wps) - 1
+    path.phases.append(
+        Phase(
+            "bend",
+            i_stop,
+            i_end,
+            float(k),
+            st.grasp,
+            bend=k,
+            f0=0.0,
+            f1=1.0,
+            stop=on_die.stop,
+            station=on_die.station.name,
+            label=f"bend {st.bend!r}",
+        )
+    )
+    return i_end
+
+
+def _let_the_press_bend(
+    path: _PathBuilder, k: int, st: CycleStep, on_die: _OnDie, i_stop: int
+) -> int:
+    """Add bend k made by the press alone: let go, stand back along the tool, wait for the
+    bend, grip the bent part again; return the grip's index."""
+    cell, press = path.cell, path.cell.press
+    tcp = on_die.tcp
+    bend_total = press_wait(ram_time(press, on_die.poses[-1].depth))
+    wps = path.waypoints
+    wps[i_stop] = Waypoint(
+        tcp[0], wps[i_stop].label, stop=True, hold=cell.release, action="release"
+    )
+    path.add(
+        Waypoint(
+            tcp[0] @ _tz(-cell.lift),
+            f"clear of the part during bend {st.bend!r}",
+            stop=True,
+            hold=bend_total,
+            action="press_bend",
+        )
+    )
+    path.add(Waypoint(tcp[-1] @ _tz(-cell.lift), f"over the bent part after {st.bend!r}"))
+    i_end = path.add(
+        Waypoint(
+            tcp[-1],
+            f"grip the part after bend {st.bend!r}",
+            stop=True,
+            hold=cell.settle,
+            action="grip",
+        )
+    )
+    path.phases.append(
+        Phase(
+            "bend",
+            i_stop,
+            i_end,
+            float(k),
+            None,
+            bend=k,
+            f0=0.0,
+            f1=1.0,
+            pressed=True,
+            stop=on_die.stop,
+            station=on_die.station.name,
+            label=f"bend {st.bend!r} (the press holds the part)",
+        )
+    )
+    return i_end
+
+
+def _out_of_the_die(path: _PathBuilder, st: CycleStep, on_die: _OnDie) -> None:
+    """Add the moves after the bend: lift the part straight out of the die, then pull it
+    back until it is clear of the tools."""
+    cell = path.cell
+    R_wd = cell.press.T_world_die[:3, :3]
+    at_end = on_die.tcp[-1]
+    up = _shift(at_end, R_wd, np.array([0.0, 0.0, cell.approach[2] + on_die.poses[-1].depth]))
+    path.add_line(at_end, up, f"out of the die after bend {st.bend!r}")
+    path.add(Waypoint(up, f"lift out of the die after bend {st.bend!r}", stop=True))
+    back = clear_of_tools(cell.approach, on_die.points_die[1])
+    out = _shift(up, R_wd, np.array([0.0, back[1], 0.0]))
+    path.add_line(up, out, f"back from the die after bend {st.bend!r}")
+    path.add(Waypoint(out, f"pull back from the die after bend {st.bend!r}"))
+
+
+def _to_the_pallet(path: _PathBuilder, grasp: Grasp, start: int) -> None:
+    """Add the transfer (carried at `grasp` since waypoint `start`) through the via poses to
+    the pallet, the part put down there, and the robot's way home."""
+    part, cell, lift = path.part, path.cell, path.cell.lift
+    nb = len(part.bends)
     for i, T in enumerate(cell.T_world_vias):
-        add(Waypoint(T, f"transfer via {i + 1}", free=True))
-    T_drop = cell.T_world_pallet @ T_part_tcp(part, g_last, nb)
+        path.add(Waypoint(T, f"transfer via {i + 1}", free=True))
+    T_drop = cell.T_world_pallet @ T_part_tcp(part, grasp, nb)
     if cell.via_home and not len(cell.T_world_vias):
-        add(Waypoint(None, "via home to the pallet", free=True))
-    add(Waypoint(_lift(T_drop, lift), "above the pallet", free=True))
-    i_drop = add(
+        path.add(Waypoint(None, "via home to the pallet", free=True))
+    path.add(Waypoint(_lift(T_drop, lift), "above the pallet", free=True))
+    i_drop = path.add(
         Waypoint(
             T_drop, "put the part on the pallet", stop=True, hold=cell.release, action="release"
         )
     )
-    phases.append(Phase("carried", start, i_drop, float(nb), g_last, label="to the pallet"))
-    add(Waypoint(_lift(T_drop, lift), "off the pallet"))
-    i_home = add(Waypoint(None, "home", stop=True, free=True))
-    phases.append(
+    path.phases.append(Phase("carried", start, i_drop, float(nb), grasp, label="to the pallet"))
+    path.add(Waypoint(_lift(T_drop, lift), "off the pallet"))
+    i_home = path.add(Waypoint(None, "home", stop=True, free=True))
+    path.phases.append(
         Phase(
             "rest",
             i_drop,
@@ -422,8 +508,6 @@ def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) ->
             label="finished part on the pallet",
         )
     )
-    phases.sort(key=lambda p: (p.start, p.end))
-    return CyclePath(tuple(wps), tuple(phases), fr, tuple(bend_poses), tuple(stops))
 
 
 #: How far [m] in front of the bend line the part's rearmost point must be before the

@@ -351,9 +351,13 @@ def find_sequences(
     return replace(found, stats=replace(found.stats, access=ray_access))
 
 
+Verify = Callable[[SequencePlan], SequencePlan | Rejected | str]
+"""verify(plan): the plan with its planned cycle (verified), or why the full cycle fails."""
+
+
 def _search(
     ctx: SweepContext,
-    verify: Callable[[SequencePlan], SequencePlan | Rejected | str] | None,
+    verify: Verify | None,
     engine: str,
     address: str | None,
     time_limit: float | None,
@@ -365,65 +369,316 @@ def _search(
     s = settings or SearchSettings()
     if time_limit is not None and not (np.isfinite(time_limit) and time_limit > 0):
         raise InputError(f"time_limit: must be > 0 s or None, got {time_limit!r}")
-    report = progress or (lambda f, m: None)
     part = ctx.part()
-    nb = len(part.bends)
-    if nb == 0:
+    if len(part.bends) == 0:
         raise InputError("bending.part: the part has no bends; nothing to sequence")
     if not ctx.grasps:
         raise InputError("grasps: no candidate grasp (every flange is smaller than the inset)")
-    G, dof = len(ctx.grasps), ctx.reach.model.dof
     t0 = time.perf_counter()
+    rests = _Rests.of(ctx, robot_free)
+    search = _Search(ctx, s, verify, robot_free, rests, progress or (lambda f, m: None))
+    search.queue.push_root(rests.root(ctx))
+    queue = search.queue
     deadline = None if time_limit is None else t0 + float(time_limit)
-    evals: dict[tuple[tuple[int, ...], int], BendEval] = {}
-    tally = _Tally()
-    rejected: list[tuple[tuple[str, ...], str]] = []
-    plans: list[SequencePlan] = []
-    verified = 0
-    note = ""
-    names = [b.name for b in part.bends]
-    ram_floor = (
-        ctx.press.ram.open * (1 / ctx.press.ram.approach_speed + 1 / ctx.press.ram.return_speed)
-        + s.handling_time
-    )
-    # Where the part rests: the first grasp must reach the blank, the last the pallet; the
-    # moves home -> stack and last bend -> pallet count in the estimate.
-    q_home = np.tile(ctx.reach.q, (G, 1))
-    at_blank, q_blank = np.ones(G, bool), np.full((G, dof), np.nan)
-    if ctx.T_world_blank is not None:
-        at_blank, q_blank = reach_where_part_rests(ctx, ctx.T_world_blank, 0)
-        if robot_free is not None:
-            lying = (fold_state(part, 0, check=False).solid(), ctx.T_world_blank)
-            at_blank &= _free(robot_free, q_blank, at_blank, lying)
-    at_pallet, q_pallet = np.ones(G, bool), np.full((G, dof), np.nan)
-    if ctx.T_world_pallet is not None:
-        at_pallet, q_pallet = reach_where_part_rests(ctx, ctx.T_world_pallet, nb)
-        if robot_free is not None:
-            lying = (fold_state(part, nb, check=False).solid(), ctx.T_world_pallet)
-            at_pallet &= _free(robot_free, q_pallet, at_pallet, lying)
-    vmax = ctx.reach.model.max_velocity
-    station_free: dict[tuple[int, ...], NDArray[np.bool_]] = {}
+    while queue.heap:
+        if cancel is not None and cancel():
+            search.note += "cancelled: the plans found so far are returned. "
+            break
+        if deadline is not None and time.perf_counter() > deadline:
+            assert time_limit is not None
+            search.stop_at_the_time_limit(time_limit)
+            break
+        # A complete order is taken only from the top of the queue: its cost is exact and no
+        # open prefix can end cheaper. While diving, the first one found ends the dive; it
+        # goes back into the queue to wait its turn.
+        if queue.top_is_complete():
+            n = queue.pop()
+            if queue.diving:
+                queue.end_the_dive(n)
+                continue
+            if search.accept(n):
+                break
+            continue
+        open_nodes = queue.pop_open(1 if queue.diving else s.width)
+        search.evaluate_children(open_nodes, engine, address, cancel, deadline)
+        search.expand(open_nodes)
+    return search.result(engine, time.perf_counter() - t0)
 
-    def _at_free_station(e: BendEval, done: tuple[int, ...]) -> BendEval:
+
+@dataclass(frozen=True, eq=False)
+class _Rests:
+    """Where the part rests at the cycle's ends: per grasp (G,), whether the robot takes the
+    blank off its stack and puts the finished part on the pallet (reachable and, given
+    `robot_free`, collision-free with the part lying there), and its joints there (G, dof)
+    (NaN: unknown; all True and NaN where the cell has no stack or pallet)."""
+
+    at_blank: NDArray[np.bool_]
+    q_blank: F64
+    at_pallet: NDArray[np.bool_]
+    q_pallet: F64
+
+    @classmethod
+    def of(cls, ctx: SweepContext, robot_free: RobotFree | None) -> _Rests:
+        """Return the rests of the part in `ctx`. InputError: no grasp at the stack, or at
+        the pallet."""
+        part = ctx.part()
+        nb = len(part.bends)
+        G, dof = len(ctx.grasps), ctx.reach.model.dof
+        at_blank, q_blank = np.ones(G, bool), np.full((G, dof), np.nan)
+        if ctx.T_world_blank is not None:
+            at_blank, q_blank = reach_where_part_rests(ctx, ctx.T_world_blank, 0)
+            if robot_free is not None:
+                lying = (fold_state(part, 0, check=False).solid(), ctx.T_world_blank)
+                at_blank &= _free(robot_free, q_blank, at_blank, lying)
+        at_pallet, q_pallet = np.ones(G, bool), np.full((G, dof), np.nan)
+        if ctx.T_world_pallet is not None:
+            at_pallet, q_pallet = reach_where_part_rests(ctx, ctx.T_world_pallet, nb)
+            if robot_free is not None:
+                lying = (fold_state(part, nb, check=False).solid(), ctx.T_world_pallet)
+                at_pallet &= _free(robot_free, q_pallet, at_pallet, lying)
+        if not at_blank.any():
+            raise InputError(
+                "bending.blank: the robot reaches no candidate grasp of the blank on its "
+                "stack; move the stack or its pose nearer the robot"
+            )
+        if not at_pallet.any():
+            raise InputError(
+                "bending.pallet: the robot reaches no candidate grasp of the finished part on "
+                "the pallet; move the pallet nearer the robot"
+            )
+        return cls(at_blank, q_blank, at_pallet, q_pallet)
+
+    def root(self, ctx: SweepContext) -> _Node:
+        """Return the search's root: no bend done, each grasp's cost the move from home to
+        the blank (the grasps that take it)."""
+        G = len(ctx.grasps)
+        vmax = ctx.reach.model.max_velocity
+        q_home = np.tile(ctx.reach.q, (G, 1))
+        cost = np.where(self.at_blank, transit_time(q_home, self.q_blank, vmax), np.inf)
+        return _Node((), cost, np.ones(G, bool), self.q_blank, np.arange(G), None)
+
+    def finish(self, node: _Node, vmax: F64) -> None:
+        """Add the move to the pallet to a complete sequence (grasps that reach it)."""
+        to_pallet = transit_time(node.q1, self.q_pallet, vmax)
+        node.cost = np.where(self.at_pallet, node.cost + to_pallet, np.inf)
+
+
+class _Queue:
+    """Open prefixes and complete sequences of `nb` bends, best first: deepest first while
+    `diving` (until the first complete sequence), then by least cost plus the heuristic
+    (`ram_floor` per remaining bend); ties by depth, then bend order, then arrival."""
+
+    def __init__(self, nb: int, ram_floor: float) -> None:
+        self.nb, self.ram_floor = nb, ram_floor
+        self.diving = True
+        self.counter = 0
+        self.heap: list[tuple[tuple[float, ...], int, _Node]] = []
+
+    def key(self, n: _Node) -> tuple[float, ...]:
+        """Return the queue's key of `n`."""
+        f = float(np.min(n.cost)) + self.ram_floor * (self.nb - len(n.prefix))
+        order = tuple(float(i) for i in n.prefix)
+        if self.diving:
+            return (-len(n.prefix), f, *order)
+        return (f, -len(n.prefix), *order)
+
+    def push_root(self, root: _Node) -> None:
+        """Start the queue with `root` (arrival 0)."""
+        self.heap = [(self.key(root), 0, root)]
+
+    def push(self, n: _Node) -> None:
+        """Add `n` (after everything pushed before it among equal keys)."""
+        self.counter += 1
+        heapq.heappush(self.heap, (self.key(n), self.counter, n))
+
+    def pop(self) -> _Node:
+        """Remove and return the first node."""
+        return heapq.heappop(self.heap)[2]
+
+    def top_is_complete(self) -> bool:
+        """Return whether the first node is a complete sequence."""
+        return bool(self.heap) and len(self.heap[0][2].prefix) == self.nb
+
+    def pop_open(self, width: int) -> list[_Node]:
+        """Remove and return up to `width` open prefixes from the top (stopping at a
+        complete sequence)."""
+        batch: list[_Node] = []
+        while self.heap and len(batch) < width and len(self.heap[0][2].prefix) < self.nb:
+            batch.append(self.pop())
+        return [n for n in batch if len(n.prefix) < self.nb]
+
+    def end_the_dive(self, first_complete: _Node) -> None:
+        """Stop diving: `first_complete` goes back in, every key is made again by cost."""
+        self.diving = False
+        self.counter += 1
+        self.heap.append((self.key(first_complete), self.counter, first_complete))
+        self.heap = [(self.key(h[2]), h[1], h[2]) for h in self.heap]
+        heapq.heapify(self.heap)
+
+    def best_complete(self) -> _Node | None:
+        """Return the best complete sequence in the queue (None: none)."""
+        best = sorted((h for h in self.heap if len(h[2].prefix) == self.nb), key=lambda h: h[0])
+        return best[0][2] if best else None
+
+    def deepest(self) -> _Node | None:
+        """Return the deepest node in the queue (the first of the deepest; None: empty)."""
+        return max((h[2] for h in self.heap), key=lambda n: len(n.prefix), default=None)
+
+
+class _Search:
+    """One search's state: the queue, the bend verdicts evaluated so far (per (bends done,
+    next bend)), the work tally, the rejected branches, the plans accepted, the full cycles
+    verified and the note."""
+
+    def __init__(
+        self,
+        ctx: SweepContext,
+        settings: SearchSettings,
+        verify: Verify | None,
+        robot_free: RobotFree | None,
+        rests: _Rests,
+        report: Progress,
+    ) -> None:
+        self.ctx, self.s, self.verify, self.robot_free = ctx, settings, verify, robot_free
+        self.rests, self.report = rests, report
+        self.part = ctx.part()
+        self.nb = len(self.part.bends)
+        self.names = [b.name for b in self.part.bends]
+        ram = ctx.press.ram
+        ram_floor = ram.open * (1 / ram.approach_speed + 1 / ram.return_speed)
+        self.queue = _Queue(self.nb, ram_floor + settings.handling_time)
+        self.evals: dict[tuple[tuple[int, ...], int], BendEval] = {}
+        self.station_free: dict[tuple[int, ...], NDArray[np.bool_]] = {}
+        self.tally = _Tally()
+        self.rejected: list[tuple[tuple[str, ...], str]] = []
+        self.plans: list[SequencePlan] = []
+        self.verified = 0
+        self.note = ""
+
+    def finish(self, node: _Node) -> None:
+        """Add the move to the pallet to a complete sequence (grasps that reach it)."""
+        self.rests.finish(node, self.ctx.reach.model.max_velocity)
+
+    def accept(self, n: _Node) -> bool:
+        """Verify complete order `n`; return True when the search is over (enough plans, or
+        the budget of full cycles spent)."""
+        s = self.s
+        plan = _plan_of(n, self.ctx)
+        if self.verify is not None:
+            if self.verified >= s.max_verify:
+                self.note += (
+                    f"stopped after checking {s.max_verify} full cycles "
+                    "(SearchSettings.max_verify). "
+                )
+                return True
+            self.verified += 1
+            self.report(
+                min(0.99, 0.5 + 0.5 * len(self.plans) / s.max_plans),
+                f"checking the full cycle of {' '.join(plan.sequence)}",
+            )
+            checked = self.verify(plan)
+            if isinstance(checked, (str, Rejected)):
+                self._refused(
+                    n, plan, checked if isinstance(checked, Rejected) else Rejected(checked)
+                )
+                return False
+            plan = checked
+        self.plans.append(plan)
+        return len(self.plans) >= s.max_plans
+
+    def _refused(self, n: _Node, plan: SequencePlan, why: Rejected) -> None:
+        """Record why the full cycle of `n` fails; where one step's grasp is to blame, queue
+        the same order with that grasp banned at that step, if any grasp is left."""
+        self.rejected.append((plan.sequence, why.reason))
+        if why.step is not None:
+            ban = n.banned | {(why.step, plan.grasp_ids[why.step])}
+            again = _rechain(n, ban, self.ctx, self.s, self.finish)
+            if again is not None:
+                self.queue.push(again)
+
+    def stop_at_the_time_limit(self, time_limit: float) -> None:
+        """Note the stop, the deepest order reached and, with no plan yet, check the best
+        complete order found after the limit (a plan, not nothing)."""
+        self.note += (
+            f"stopped at the time limit of {time_limit:g} s: the best plans found so far "
+            "are returned; a longer limit may find better ones. "
+        )
+        deepest = self.queue.deepest()
+        if deepest is not None and len(deepest.prefix) < self.nb and not self.plans:
+            self.note += (
+                f"The deepest order reached: {' '.join(self.names[i] for i in deepest.prefix)} "
+                f"({len(deepest.prefix)} of {self.nb} bends). "
+            )
+        if not self.plans and self.verify is not None:
+            best = self.queue.best_complete()
+            if best is not None:
+                self.note += "The best complete order found was checked after the limit. "
+                self.accept(best)
+
+    def evaluate_children(
+        self,
+        open_nodes: list[_Node],
+        engine: str,
+        address: str | None,
+        cancel: Callable[[], bool] | None,
+        deadline: float | None,
+    ) -> None:
+        """Evaluate every (bends done, next bend) of the children of `open_nodes` not yet
+        evaluated, in one batch run; keep the verdicts with the robot's checks at the die
+        and at the regrip station applied."""
+        nb = self.nb
+        needed = []
+        for n in open_nodes:
+            done = tuple(sorted(n.prefix))
+            for b in range(nb):
+                if b not in n.prefix and (done, b) not in self.evals and (done, b) not in needed:
+                    needed.append((done, b))
+        if not needed:
+            return
+        left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
+        run = run_batches(
+            evaluate_batch,
+            needed,
+            context=self.ctx,
+            engine=engine,
+            address=address,
+            batch_size=self.s.batch_size,
+            cancel=cancel,
+            time_limit=left,
+        )
+        self.tally.rounds += 1
+        self.tally.runs.append(run.stats)
+        for k, r in zip(needed, run.results, strict=True):
+            if r is not None:
+                self.evals[k] = self._at_free_station(self._robot_free_at_die(r), k[0])
+        self.tally.candidates += sum(r is not None for r in run.results)
+        self.report(
+            min(0.5, 0.5 * len(self.evals) / max(1, nb * 2 ** (nb - 1))),
+            f"{len(self.evals)} bend candidates checked",
+        )
+
+    def _at_free_station(self, e: BendEval, done: tuple[int, ...]) -> BendEval:
         """Return `e` with only the grasps the robot takes collision-free at the regrip
         station (the part lying there, folded by `done`) left in its `at_station`."""
+        ctx, robot_free = self.ctx, self.robot_free
         if e.at_station is None or robot_free is None or ctx.T_world_regrip is None:
             return e
-        if done not in station_free:
-            p = ordered_part(part, done, e.bend)
+        if done not in self.station_free:
+            p = ordered_part(self.part, done, e.bend)
             reach, q = reach_where_part_rests(ctx, ctx.T_world_regrip, len(done), p)
             lying = (fold_state(p, len(done), check=False).solid(), ctx.T_world_regrip)
-            station_free[done] = _free(robot_free, q, reach, lying)
-        return replace(e, at_station=e.at_station & station_free[done])
+            self.station_free[done] = _free(robot_free, q, reach, lying)
+        return replace(e, at_station=e.at_station & self.station_free[done])
 
-    def _robot_free_at_die(e: BendEval) -> BendEval:
+    def _robot_free_at_die(self, e: BendEval) -> BendEval:
         """Return `e` with the grasps whose robot collides (with itself, the press or the
         cell) in front of the die, at the stop or at the end of the bend refused, naming where."""
+        robot_free = self.robot_free
         if robot_free is None or e.q_front is None or not e.grasp_ok.any():
             return e
         ok = e.grasp_ok.copy()
         reasons = list(e.grasp_reason)
-        name = names[e.bend]
+        name = self.names[e.bend]
         for q, where in (
             (e.q_front, "in front of the die"),
             (e.q0, "at the stop"),
@@ -432,194 +687,68 @@ def _search(
             free = _free(robot_free, q, ok, None)
             for i in np.flatnonzero(ok & ~free):
                 reasons[i] = (
-                    f"bend {name!r}: grasp {grasp_label(ctx.grasps[i])}: the robot collides "
+                    f"bend {name!r}: grasp {grasp_label(self.ctx.grasps[i])}: the robot collides "
                     f"(with itself, the press or the cell) {where}"
                 )
             ok &= free
         return replace(e, grasp_ok=ok, grasp_reason=tuple(reasons))
 
-    def finish(node: _Node) -> None:
-        """Add the move to the pallet to a complete sequence (grasps that reach it)."""
-        to_pallet = transit_time(node.q1, q_pallet, vmax)
-        node.cost = np.where(at_pallet, node.cost + to_pallet, np.inf)
-
-    if not at_blank.any():
-        raise InputError(
-            "bending.blank: the robot reaches no candidate grasp of the blank on its stack; "
-            "move the stack or its pose nearer the robot"
-        )
-    if not at_pallet.any():
-        raise InputError(
-            "bending.pallet: the robot reaches no candidate grasp of the finished part on the "
-            "pallet; move the pallet nearer the robot"
-        )
-    root = _Node(
-        (),
-        np.where(at_blank, transit_time(q_home, q_blank, vmax), np.inf),
-        np.ones(G, bool),
-        q_blank,
-        np.arange(G),
-        None,
-    )
-    counter = 0
-    diving = True
-
-    def key(n: _Node) -> tuple[float, ...]:
-        f = float(np.min(n.cost)) + ram_floor * (nb - len(n.prefix))
-        order = tuple(float(i) for i in n.prefix)
-        if diving:
-            return (-len(n.prefix), f, *order)
-        return (f, -len(n.prefix), *order)
-
-    heap: list[tuple[tuple[float, ...], int, _Node]] = [(key(root), 0, root)]
-
-    def accept(n: _Node) -> bool:
-        """Verify complete order `n`; return True when the search is over (enough plans, or
-        the budget of full cycles spent)."""
-        nonlocal verified, note, counter
-        plan = _plan_of(n, ctx)
-        if verify is not None:
-            if verified >= s.max_verify:
-                note += f"stopped after checking {s.max_verify} full cycles (SearchSettings.max_verify). "
-                return True
-            verified += 1
-            report(
-                min(0.99, 0.5 + 0.5 * len(plans) / s.max_plans),
-                f"checking the full cycle of {' '.join(plan.sequence)}",
-            )
-            checked = verify(plan)
-            if isinstance(checked, (str, Rejected)):
-                why = checked if isinstance(checked, Rejected) else Rejected(checked)
-                rejected.append((plan.sequence, why.reason))
-                if why.step is not None:
-                    # the same order with that grasp banned at that step, if any is left
-                    ban = n.banned | {(why.step, plan.grasp_ids[why.step])}
-                    again = _rechain(n, ban, ctx, s, finish)
-                    if again is not None:
-                        counter += 1
-                        heapq.heappush(heap, (key(again), counter, again))
-                return False
-            plan = checked
-        plans.append(plan)
-        return len(plans) >= s.max_plans
-
-    while heap:
-        if cancel is not None and cancel():
-            note += "cancelled: the plans found so far are returned. "
-            break
-        if deadline is not None and time.perf_counter() > deadline:
-            note += (
-                f"stopped at the time limit of {time_limit:g} s: the best plans found so far "
-                "are returned; a longer limit may find better ones. "
-            )
-            deepest = max((h[2] for h in heap), key=lambda n: len(n.prefix), default=None)
-            if deepest is not None and len(deepest.prefix) < nb and not plans:
-                note += (
-                    f"The deepest order reached: {' '.join(names[i] for i in deepest.prefix)} "
-                    f"({len(deepest.prefix)} of {nb} bends). "
-                )
-            if not plans and verify is not None:
-                # the best complete order found, checked after the limit: a plan, not nothing
-                best = sorted((h for h in heap if len(h[2].prefix) == nb), key=lambda h: h[0])
-                for h in best[:1]:
-                    note += "The best complete order found was checked after the limit. "
-                    accept(h[2])
-            break
-        # A complete order is taken only from the top of the queue: its cost is exact and no
-        # open prefix can end cheaper. While diving, the first one found ends the dive; it
-        # goes back into the queue to wait its turn.
-        if heap and len(heap[0][2].prefix) == nb:
-            n = heapq.heappop(heap)[2]
-            if diving:
-                diving = False
-                counter += 1
-                heap.append((key(n), counter, n))
-                heap = [(key(h[2]), h[1], h[2]) for h in heap]
-                heapq.heapify(heap)
-                continue
-            if accept(n):
-                break
-            continue
-        width = 1 if diving else s.width
-        batch: list[_Node] = []
-        while heap and len(batch) < width and len(heap[0][2].prefix) < nb:
-            batch.append(heapq.heappop(heap)[2])
-        open_nodes = [n for n in batch if len(n.prefix) < nb]
-        needed = []
+    def expand(self, open_nodes: list[_Node]) -> None:
+        """Queue the children of `open_nodes` that some grasp carries on with (a complete
+        one: that also puts the part on the pallet); record why the others are pruned."""
         for n in open_nodes:
             done = tuple(sorted(n.prefix))
-            for b in range(nb):
-                if b not in n.prefix and (done, b) not in evals and (done, b) not in needed:
-                    needed.append((done, b))
-        if needed:
-            left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
-            run = run_batches(
-                evaluate_batch,
-                needed,
-                context=ctx,
-                engine=engine,
-                address=address,
-                batch_size=s.batch_size,
-                cancel=cancel,
-                time_limit=left,
-            )
-            tally.rounds += 1
-            tally.runs.append(run.stats)
-            for k, r in zip(needed, run.results, strict=True):
-                if r is not None:
-                    evals[k] = _at_free_station(_robot_free_at_die(r), k[0])
-            tally.candidates += sum(r is not None for r in run.results)
-            report(
-                min(0.5, 0.5 * len(evals) / max(1, nb * 2 ** (nb - 1))),
-                f"{len(evals)} bend candidates checked",
-            )
-        for n in open_nodes:
-            done = tuple(sorted(n.prefix))
-            for b in range(nb):
+            for b in range(self.nb):
                 if b in n.prefix:
                     continue
-                e = evals.get((done, b))
+                e = self.evals.get((done, b))
                 if e is None:
                     continue  # stopped by the time limit or cancel
-                branch = tuple(names[i] for i in (*n.prefix, b))
-                if not e.feasible:
-                    rejected.append((branch, e.reason()))
-                    continue
-                child = _child(n, b, e, ctx, s)
-                if not np.isfinite(child.cost).any():
-                    rejected.append((branch, _no_grasp(names[b], not n.prefix)))
-                    continue
-                if len(child.prefix) == nb:
-                    finish(child)
-                    if not np.isfinite(child.cost).any():
-                        rejected.append(
-                            (
-                                branch,
-                                f"bend {names[b]!r}: no grasp that makes it also puts the part "
-                                "on the pallet (bending.pallet) reachable and collision-free",
-                            )
-                        )
-                        continue
-                counter += 1
-                heapq.heappush(heap, (key(child), counter, child))
-    runs = tally.runs
-    workers = max((r.workers for r in runs), default=1)
-    batches = sum(r.batches for r in runs)
-    overhead = sum(r.overhead_per_batch_s * r.batches for r in runs) / batches if batches else 0.0
-    stats = SearchStats(
-        candidates=tally.candidates,
-        verified=verified,
-        time=time.perf_counter() - t0,
-        engine=engine,
-        workers=workers,
-        batches=batches,
-        overhead_per_batch=overhead,
-        compute=sum(r.compute_s for r in runs),
-        rounds=tally.rounds,
-    )
-    # found in order of the estimate; ranked by the planned cycles' times once verified
-    plans.sort(key=lambda p: (p.regrips, p.flips, p.cycle_time))
-    if not plans:
-        note += "no feasible sequence: every branch was pruned (see rejected for the first reasons)"
-    report(1.0, "done")
-    return SearchResult(plans, rejected, stats, note)
+                why = self._child_or_why(n, b, e)
+                if isinstance(why, str):
+                    self.rejected.append((tuple(self.names[i] for i in (*n.prefix, b)), why))
+                else:
+                    self.queue.push(why)
+
+    def _child_or_why(self, n: _Node, b: int, e: BendEval) -> _Node | str:
+        """Return `n` followed by bend `b` (verdict `e`), or why no grasp makes it so."""
+        if not e.feasible:
+            return e.reason()
+        child = _child(n, b, e, self.ctx, self.s)
+        if not np.isfinite(child.cost).any():
+            return _no_grasp(self.names[b], not n.prefix)
+        if len(child.prefix) == self.nb:
+            self.finish(child)
+            if not np.isfinite(child.cost).any():
+                return (
+                    f"bend {self.names[b]!r}: no grasp that makes it also puts the part "
+                    "on the pallet (bending.pallet) reachable and collision-free"
+                )
+        return child
+
+    def result(self, engine: str, seconds: float) -> SearchResult:
+        """Return the plans ranked, the rejected branches, the work done and the note."""
+        runs = self.tally.runs
+        batches = sum(r.batches for r in runs)
+        overhead = (
+            sum(r.overhead_per_batch_s * r.batches for r in runs) / batches if batches else 0.0
+        )
+        stats = SearchStats(
+            candidates=self.tally.candidates,
+            verified=self.verified,
+            time=seconds,
+            engine=engine,
+            workers=max((r.workers for r in runs), default=1),
+            batches=batches,
+            overhead_per_batch=overhead,
+            compute=sum(r.compute_s for r in runs),
+            rounds=self.tally.rounds,
+        )
+        # found in order of the estimate; ranked by the planned cycles' times once verified
+        self.plans.sort(key=lambda p: (p.regrips, p.flips, p.cycle_time))
+        if not self.plans:
+            self.note += (
+                "no feasible sequence: every branch was pruned (see rejected for the first reasons)"
+            )
+        self.report(1.0, "done")
+        return SearchResult(self.plans, self.rejected, stats, self.note)
