@@ -42,6 +42,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.program_text import Unbalanced, numbered_lines, split_top
 from workbench.motion.programs.urscript import JOINT_SPEED, STANDARD_IO
 
 _IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
@@ -60,24 +61,12 @@ def rotvec_matrix(r: np.ndarray) -> np.ndarray:
 
 
 def _split_args(s: str, where: str) -> list[str]:
-    out, depth, cur = [], 0, ""
-    for ch in s:
-        if ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-            if depth < 0:
-                raise InputError(f"{where}: unbalanced brackets in {s!r}")
-        if ch == "," and depth == 0:
-            out.append(cur.strip())
-            cur = ""
-        else:
-            cur += ch
-    if depth != 0:
-        raise InputError(f"{where}: unbalanced brackets in {s!r}")
-    if cur.strip():
-        out.append(cur.strip())
-    return out
+    """Split an argument list at commas outside brackets (a trailing empty argument dropped)."""
+    try:
+        parts = split_top(s, ",", "()[]")
+    except Unbalanced:
+        raise InputError(f"{where}: unbalanced brackets in {s!r}") from None
+    return parts if parts[-1] else parts[:-1]
 
 
 def _call(text: str) -> tuple[str, str] | None:
@@ -331,8 +320,7 @@ def read_urscript(files: dict[str, str]) -> ReadProgram:
     scripts = {k: v for k, v in files.items() if k.lower().endswith((".script", ".urscript"))}
     if len(scripts) != 1:
         raise InputError(f"read_urscript needs exactly one .script file, got {sorted(files)}")
-    raw = next(iter(scripts.values())).splitlines()
-    lines = [(no, t.strip()) for no, t in enumerate(raw, start=1) if t.strip()]
+    lines = numbered_lines(next(iter(scripts.values())))
     rd = _Reader()
     name = ""
     k = 0
