@@ -29,11 +29,9 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
-from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
 from workbench.motion.program import Move, Program
-from workbench.motion.programs.from_plan import planner_durations
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MotionLimits,
@@ -43,6 +41,7 @@ from workbench.motion.programs.model import (
     ToolData,
     WorkObject,
 )
+from workbench.motion.programs.from_plan import planner_durations
 from workbench.motion.trajectory import DUPLICATE_TOL, Trajectory
 from workbench.polishing.process_motion import APPROACH_SPEED
 from workbench.polishing.toolpath import force_offset
@@ -250,7 +249,7 @@ class _Path:
     def target(self, model: RobotModel, i: int, label: str) -> Target:
         """Return point `i` as a target: planned joints, TCP in the work object, configuration."""
         T_wobj_tcp = invert_transform(self.T_base_wobj) @ self.T_base_tcp[i]
-        return Target(label, self.q[i], T_wobj_tcp, arm_configuration(model, self.q[i]))
+        return Target.planned(label, self.q[i], model, T_wobj_tcp)
 
 
 def _planned_path(

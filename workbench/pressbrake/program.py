@@ -38,9 +38,8 @@ from workbench.errors import UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
-from workbench.motion.program import Move, Program
-from workbench.motion.programs.from_plan import nearest_ik, planner_durations
-from workbench.motion.programs.model import (
+from workbench.motion.program import Move, Program, nearest_ik
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MoveInstr,
@@ -52,6 +51,7 @@ from workbench.motion.programs.model import (
     WaitInput,
     WorkObject,
 )
+from workbench.motion.programs.from_plan import planner_durations
 from workbench.pressbrake.die import Die
 from workbench.pressbrake.plan import BendingPlan
 from workbench.pressbrake.transfer import Transfer
@@ -185,9 +185,7 @@ def _die_durations(model: RobotModel, tool: ToolData, q_arr: F64, labels: list[s
 def _target(
     model: RobotModel, tool: ToolData, label: str, q: F64, cartesian: bool = True
 ) -> Target:
-    if not cartesian:
-        return Target(label, q)
-    return Target(label, q, model.fk(q) @ tool.T_flange_tcp, arm_configuration(model, q))
+    return Target.planned(label, q, model, model.fk(q) @ tool.T_flange_tcp if cartesian else None)
 
 
 def _load(plan: BendingPlan, settings: ProgramSettings) -> list[Instruction]:

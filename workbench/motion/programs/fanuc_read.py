@@ -31,11 +31,12 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_cnt
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -44,6 +45,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_cnt
 
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 DEFAULT_WAITTMOUT = 3000  # 1/100 s, FANUC's default $WAITTMOUT

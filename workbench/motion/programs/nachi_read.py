@@ -31,10 +31,12 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
