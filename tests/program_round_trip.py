@@ -14,12 +14,12 @@ from workbench.geometry.transforms import invert_transform, make_transform, rpy_
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
 from workbench.kinematics.robot_library import preset_robot
-from workbench.motion.programs.exported import ReadProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
     PulseOutput,
+    ReadProgram,
     RobotProgram,
     SetOutput,
     Signal,

@@ -39,7 +39,7 @@ from workbench.motion.programs import (
     reader,
     to_robot_program,
 )
-from workbench.motion.programs.exported import ReadProgram
+from workbench.motion.programs.controller_program import ReadProgram
 from workbench.project import load_project
 
 ROOT = Path(__file__).resolve().parents[1]

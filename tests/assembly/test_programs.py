@@ -15,10 +15,7 @@ import pytest
 from workbench import Workbench
 from workbench.assembly.programs import assembly_programs
 from workbench.errors import InputError
-from workbench.motion.programs.formats import write_programs
-from workbench.motion.programs.krl import write_krl
-from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Gripper,
     MoveInstr,
     ProgramSettings,
@@ -26,6 +23,9 @@ from workbench.motion.programs.model import (
     SyncPoint,
     ToolData,
 )
+from workbench.motion.programs.formats import write_programs
+from workbench.motion.programs.krl import write_krl
+from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
 from workbench.project.program_io import program_settings

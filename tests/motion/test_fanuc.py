@@ -13,6 +13,7 @@ from program_round_trip import check_read_back, sample_program
 from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration
 from workbench.kinematics.robot_library import preset_robot
+from workbench.motion.programs.controller_program import MoveInstr, RobotProgram, WaitInput
 from workbench.motion.programs.fanuc import (
     cnt_of_zone,
     config_text,
@@ -22,7 +23,6 @@ from workbench.motion.programs.fanuc import (
     zone_of_cnt,
 )
 from workbench.motion.programs.fanuc_read import controller_ranges, parse_config, read_ls
-from workbench.motion.programs.model import MoveInstr, RobotProgram, WaitInput
 
 
 def _with(prog: RobotProgram, k: int, **changes: object) -> RobotProgram:

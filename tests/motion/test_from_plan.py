@@ -13,6 +13,7 @@ from workbench.geometry.transforms import invert_transform, make_transform, rpy_
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.robot_library import preset_robot
 from workbench.motion import plan_program, time_program
+from workbench.motion.program import motion_program
 from workbench.motion.programs import (
     Comment,
     SetOutput,
@@ -21,7 +22,6 @@ from workbench.motion.programs import (
     WaitTime,
     WorkObject,
     check_program,
-    motion_program,
     robot_program,
 )
 from workbench.motion.programs.from_plan import arrival_indices, wait_holds

@@ -13,9 +13,9 @@ from workbench.errors import InputError
 from workbench.kinematics import DHRobot
 from workbench.kinematics.arm_configuration import ArmConfiguration, arm_configuration
 from workbench.kinematics.robot_library import preset_robot
+from workbench.motion.programs.controller_program import SetOutput, SyncPoint, WaitInput
 from workbench.motion.programs.krl import status_turn, write_krl
 from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.model import SetOutput, SyncPoint, WaitInput
 from workbench.motion.programs.readback import solve_moves
 
 DEG = np.pi / 180.0

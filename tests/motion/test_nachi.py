@@ -18,7 +18,7 @@ from program_round_trip import check_read_back, sample_program
 
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import preset_robot
-from workbench.motion.programs.model import MoveInstr, SyncPoint, Target
+from workbench.motion.programs.controller_program import MoveInstr, SyncPoint, Target
 from workbench.motion.programs.nachi import accuracy_levels, nachi_pose, write_nachi
 from workbench.motion.programs.nachi_read import nachi_transform, read_nachi
 from workbench.motion.programs.readback import solve_moves

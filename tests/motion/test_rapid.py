@@ -13,7 +13,7 @@ from scipy.spatial.transform import Rotation
 
 from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration, arm_configuration
-from workbench.motion.programs.model import MoveInstr, Target, ToolData
+from workbench.motion.programs.controller_program import MoveInstr, Target, ToolData
 from workbench.motion.programs.rapid import (
     RAPID_RESERVED,
     cfx_of,

@@ -11,7 +11,13 @@ from program_round_trip import check_read_back, sample_program
 from scipy.spatial.transform import Rotation
 
 from workbench.errors import InputError
-from workbench.motion.programs.model import MoveInstr, RobotProgram, SetOutput, Signal, WaitInput
+from workbench.motion.programs.controller_program import (
+    MoveInstr,
+    RobotProgram,
+    SetOutput,
+    Signal,
+    WaitInput,
+)
 from workbench.motion.programs.urscript import pose_text, write_urscript
 from workbench.motion.programs.urscript_read import read_urscript, rotvec_matrix
 

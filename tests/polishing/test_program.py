@@ -12,9 +12,9 @@ import pytest
 
 from workbench import Workbench
 from workbench.errors import InputError
+from workbench.motion.programs.controller_program import Comment, MoveInstr
 from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.model import Comment, MoveInstr
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
 from workbench.polishing.program import CHORD_TOLERANCE, thin_path

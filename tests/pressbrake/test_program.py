@@ -13,9 +13,7 @@ import numpy as np
 import pytest
 
 from workbench import Workbench
-from workbench.motion.programs.krl import write_krl
-from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
@@ -23,6 +21,8 @@ from workbench.motion.programs.model import (
     Signal,
     WaitInput,
 )
+from workbench.motion.programs.krl import write_krl
+from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
 from workbench.pressbrake.program import PRESS_DONE, PRESS_START, bending_program

@@ -36,9 +36,7 @@ from workbench.assembly.part_moves import PartPlan
 from workbench.assembly.tasks import TaskPlan
 from workbench.errors import InputError
 from workbench.geometry.transforms import matrix_to_rpy
-from workbench.kinematics.arm_configuration import arm_configuration
-from workbench.motion.programs.from_plan import fit_linear_speed
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MoveInstr,
@@ -49,6 +47,7 @@ from workbench.motion.programs.model import (
     ToolData,
     WorkObject,
 )
+from workbench.motion.programs.from_plan import fit_linear_speed
 
 KEY_POINT_FORMATS = ("csv", "json")
 _MM = 1e-3  # m per mm
@@ -85,12 +84,7 @@ def _task_moves(
         if kind == "linear":  # the speed at which the motion planner takes the planned time
             top = settings.limits.max_tcp_speed
             speed = fit_linear_speed(model, T_flange_tcp, wp[a], tcp[i], dt, top)
-        tgt = Target(
-            f"t{k + 1}_{label}",
-            wp[i],
-            tcp[i] if cartesian else None,
-            arm_configuration(model, wp[i]) if cartesian else None,
-        )
+        tgt = Target.planned(f"t{k + 1}_{label}", wp[i], model, tcp[i] if cartesian else None)
         return MoveInstr(kind, tgt, speed, zone, tool.name, "base", dt)  # type: ignore[arg-type]
 
     def grip(close: bool) -> Instruction:

@@ -1,14 +1,33 @@
-"""A robot program as data: a start configuration and a list of joint and linear moves."""
+"""THE MOTION PROGRAM the planner takes: `Program`, a named list of joint and linear `Move`s (SI),
+and the one conversion into it from the user's program (`motion_program`).
+
+The user's program (the project's `program` section in mm and deg; `to_si()` gives its items
+in SI) is a list of items, each a move (`ProgramMove`: a joint move to joints or to a TCP pose,
+or a linear move to a pose, with its work object) or an action of the controller program
+(`SetOutput`, `Gripper`, `WaitTime`, ...). The planner sees only the moves; a move followed by
+an action (other than a comment) ends in an exact stop (`stop_zones`): the action happens at
+the target, as a controller runs it (a robot in a blend has not arrived). A pose joint move goes
+to the IK solution nearest the previous joint target (`nearest_ik`, the planner's one rule).
+"""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Protocol, TypeAlias
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import InputError
+from workbench.errors import InputError, UnreachableError
 from workbench.geometry.pose_check import check_transform
+from workbench.geometry.transforms import invert_transform
+from workbench.kinematics.model import RobotModel
+
+if TYPE_CHECKING:  # the actions are the controller program's; motion.programs imports this module
+    from workbench.motion.programs.controller_program import Action
+
+FloatArray = NDArray[np.float64]
 
 JOINT = "joint"
 LINEAR = "linear"
@@ -90,3 +109,117 @@ class Program:
             )
         if not self.moves:
             raise InputError("Program.moves is empty; add at least one move")
+
+
+class ProgramMove(Protocol):
+    """A move of a program (the project's `MoveSI` is one): `type` "joint" or "linear"; target
+    `joints` (dof,) [rad, model] or `T_world_tcp` (4, 4) [m]; `speed` a fraction (joint) or
+    [m/s] (linear); `zone` [m]; `wobj` the work object's name."""
+
+    name: str
+    type: str
+    joints: FloatArray | None
+    T_world_tcp: FloatArray | None
+    speed: float
+    zone: float
+    wobj: str
+
+
+Item: TypeAlias = "ProgramMove | Action"
+
+
+def is_action(item: object) -> bool:
+    """Return True for an action item (it has no target pose), False for a move."""
+    return not hasattr(item, "T_world_tcp")
+
+
+def program_moves(items: Sequence[Item]) -> list[tuple[int, ProgramMove]]:
+    """Return the moves of `items` with their indices among the items."""
+    return [(i, it) for i, it in enumerate(items) if not is_action(it)]  # type: ignore[misc]
+
+
+def stop_zones(items: Sequence[Item]) -> list[float]:
+    """Return each move's zone [m]: its own, or 0 where an action other than a comment follows
+    it before the next move."""
+    from workbench.motion.programs.controller_program import Comment  # noqa: PLC0415
+
+    zones = []
+    for i, mv in program_moves(items):
+        stop = False
+        for nxt in items[i + 1 :]:
+            if not is_action(nxt):
+                break
+            stop = stop or not isinstance(nxt, Comment)
+        zones.append(0.0 if stop else float(mv.zone))
+    return zones
+
+
+def nearest_ik(
+    model: RobotModel, T_base_flange: FloatArray, q_near: FloatArray, where: str
+) -> FloatArray:
+    """Return the IK solution (dof,) [rad] of a flange pose nearest `q_near` (the planner's one
+    rule for a pose's joints); UnreachableError names `where`."""
+    try:
+        sols = np.asarray(model.ik(T_base_flange, q_near=q_near), float)
+    except UnreachableError as exc:
+        raise exc.within(where) from exc
+    if len(sols) == 0:
+        raise UnreachableError(f"{where}: no IK solution within the joint limits")
+    return np.asarray(sols[0], float)
+
+
+def _where(index: int, mv: ProgramMove, prefix: str) -> str:
+    return f"{prefix}[{index}]" + (f" ({mv.name})" if mv.name else "")
+
+
+def motion_program(
+    name: str,
+    items: Sequence[Item],
+    model: RobotModel,
+    T_world_base: FloatArray,
+    T_flange_tcp: FloatArray,
+    q_start: FloatArray,
+    *,
+    field: str = "program.moves",
+) -> Program:
+    """Return the motion `Program` the planner runs for `items`: linear moves to the pose in the
+    base frame, joint moves to their joints or to the pose's IK solution nearest the previous
+    joint target (`nearest_ik`), zones from `stop_zones`.
+
+    InputError names the item (`field`[i]) whose joints are of the wrong length or outside the
+    limits [deg]; UnreachableError the pose without an IK solution.
+    """
+    moves_in = program_moves(items)
+    if not moves_in:
+        raise InputError(f"{field}: the program has no moves; add at least one")
+    T_base_world = invert_transform(np.asarray(T_world_base, float))
+    T_tcp_flange = invert_transform(np.asarray(T_flange_tcp, float))
+    lo, hi = model.limits[:, 0], model.limits[:, 1]
+    moves, q_prev = [], np.asarray(q_start, float)
+    for (i, mv), zone in zip(moves_in, stop_zones(items), strict=True):
+        where = _where(i, mv, field)
+        if mv.joints is not None:
+            q = np.asarray(mv.joints, float)
+            if q.shape != (model.dof,):
+                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
+            bad = np.flatnonzero((q < lo) | (q > hi))
+            if bad.size:
+                # Said in the controller's values: what the project file and the GUI show.
+                j, conv = int(bad[0]), model.convention
+                qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
+                raise InputError(
+                    f"{where}.joints[{j}]: {np.degrees(qc[j]):g} deg is outside the joint"
+                    f" limits [{np.degrees(lim[j, 0]):.1f}, {np.degrees(lim[j, 1]):.1f}] deg;"
+                    " move it inside"
+                )
+            moves.append(Move.joint(q, speed=mv.speed, zone=zone, name=mv.name))
+            q_prev = q
+            continue
+        assert mv.T_world_tcp is not None
+        T_base_tcp = T_base_world @ mv.T_world_tcp
+        if mv.type == "linear":
+            moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=zone, name=mv.name))
+            continue
+        q_prev = nearest_ik(model, T_base_tcp @ T_tcp_flange, q_prev, f"{where}.pose")
+        moves.append(Move.joint(q_prev, speed=mv.speed, zone=zone, name=mv.name))
+    return Program(name, tuple(moves))

@@ -21,6 +21,7 @@ this build (see docs/programs.md).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
@@ -28,11 +29,9 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
-from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
 from workbench.motion.program import Move, Program
-from workbench.motion.programs.from_plan import planner_durations
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MotionLimits,
@@ -42,6 +41,7 @@ from workbench.motion.programs.model import (
     ToolData,
     WorkObject,
 )
+from workbench.motion.programs.from_plan import planner_durations
 from workbench.motion.trajectory import DUPLICATE_TOL, Trajectory
 from workbench.polishing.process_motion import APPROACH_SPEED
 from workbench.polishing.toolpath import force_offset
@@ -197,83 +197,180 @@ def polishing_program(
     elsewhere blends of `corner_zones` (at most `BLEND_ZONE`, within `tol` of the corner: the
     program's path stays within 2 `tol` of the planned points).
     """
+    path = _planned_path(trajectory, model, tool, T_world_base, T_world_workpiece, process)
+    kept = thin_path(
+        path.T_base_tcp[:, :3, 3],
+        path.T_base_tcp[:, :3, 2],
+        (path.first, path.last_in),
+        tol=tol,
+        angle_tol=angle_tol,
+    )
+    approach = MoveInstr(
+        "joint",
+        path.target(model, 0, "approach"),
+        APPROACH_SPEED,
+        0.0,
+        tool.name,
+        WOBJ,
+        approach_time(model, q_start, path.q[0], tool.T_flange_tcp),
+    )
+    zones = _zones(trajectory, path, kept, tol)
+    lim = limits or MotionLimits()
+    speed, planned = _path_speed(model, tool, path, kept, zones, settings.feed, lim)
+    ins: list[Instruction] = [
+        *_comments(path, kept, settings, speed, planned, tol, angle_tol),
+        approach,
+    ]
+    ins += _path_moves(model, tool, path, kept, zones, speed, settings)
+    return RobotProgram(
+        name,
+        (tool,),
+        (WorkObject(WOBJ, path.T_base_wobj),),
+        tuple(ins),
+        model.convention,
+        model.dof,
+        robot,
+        lim,
+    )
+
+
+@dataclass(frozen=True)
+class _Path:
+    """The planned path as the program sees it: joints (N, dof) [rad], waypoint times (N,) [s],
+    TCP poses (N, 4, 4) [m, base], the work object's frame, the first and last process points."""
+
+    q: F64
+    wt: F64
+    T_base_tcp: F64
+    T_base_wobj: F64
+    first: int
+    last_in: int
+
+    def target(self, model: RobotModel, i: int, label: str) -> Target:
+        """Return point `i` as a target: planned joints, TCP in the work object, configuration."""
+        T_wobj_tcp = invert_transform(self.T_base_wobj) @ self.T_base_tcp[i]
+        return Target.planned(label, self.q[i], model, T_wobj_tcp)
+
+
+def _planned_path(
+    trajectory: Trajectory,
+    model: RobotModel,
+    tool: ToolData,
+    T_world_base: F64,
+    T_world_workpiece: F64,
+    process: NDArray[np.bool_],
+) -> _Path:
+    """Return the planned path: one point per waypoint, its process points checked."""
     q = np.asarray(trajectory.waypoints, float)
-    wt = np.asarray(trajectory.waypoint_times, float)
     process = np.asarray(process, bool)
     if process.shape != (len(q),):
         raise InputError(f"process: {process.shape} flags for {len(q)} planned points")
-    force, stiffness, feed = settings.force, settings.control.stiffness, settings.feed
-    D = force_offset(force, stiffness)
     T_base_wobj = invert_transform(np.asarray(T_world_base, float)) @ np.asarray(
         T_world_workpiece, float
     )
-    wobj = WorkObject(WOBJ, T_base_wobj)
-    T_base_tcp = model.fk(q) @ tool.T_flange_tcp
-    P, Z = T_base_tcp[:, :3, 3], T_base_tcp[:, :3, 2]
-    first = int(np.argmax(process)) if process.any() else 0
-    last_in = int(np.flatnonzero(process)[-1]) if process.any() else len(q) - 1
-    kept = thin_path(P, Z, (first, last_in), tol=tol, angle_tol=angle_tol)
-    T_wobj_base = invert_transform(T_base_wobj)
+    return _Path(
+        q,
+        np.asarray(trajectory.waypoint_times, float),
+        model.fk(q) @ tool.T_flange_tcp,
+        T_base_wobj,
+        int(np.argmax(process)) if process.any() else 0,
+        int(np.flatnonzero(process)[-1]) if process.any() else len(q) - 1,
+    )
 
-    def target(i: int, label: str) -> Target:
-        return Target(label, q[i], T_wobj_base @ T_base_tcp[i], arm_configuration(model, q[i]))
 
-    ins: list[Instruction] = [
+def _zones(trajectory: Trajectory, path: _Path, kept: NDArray[np.intp], tol: float) -> F64:
+    """Return the blend radius [m] at every kept point: exact stops where the plan stops."""
+    stops = {int(i) for i in trajectory.stop_indices} | {0, len(path.q) - 1}
+    zones = np.concatenate([[0.0], corner_zones(path.T_base_tcp[kept, :3, 3], tol), [0.0]])
+    zones[[k for k, b in enumerate(kept) if int(b) in stops]] = 0.0
+    return zones
+
+
+def _path_speed(
+    model: RobotModel,
+    tool: ToolData,
+    path: _Path,
+    kept: NDArray[np.intp],
+    zones: F64,
+    feed: float,
+    limits: MotionLimits,
+) -> tuple[float, float]:
+    """Return the one TCP speed [m/s] of the linear moves (the feed calibrated to the plan's
+    time, within the robot's limit) and the planned time [s] of those moves."""
+    lin = [
+        Move.linear(path.T_base_tcp[b], speed=feed, zone=float(zones[k]))
+        for k, b in enumerate(kept)
+    ][1:]
+    planned = float(path.wt[kept[-1]] - path.wt[kept[0]])
+    speed = float(
+        np.clip(
+            _calibrated_speed(model, lin, path.q[kept[0]], tool.T_flange_tcp, planned, feed),
+            1e-4,
+            limits.max_tcp_speed,
+        )
+    )
+    return speed, planned
+
+
+def _comments(
+    path: _Path,
+    kept: NDArray[np.intp],
+    settings: ProcessSettings,
+    speed: float,
+    planned: float,
+    tol: float,
+    angle_tol: float,
+) -> list[Instruction]:
+    """Return the program's head comments: the force and its offset, the path, the speed."""
+    force, stiffness, feed = settings.force, settings.control.stiffness, settings.feed
+    D = force_offset(force, stiffness)
+    return [
         Comment(
             f"polishing: contact force F = {force:g} N through the contact stiffness k = {stiffness:g} N/m:"
             f" process targets offset D = F/k = {D * 1e3:.3f} mm into the surface along the tool axis"
         ),
         Comment(
-            f"path: {len(q)} planned points as {len(kept) - 1} linear moves within"
+            f"path: {len(path.q)} planned points as {len(kept) - 1} linear moves within"
             f" {tol * 1e3:g} mm (chord) and {np.degrees(angle_tol):g} deg (tool axis); feed {feed * 1e3:g} mm/s"
         ),
-        MoveInstr(
-            "joint",
-            target(0, "approach"),
-            APPROACH_SPEED,
-            0.0,
-            tool.name,
-            WOBJ,
-            approach_time(model, q_start, q[0], tool.T_flange_tcp),
-        ),
-    ]
-    stops = {int(i) for i in trajectory.stop_indices} | {0, len(q) - 1}
-    zones = np.concatenate([[0.0], corner_zones(P[kept], tol), [0.0]])
-    zones[[k for k, b in enumerate(kept) if int(b) in stops]] = 0.0
-    T_flange = tool.T_flange_tcp
-    lin = [
-        Move.linear(T_base_tcp[b], speed=feed, zone=float(zones[k])) for k, b in enumerate(kept)
-    ][1:]
-    planned = float(wt[kept[-1]] - wt[kept[0]])
-    speed = float(
-        np.clip(
-            _calibrated_speed(model, lin, q[kept[0]], T_flange, planned, feed),
-            1e-4,
-            (limits or MotionLimits()).max_tcp_speed,
-        )
-    )
-    ins.insert(
-        2,
         Comment(
             f"TCP speed {speed * 1e3:.2f} mm/s: the feed {feed * 1e3:g} mm/s, scaled so that the"
             f" moves take the planned {planned:.2f} s"
         ),
-    )
+    ]
+
+
+def _path_moves(
+    model: RobotModel,
+    tool: ToolData,
+    path: _Path,
+    kept: NDArray[np.intp],
+    zones: F64,
+    speed: float,
+    settings: ProcessSettings,
+) -> list[Instruction]:
+    """Return the linear moves to the kept points, each with its planned duration, and the
+    comments where the process starts and the lead-out begins."""
+    D = force_offset(settings.force, settings.control.stiffness)
+    first, last_in, n = path.first, path.last_in, len(path.q)
+    ins: list[Instruction] = []
     for k, (a, b) in enumerate(zip(kept[:-1], kept[1:], strict=True)):
-        dt = float(wt[b] - wt[a])
+        dt = float(path.wt[b] - path.wt[a])
         if dt <= 0:
             raise InputError(
                 f"point {b}: the planned trajectory reaches it in {dt!r} s; replan the motion"
             )
         if b == first:
             ins.append(
-                Comment(f"process: press with F = {force:g} N (offset D = {D * 1e3:.3f} mm)")
+                Comment(
+                    f"process: press with F = {settings.force:g} N (offset D = {D * 1e3:.3f} mm)"
+                )
             )
         kind = "lead_in" if b < first else ("lead_out" if b > last_in else "p")
         ins.append(
             MoveInstr(
                 "linear",
-                target(int(b), f"{kind}{b}"),
+                path.target(model, int(b), f"{kind}{b}"),
                 speed,
                 float(zones[k + 1]),
                 tool.name,
@@ -281,15 +378,6 @@ def polishing_program(
                 dt,
             )
         )
-        if b == last_in and b != len(q) - 1:
+        if b == last_in and b != n - 1:
             ins.append(Comment("lead-out: off the surface, no contact force"))
-    return RobotProgram(
-        name,
-        (tool,),
-        (wobj,),
-        tuple(ins),
-        model.convention,
-        model.dof,
-        robot,
-        limits or MotionLimits(),
-    )
+    return ins

@@ -24,8 +24,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from workbench.kinematics.arm_configuration import arm_configuration
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MoveInstr,
@@ -86,9 +85,7 @@ def cycle_program(
         # Every target Cartesian (the home joints too, as the TCP pose there with its
         # configuration): the readers re-solve a Cartesian move from the one before it.
         label = _name(wps[i].label, i)
-        return Target(
-            label, q[i], model.fk(q[i]) @ tool.T_flange_tcp, arm_configuration(model, q[i])
-        )
+        return Target.planned(label, q[i], model, model.fk(q[i]) @ tool.T_flange_tcp)
 
     def pulse() -> Instruction:
         return (

@@ -38,9 +38,8 @@ from workbench.errors import UnreachableError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
-from workbench.motion.program import Move, Program
-from workbench.motion.programs.from_plan import nearest_ik, planner_durations
-from workbench.motion.programs.model import (
+from workbench.motion.program import Move, Program, nearest_ik
+from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
     MoveInstr,
@@ -48,9 +47,11 @@ from workbench.motion.programs.model import (
     PulseOutput,
     RobotProgram,
     Target,
+    ToolData,
     WaitInput,
     WorkObject,
 )
+from workbench.motion.programs.from_plan import planner_durations
 from workbench.pressbrake.die import Die
 from workbench.pressbrake.plan import BendingPlan
 from workbench.pressbrake.transfer import Transfer
@@ -107,19 +108,53 @@ def bending_program(
     approach pose needs another arm configuration than its placement.
     """
     model, tool = robot_at.model, settings.tool
+    traj = plan.trajectory
+    wq, wt = np.asarray(traj.waypoints, float), np.asarray(traj.waypoint_times, float)
+    q_arr, labels = _die_joints(plan, robot_at, cell, tool, q_start, wq[0])
+    dur = _die_durations(model, tool, q_arr, labels)
+    home = Program("home", (Move.joint(np.asarray(q_start, float), speed=MOVE_SPEED),))
+    home_dur = float(planner_durations(model, home, wq[-1], tool.T_flange_tcp)[0])
+    ins = _load(plan, settings)
+    ins += _bends(plan, model, settings, q_arr, labels, dur)
+    ins.append(Comment("transfer to the pallet as planned (checked)"))
+    ins += _transfer(model, tool, wq, wt)
+    ins.append(Comment("unload"))
+    ins.append(settings.open or Comment("gripper open: the project has no io.gripper; add one"))
+    ins.append(
+        MoveInstr(
+            "joint",
+            _target(model, tool, "home", np.asarray(q_start, float), False),
+            MOVE_SPEED,
+            0.0,
+            tool.name,
+            "base",
+            home_dur,
+        )
+    )
+    return base_program(name, model, settings, ins, robot)
+
+
+def _die_joints(
+    plan: BendingPlan,
+    robot_at: RobotAt,
+    cell: BendingCell,
+    tool: ToolData,
+    q_start: F64,
+    q_transfer: F64,
+) -> tuple[F64, list[str]]:
+    """Return the joints (start, then per bend approach, placement, retreat; the last retreat
+    is the transfer's start `q_transfer`) and their labels; UnreachableError names a bend whose
+    approach needs another arm configuration than its placement."""
+    model = robot_at.model
     T_base_world = invert_transform(np.asarray(robot_at.T_world_base, float))
     T_tcp_flange = invert_transform(tool.T_flange_tcp)
     off = cell.die.T_world_die[:3, :3] @ np.asarray(cell.transfer.retract, float)
-    traj = plan.trajectory
-    wq, wt = np.asarray(traj.waypoints, float), np.asarray(traj.waypoint_times, float)
-
-    # joints: start, then per bend approach, placement, retreat (the last: the transfer's start)
     q_seq, labels = [np.asarray(q_start, float)], ["start"]
     for k, pl in enumerate(plan.placements):
         T = pl.T_world_tcp.copy()
         T[:3, 3] += off
         if k == len(plan.placements) - 1:
-            qa = wq[0]
+            qa = q_transfer
         else:
             qa = nearest_ik(
                 model, T_base_world @ T @ T_tcp_flange, pl.q, f"bend {pl.bend!r} approach"
@@ -131,24 +166,30 @@ def bending_program(
             )
         q_seq += [qa, pl.q, qa]
         labels += [f"b{k + 1}_approach", f"b{k + 1}_bend", f"b{k + 1}_retreat"]
-    q_arr = np.array(q_seq)
+    return np.array(q_seq), labels
+
+
+def _die_durations(model: RobotModel, tool: ToolData, q_arr: F64, labels: list[str]) -> F64:
+    """Return the durations [s] of the moves the plan does not time (approach joint moves,
+    linear moves onto the die and back), timed by the motion planner as the program states them."""
     T_base_tcp = model.fk(q_arr) @ tool.T_flange_tcp
-    # the moves the plan does not time, timed by the motion planner as the program states them
     die = [
         Move.joint(q_arr[i], speed=MOVE_SPEED, name=labels[i])
         if labels[i].endswith("_approach")
         else Move.linear(T_base_tcp[i], speed=DIE_SPEED, name=labels[i])
         for i in range(1, len(q_arr))
     ]
-    dur = planner_durations(model, Program("die", tuple(die)), q_arr[0], tool.T_flange_tcp)
-    home = Program("home", (Move.joint(np.asarray(q_start, float), speed=MOVE_SPEED),))
-    home_dur = float(planner_durations(model, home, wq[-1], tool.T_flange_tcp)[0])
+    return planner_durations(model, Program("die", tuple(die)), q_arr[0], tool.T_flange_tcp)
 
-    def target(label: str, q: F64, cartesian: bool = True) -> Target:
-        if not cartesian:
-            return Target(label, q)
-        return Target(label, q, model.fk(q) @ tool.T_flange_tcp, arm_configuration(model, q))
 
+def _target(
+    model: RobotModel, tool: ToolData, label: str, q: F64, cartesian: bool = True
+) -> Target:
+    return Target.planned(label, q, model, model.fk(q) @ tool.T_flange_tcp if cartesian else None)
+
+
+def _load(plan: BendingPlan, settings: ProgramSettings) -> list[Instruction]:
+    """Return the program's head: what it does, a note on missing press signals, the load."""
     start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
     missing = [f"output {PRESS_START!r}"] * (start is None) + [f"input {PRESS_DONE!r}"] * (
         done is None
@@ -166,6 +207,21 @@ def bending_program(
         Comment("load: the plan has no blank station; the blank is put into the gripper here")
     )
     ins.append(settings.close or Comment("gripper close: the project has no io.gripper; add one"))
+    return ins
+
+
+def _bends(
+    plan: BendingPlan,
+    model: RobotModel,
+    settings: ProgramSettings,
+    q_arr: F64,
+    labels: list[str],
+    dur: F64,
+) -> list[Instruction]:
+    """Return every bend's moves: approach, onto the die, the press handshake, retreat."""
+    tool = settings.tool
+    start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
+    ins: list[Instruction] = []
     for i in range(1, len(q_arr)):
         label = labels[i]
         if label.endswith("_approach"):
@@ -174,7 +230,7 @@ def bending_program(
             ins.append(
                 MoveInstr(
                     "joint",
-                    target(label, q_arr[i]),
+                    _target(model, tool, label, q_arr[i]),
                     MOVE_SPEED,
                     0.0,
                     tool.name,
@@ -186,7 +242,7 @@ def bending_program(
         ins.append(
             MoveInstr(
                 "linear",
-                target(label, q_arr[i]),
+                _target(model, tool, label, q_arr[i]),
                 DIE_SPEED,
                 0.0,
                 tool.name,
@@ -205,7 +261,12 @@ def bending_program(
                 if done
                 else Comment(f"press: wait for input {PRESS_DONE!r} (missing in io.inputs)")
             )
-    ins.append(Comment("transfer to the pallet as planned (checked)"))
+    return ins
+
+
+def _transfer(model: RobotModel, tool: ToolData, wq: F64, wt: F64) -> list[Instruction]:
+    """Return the checked transfer's joint moves (blended at the via poses), as planned."""
+    ins: list[Instruction] = []
     for j in range(1, len(wq)):
         last = j == len(wq) - 1
         label = "pallet" if last else f"transfer{j}"
@@ -213,7 +274,7 @@ def bending_program(
         ins.append(
             MoveInstr(
                 "joint",
-                target(label, wq[j]),
+                _target(model, tool, label, wq[j]),
                 1.0,
                 zone,
                 tool.name,
@@ -221,20 +282,7 @@ def bending_program(
                 float(wt[j] - wt[j - 1]),
             )
         )
-    ins.append(Comment("unload"))
-    ins.append(settings.open or Comment("gripper open: the project has no io.gripper; add one"))
-    ins.append(
-        MoveInstr(
-            "joint",
-            target("home", np.asarray(q_start, float), False),
-            MOVE_SPEED,
-            0.0,
-            tool.name,
-            "base",
-            home_dur,
-        )
-    )
-    return base_program(name, model, settings, ins, robot)
+    return ins
 
 
 def base_program(

@@ -34,7 +34,7 @@ from workbench.project.common import (
 from workbench.project.units import MM, matrix_to_pose, pose_to_matrix
 
 if TYPE_CHECKING:
-    from workbench.motion.programs.model import ToolData
+    from workbench.motion.programs.controller_program import ToolData
     from workbench.project.models import RobotSI, ToolSI
 
 

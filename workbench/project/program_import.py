@@ -17,10 +17,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.motion.programs.exported import ReadMove, ReadProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
     SetOutput,
     SyncPoint,
     WaitInput,

@@ -6,7 +6,7 @@ Every field is optional, so project files written before these sections load unc
 `check_references` (called when a project loads) checks every name a program uses (signals,
 work objects, the gripper) and names the field that uses an unknown one.
 
-`to_si` and the helpers below return the program model's objects (`motion.programs.model`):
+`to_si` and the helpers below return the program model's objects (`motion.programs.controller_program`):
 `ToolData`, `WorkObject` (in the robot base frame), `Signal`, the actions, `MotionLimits`.
 """
 
@@ -18,7 +18,7 @@ import numpy as np
 from pydantic import Discriminator, Field, StringConstraints, Tag, model_validator
 
 from workbench.geometry.transforms import invert_transform
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     Comment,
     Gripper,

@@ -23,9 +23,15 @@ from workbench.motion import (
     time_program,
     validate_trajectory,
 )
-from workbench.motion.programs.from_plan import motion_program, wait_holds, wait_summary
+from workbench.motion.program import motion_program
+from workbench.motion.programs.controller_program import (
+    MotionLimits,
+    RobotProgram,
+    ToolData,
+    WorkObject,
+)
 from workbench.motion.programs.from_plan import robot_program as _robot_program
-from workbench.motion.programs.model import MotionLimits, RobotProgram, ToolData, WorkObject
+from workbench.motion.programs.from_plan import wait_holds, wait_summary
 from workbench.project.models import ProgramSI, Project
 from workbench.project.program_io import program_items
 from workbench.service.robot_setup import RobotSetup

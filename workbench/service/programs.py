@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 from workbench.errors import InputError, PlanningError
 from workbench.kinematics.robot_library import LibraryRobot, library_robot
 from workbench.motion.programs.controller_base import in_controller_base
+from workbench.motion.programs.controller_program import RobotProgram
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.formats import (
     PROGRAM_FORMATS,
@@ -21,7 +22,6 @@ from workbench.motion.programs.formats import (
     write_programs,
     write_samples,
 )
-from workbench.motion.programs.model import RobotProgram
 from workbench.project.program_io import motion_limits, tool_data, work_objects
 from workbench.service import program_edit
 from workbench.service.motion_plan import MotionPlan, robot_program

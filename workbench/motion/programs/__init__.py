@@ -3,29 +3,15 @@ FANUC LS, URScript, NACHI) and readers behind one registry, and joint samples (C
 
 from __future__ import annotations
 
-from workbench.motion.programs.exported import (
-    ExportedProgram,
-    ReadMove,
-    ReadProgram,
-    ReadTarget,
-    merge_exports,
-)
-from workbench.motion.programs.formats import (
-    EXPORT_FORMATS,
-    PROGRAM_FORMATS,
-    SAMPLE_FORMATS,
-    post,
-    reader,
-    write_programs,
-    write_samples,
-)
-from workbench.motion.programs.from_plan import motion_program, robot_program
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MotionLimits,
     MoveInstr,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     RobotProgram,
     SetOutput,
     Signal,
@@ -37,6 +23,17 @@ from workbench.motion.programs.model import (
     WorkObject,
     check_program,
 )
+from workbench.motion.programs.exported import ExportedProgram, merge_exports
+from workbench.motion.programs.formats import (
+    EXPORT_FORMATS,
+    PROGRAM_FORMATS,
+    SAMPLE_FORMATS,
+    post,
+    reader,
+    write_programs,
+    write_samples,
+)
+from workbench.motion.programs.from_plan import robot_program
 from workbench.motion.programs.readback import to_robot_program
 from workbench.motion.programs.samples import (
     csv_text,
@@ -75,7 +72,6 @@ __all__ = [
     "load_csv",
     "load_json",
     "merge_exports",
-    "motion_program",
     "post",
     "reader",
     "robot_program",

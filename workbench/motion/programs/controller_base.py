@@ -16,8 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.geometry.transforms import invert_transform
-from workbench.motion.programs.exported import ReadProgram
-from workbench.motion.programs.model import RobotProgram, WorkObject
+from workbench.motion.programs.controller_program import ReadProgram, RobotProgram, WorkObject
 
 FloatArray = NDArray[np.float64]
 

@@ -1,21 +1,15 @@
-"""What a post writes (`ExportedProgram`: files and notes) and what a reader returns (`ReadProgram`)."""
+"""What a post writes: `ExportedProgram`, the files of a controller program (name -> text) and
+the post's notes; a reader takes those files back (`controller_program.ReadProgram`)."""
 
 from __future__ import annotations
 
 import io
 import zipfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
-
-import numpy as np
-from numpy.typing import NDArray
 
 from workbench.atomic_file import atomic_write_text
 from workbench.errors import InputError
-from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.model import Action, MoveKind, ToolData, WorkObject
-
-FloatArray = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -71,61 +65,3 @@ def merge_exports(parts: list[ExportedProgram]) -> ExportedProgram:
             files[name] = text
         notes.extend(p.notes)
     return ExportedProgram(files, tuple(notes))
-
-
-@dataclass(frozen=True, eq=False)
-class ReadTarget:
-    """A target as a program states it: controller `joints` (dof,) [rad] for a joint target, or
-    a TCP pose `T_wobj_tcp` (4, 4) [m] with its `configuration` and the controller joint ranges
-    (dof, 2) [rad] its turn data allow (None: not stated)."""
-
-    name: str
-    joints: FloatArray | None = None
-    T_wobj_tcp: FloatArray | None = None
-    configuration: ArmConfiguration | None = None
-    controller_ranges: FloatArray | None = None
-
-
-@dataclass(frozen=True, eq=False)
-class ReadMove:
-    """A move as read: kind, target (and `via` for circular), `speed` (joint: fraction of max,
-    linear/circular: TCP m/s; None when the program gives only a time), `zone` [m], `tool`
-    and `wobj` names, `duration` [s] when the program states one (RAPID \\T), source `line`."""
-
-    kind: MoveKind
-    target: ReadTarget
-    speed: float | None
-    zone: float
-    tool: str
-    wobj: str
-    duration: float | None = None
-    via: ReadTarget | None = None
-    line: int = 0
-
-    @property
-    def name(self) -> str:
-        """Return the target's name."""
-        return self.target.name
-
-
-@dataclass(frozen=True, eq=False)
-class ReadProgram:
-    """A program read back: name, tools, work objects (as declared in the file), instructions
-    (moves and low-level actions, in order), and the lines the reader did not understand
-    (`unknown`: (line number, text)), never dropped silently."""
-
-    name: str
-    tools: tuple[ToolData, ...]
-    work_objects: tuple[WorkObject, ...]
-    instructions: tuple[ReadMove | Action, ...]
-    unknown: tuple[tuple[int, str], ...] = ()
-    notes: tuple[str, ...] = field(default=())
-
-    @property
-    def moves(self) -> tuple[ReadMove, ...]:
-        """Return the moves, in order."""
-        return tuple(i for i in self.instructions if isinstance(i, ReadMove))
-
-    def actions(self) -> tuple[Action, ...]:
-        """Return the actions, in order."""
-        return tuple(i for i in self.instructions if not isinstance(i, ReadMove))

@@ -76,8 +76,7 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration
 from workbench.motion.programs.angles import wpr_deg
-from workbench.motion.programs.exported import ExportedProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
@@ -92,6 +91,7 @@ from workbench.motion.programs.model import (
     check_program,
     move_label,
 )
+from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.names import NameTable
 
 #: Words of FANUC's TP language (instructions, registers, operators) no name may take.

@@ -31,11 +31,12 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_cnt
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -44,6 +45,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_cnt
 
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 DEFAULT_WAITTMOUT = 3000  # 1/100 s, FANUC's default $WAITTMOUT
@@ -256,29 +258,28 @@ def _signal(kind: str, number: str, comment: str | None) -> Signal:
     return Signal(name, int(number))
 
 
-def read_ls(files: dict[str, str]) -> ReadProgram:
-    """Return the program of one FANUC LS file ({"NAME.ls": text}); see the module docstring."""
-    ls = {k: v for k, v in files.items() if k.lower().endswith(".ls")}
-    if len(ls) != 1:
-        raise InputError(f"read_ls needs exactly one .ls file, got {sorted(files)}")
-    text = next(iter(ls.values()))
-    name, mn, pos_lines = _sections(text)
-    positions = _positions(pos_lines)
-    st = _State()
-    unknown: list[tuple[int, str]] = []
-    notes: list[str] = []
-    items: list[tuple[int, object]] = []  # (line, ReadMove | Action | ("sync", name, robots))
-    waittmout: int | None = None
-    after_end = False
+class _LsReader:
+    """The /MN instructions read one at a time into items, the frames they set and use, notes."""
 
-    def target(i: str, no: int) -> ReadTarget:
-        p = positions.get(int(i))
+    def __init__(self, positions: dict[int, _Position]) -> None:
+        self.positions = positions
+        self.st = _State()
+        self.unknown: list[tuple[int, str]] = []
+        self.notes: list[str] = []
+        self.items: list[tuple[int, object]] = []  # (line, ReadMove | Action | ("sync", ..))
+        self.waittmout: int | None = None
+        self.after_end = False
+
+    def target(self, i: str, no: int) -> ReadTarget:
+        """Return the target P[i] of /POS, noting where it is recorded in other frames."""
+        st = self.st
+        p = self.positions.get(int(i))
         if p is None:
             raise InputError(f"line {no}: P[{i}] is not in /POS")
         st.used_ut.add(p.ut)
         st.used_uf.add(p.uf)
         if (p.ut, p.uf) != (st.ut, st.uf):
-            notes.append(
+            self.notes.append(
                 f"line {no}: P[{i}] is recorded with UT {p.ut}, UF {p.uf} while UTOOL_NUM={st.ut},"
                 f" UFRAME_NUM={st.uf}; read in the position's frames"
             )
@@ -294,6 +295,7 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         )
 
     def move(
+        self,
         kind: str,
         i: str,
         speed: float,
@@ -303,44 +305,48 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         text: str,
         via: ReadTarget | None = None,
     ) -> None:
-        tgt = target(i, no)
-        p = positions[int(i)]
+        """Read a move to P[i]; text after its termination goes to `unknown`."""
+        tgt = self.target(i, no)
+        p = self.positions[int(i)]
         zone = zone_of_cnt(term.replace(" ", ""))
         mv = ReadMove(kind, tgt, speed, zone, f"UTOOL{p.ut}", f"UFRAME{p.uf}", None, via, no)  # type: ignore[arg-type]
-        items.append((no, mv))
+        self.items.append((no, mv))
         if rest:
-            unknown.append((no, text))
+            self.unknown.append((no, text))
 
-    for no, text in _instructions(mn):
-        if after_end:
+    def comment(self, no: int, c: str) -> None:
+        """Read a comment: tool and frame names, tool mass and cog, a sync point."""
+        st = self.st
+        if m := _C_TOOL.match(c):
+            (st.tool_names if m.group(1).upper() == "UTOOL" else st.frame_names)[
+                int(m.group(2))
+            ] = m.group(3)
+        elif m := _C_MASS.match(c):
+            st.mass[int(m.group(1))] = float(m.group(2))
+        elif m := _C_COG.match(c):
+            st.cog[int(m.group(1))] = np.array([float(g) for g in m.groups()[1:]]) / 1000.0
+        elif m := _C_SYNC.match(c):
+            robots = tuple(r.strip() for r in m.group(2).split(",") if r.strip())
+            self.items.append((no, ("sync", m.group(1), robots)))
+
+    def line(self, no: int, text: str) -> None:
+        """Read one /MN instruction."""
+        if self.after_end:
             if not _HANDLER.match(text):
-                unknown.append((no, text))
-            continue
+                self.unknown.append((no, text))
+            return
         if text.startswith("!"):
-            c = text[1:].strip()
-            if m := _C_TOOL.match(c):
-                (st.tool_names if m.group(1).upper() == "UTOOL" else st.frame_names)[
-                    int(m.group(2))
-                ] = m.group(3)
-            elif m := _C_MASS.match(c):
-                st.mass[int(m.group(1))] = float(m.group(2))
-            elif m := _C_COG.match(c):
-                st.cog[int(m.group(1))] = np.array([float(g) for g in m.groups()[1:]]) / 1000.0
-            elif m := _C_SYNC.match(c):
-                robots = tuple(r.strip() for r in m.group(2).split(",") if r.strip())
-                items.append((no, ("sync", m.group(1), robots)))
-            continue
-        hit = None
+            self.comment(no, text[1:].strip())
+            return
         for key, pat in _PATTERNS.items():
             if m := pat.match(text):
-                hit = key
-                break
-        if hit is None:
-            unknown.append((no, text))
-            continue
-        assert m is not None
-        g = m.groups()
-        where = f"line {no}"
+                self.instruction(key, m.groups(), no, text)
+                return
+        self.unknown.append((no, text))
+
+    def instruction(self, hit: str, g: tuple, no: int, text: str) -> None:
+        """Read an instruction that matched the pattern `hit` with groups `g`."""
+        st, items, where = self.st, self.items, f"line {no}"
         if hit == "utool_num":
             st.ut = int(g[0])
         elif hit == "uframe_num":
@@ -366,49 +372,72 @@ def read_ls(files: dict[str, str]) -> ReadProgram:
         elif hit == "pulse":
             items.append((no, PulseOutput(_signal("DO", g[0], g[1]), _num(g[2], where))))
         elif hit == "waittmout":
-            waittmout = int(g[0])
+            self.waittmout = int(g[0])
         elif hit == "wait_di":
-            timeout = None
-            if g[3] is not None:
-                if waittmout is None:
-                    notes.append(
-                        f"{where}: TIMEOUT without $WAITTMOUT: FANUC's default 30 s applies"
-                    )
-                timeout = (waittmout if waittmout is not None else DEFAULT_WAITTMOUT) / 100.0
-            items.append((no, WaitInput(_signal("DI", g[0], g[1]), g[2].upper() == "ON", timeout)))
+            items.append((no, self.wait_input(g, where)))
         elif hit == "wait_t":
             items.append((no, WaitTime(_num(g[0], where))))
         elif hit == "end":
-            after_end = True
+            self.after_end = True
         elif hit == "j":
-            move("joint", g[0], _num(g[1], where) / 100.0, g[2], g[3], no, text)
+            self.move("joint", g[0], _num(g[1], where) / 100.0, g[2], g[3], no, text)
         elif hit == "l":
-            move("linear", g[0], _tcp_speed(g[1], g[2], where), g[3], g[4], no, text)
+            self.move("linear", g[0], _tcp_speed(g[1], g[2], where), g[3], g[4], no, text)
         elif hit == "c":
-            via = target(g[0], no)
-            move("circular", g[1], _tcp_speed(g[2], g[3], where), g[4], g[5], no, text, via)
+            via = self.target(g[0], no)
+            self.move("circular", g[1], _tcp_speed(g[2], g[3], where), g[4], g[5], no, text, via)
 
-    instructions = _fold_syncs(items, unknown)
-    tools = [ToolData("UTOOL0", np.eye(4))]
-    for n in sorted(set(st.tool_values) | st.used_ut - {0}):
-        if n not in st.tool_values:
-            notes.append(
-                f"UTOOL[{n}] is used but not set in the program: read as identity (the controller's value applies)"
+    def wait_input(self, g: tuple, where: str) -> WaitInput:
+        """Return WAIT DI[n]=ON|OFF, its TIMEOUT from $WAITTMOUT (or FANUC's default)."""
+        timeout = None
+        if g[3] is not None:
+            if self.waittmout is None:
+                self.notes.append(
+                    f"{where}: TIMEOUT without $WAITTMOUT: FANUC's default 30 s applies"
+                )
+            timeout = (self.waittmout if self.waittmout is not None else DEFAULT_WAITTMOUT) / 100.0
+        return WaitInput(_signal("DI", g[0], g[1]), g[2].upper() == "ON", timeout)
+
+    def frames(self) -> tuple[list[ToolData], list[WorkObject]]:
+        """Return the tools and work objects: number 0 (identity) and every one set or used."""
+        st = self.st
+        tools = [ToolData("UTOOL0", np.eye(4))]
+        for n in sorted(set(st.tool_values) | st.used_ut - {0}):
+            if n not in st.tool_values:
+                self.notes.append(
+                    f"UTOOL[{n}] is used but not set in the program: read as identity (the controller's value applies)"
+                )
+            T = _T(st.tool_values[n]) if n in st.tool_values else np.eye(4)
+            tools.append(ToolData(f"UTOOL{n}", T, st.mass.get(n), st.cog.get(n)))
+        wobjs = [WorkObject("UFRAME0", np.eye(4))]
+        for n in sorted(set(st.frame_values) | st.used_uf - {0}):
+            if n not in st.frame_values:
+                self.notes.append(
+                    f"UFRAME[{n}] is used but not set in the program: read as identity (the controller's value applies)"
+                )
+            wobjs.append(
+                WorkObject(
+                    f"UFRAME{n}", _T(st.frame_values[n]) if n in st.frame_values else np.eye(4)
+                )
             )
-        T = _T(st.tool_values[n]) if n in st.tool_values else np.eye(4)
-        tools.append(ToolData(f"UTOOL{n}", T, st.mass.get(n), st.cog.get(n)))
-    wobjs = [WorkObject("UFRAME0", np.eye(4))]
-    for n in sorted(set(st.frame_values) | st.used_uf - {0}):
-        if n not in st.frame_values:
-            notes.append(
-                f"UFRAME[{n}] is used but not set in the program: read as identity (the controller's value applies)"
-            )
-        wobjs.append(
-            WorkObject(f"UFRAME{n}", _T(st.frame_values[n]) if n in st.frame_values else np.eye(4))
-        )
-    tools, wobjs, instructions = _named(tools, wobjs, instructions, st)
+        return tools, wobjs
+
+
+def read_ls(files: dict[str, str]) -> ReadProgram:
+    """Return the program of one FANUC LS file ({"NAME.ls": text}); see the module docstring."""
+    ls = {k: v for k, v in files.items() if k.lower().endswith(".ls")}
+    if len(ls) != 1:
+        raise InputError(f"read_ls needs exactly one .ls file, got {sorted(files)}")
+    text = next(iter(ls.values()))
+    name, mn, pos_lines = _sections(text)
+    rd = _LsReader(_positions(pos_lines))
+    for no, line in _instructions(mn):
+        rd.line(no, line)
+    instructions = _fold_syncs(rd.items, rd.unknown)
+    tools, wobjs = rd.frames()
+    tools, wobjs, instructions = _named(tools, wobjs, instructions, rd.st)
     return ReadProgram(
-        name, tuple(tools), tuple(wobjs), tuple(instructions), tuple(unknown), tuple(notes)
+        name, tuple(tools), tuple(wobjs), tuple(instructions), tuple(rd.unknown), tuple(rd.notes)
     )
 
 

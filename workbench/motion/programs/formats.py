@@ -15,12 +15,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.motion.programs.exported import ExportedProgram, ReadProgram, merge_exports
+from workbench.motion.programs.controller_program import ReadProgram, RobotProgram
+from workbench.motion.programs.exported import ExportedProgram, merge_exports
 from workbench.motion.programs.fanuc import write_ls
 from workbench.motion.programs.fanuc_read import read_ls
 from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.model import RobotProgram
 from workbench.motion.programs.nachi import write_nachi
 from workbench.motion.programs.nachi_read import read_nachi
 from workbench.motion.programs.rapid import write_rapid

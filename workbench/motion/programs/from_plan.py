@@ -1,9 +1,9 @@
-"""The robot program of a planned motion: a program's items (moves and actions) turned into the
-motion `Program` the planner runs, and the planned trajectory turned into a `RobotProgram`.
+"""The controller program of a planned motion: the user's program items (`motion_program.Item`:
+moves and actions), the motion `Program` planned from them and its trajectory turned into a
+`RobotProgram` (`robot_program`); and the planner's timing of moves a workflow's own plan does
+not time (`planner_durations`, `fit_linear_speed`), for every workflow's program builder.
 
-A program is a list of items, each a move (`ProgramMove`: a joint move to joints or to a TCP
-pose, or a linear move to a pose, with its work object) or an action of the program model
-(`SetOutput`, `Gripper`, `WaitTime`, ...). Two rules tie the plan and the written program:
+Two rules tie the plan and the written program:
 
 - A move followed by an action (other than a comment) ends in an exact stop: the action
   happens at the target, as a controller runs it (a robot in a blend has not arrived).
@@ -22,20 +22,24 @@ SI: m, rad, s.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
-from workbench.errors import InputError, UnreachableError
+from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
-from workbench.kinematics.arm_configuration import arm_configuration
 from workbench.kinematics.model import RobotModel
 from workbench.motion.moves import JointPath, plan_program, time_program
-from workbench.motion.program import JOINT, Move, Program
-from workbench.motion.programs.model import (
-    Action,
-    Comment,
+from workbench.motion.program import (
+    JOINT,
+    Item,
+    Move,
+    Program,
+    is_action,
+    nearest_ik,
+    program_moves,
+)
+from workbench.motion.programs.controller_program import (
     Gripper,
     Instruction,
     MotionLimits,
@@ -50,116 +54,6 @@ from workbench.motion.programs.model import (
 from workbench.motion.trajectory import Trajectory
 
 FloatArray = NDArray[np.float64]
-
-
-class ProgramMove(Protocol):
-    """A move of a program (the project's `MoveSI` is one): `type` "joint" or "linear"; target
-    `joints` (dof,) [rad, model] or `T_world_tcp` (4, 4) [m]; `speed` a fraction (joint) or
-    [m/s] (linear); `zone` [m]; `wobj` the work object's name."""
-
-    name: str
-    type: str
-    joints: FloatArray | None
-    T_world_tcp: FloatArray | None
-    speed: float
-    zone: float
-    wobj: str
-
-
-Item = ProgramMove | Action
-
-
-def _is_action(item: object) -> bool:
-    return not hasattr(item, "T_world_tcp")
-
-
-def _moves(items: Sequence[Item]) -> list[tuple[int, ProgramMove]]:
-    return [(i, it) for i, it in enumerate(items) if not _is_action(it)]  # type: ignore[misc]
-
-
-def stop_zones(items: Sequence[Item]) -> list[float]:
-    """Return each move's zone [m]: its own, or 0 where an action other than a comment follows
-    it before the next move."""
-    zones = []
-    for i, mv in _moves(items):
-        stop = False
-        for nxt in items[i + 1 :]:
-            if not _is_action(nxt):
-                break
-            stop = stop or not isinstance(nxt, Comment)
-        zones.append(0.0 if stop else float(mv.zone))
-    return zones
-
-
-def nearest_ik(
-    model: RobotModel, T_base_flange: FloatArray, q_near: FloatArray, where: str
-) -> FloatArray:
-    """Return the IK solution (dof,) [rad] of a flange pose nearest `q_near` (the planner's one
-    rule for a pose's joints); UnreachableError names `where`."""
-    try:
-        sols = np.asarray(model.ik(T_base_flange, q_near=q_near), float)
-    except UnreachableError as exc:
-        raise exc.within(where) from exc
-    if len(sols) == 0:
-        raise UnreachableError(f"{where}: no IK solution within the joint limits")
-    return np.asarray(sols[0], float)
-
-
-def _where(index: int, mv: ProgramMove, prefix: str) -> str:
-    return f"{prefix}[{index}]" + (f" ({mv.name})" if mv.name else "")
-
-
-def motion_program(
-    name: str,
-    items: Sequence[Item],
-    model: RobotModel,
-    T_world_base: FloatArray,
-    T_flange_tcp: FloatArray,
-    q_start: FloatArray,
-    *,
-    field: str = "program.moves",
-) -> Program:
-    """Return the motion `Program` the planner runs for `items`: linear moves to the pose in the
-    base frame, joint moves to their joints or to the pose's IK solution nearest the previous
-    joint target (`nearest_ik`), zones from `stop_zones`.
-
-    InputError names the item (`field`[i]) whose joints are of the wrong length or outside the
-    limits [deg]; UnreachableError the pose without an IK solution.
-    """
-    moves_in = _moves(items)
-    if not moves_in:
-        raise InputError(f"{field}: the program has no moves; add at least one")
-    T_base_world = invert_transform(np.asarray(T_world_base, float))
-    T_tcp_flange = invert_transform(np.asarray(T_flange_tcp, float))
-    lo, hi = model.limits[:, 0], model.limits[:, 1]
-    moves, q_prev = [], np.asarray(q_start, float)
-    for (i, mv), zone in zip(moves_in, stop_zones(items), strict=True):
-        where = _where(i, mv, field)
-        if mv.joints is not None:
-            q = np.asarray(mv.joints, float)
-            if q.shape != (model.dof,):
-                raise InputError(f"{where}.joints: expected {model.dof} values [deg], got {len(q)}")
-            bad = np.flatnonzero((q < lo) | (q > hi))
-            if bad.size:
-                # Said in the controller's values: what the project file and the GUI show.
-                j, conv = int(bad[0]), model.convention
-                qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
-                raise InputError(
-                    f"{where}.joints[{j}]: {np.degrees(qc[j]):g} deg is outside the joint"
-                    f" limits [{np.degrees(lim[j, 0]):.1f}, {np.degrees(lim[j, 1]):.1f}] deg;"
-                    " move it inside"
-                )
-            moves.append(Move.joint(q, speed=mv.speed, zone=zone, name=mv.name))
-            q_prev = q
-            continue
-        assert mv.T_world_tcp is not None
-        T_base_tcp = T_base_world @ mv.T_world_tcp
-        if mv.type == "linear":
-            moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=zone, name=mv.name))
-            continue
-        q_prev = nearest_ik(model, T_base_tcp @ T_tcp_flange, q_prev, f"{where}.pose")
-        moves.append(Move.joint(q_prev, speed=mv.speed, zone=zone, name=mv.name))
-    return Program(name, tuple(moves))
 
 
 def arrival_indices(path: JointPath, n_moves: int) -> NDArray[np.int64]:
@@ -178,12 +72,12 @@ def wait_holds(items: Sequence[Item], path: JointPath) -> list[tuple[int, float]
     (WaitTime, a gripper's settle time) of the actions after each move, held at its target's
     last waypoint (before the first move: at the start, waypoint 0). Waits for an input have
     no known length and count 0 s (`MotionPlan.summary` says so)."""
-    n = len(_moves(items))
+    n = len(program_moves(items))
     arrive = arrival_indices(path, n) if n else np.zeros(0, np.int64)
     holds: dict[int, float] = {}
     done = 0
     for item in items:
-        if not _is_action(item):
+        if not is_action(item):
             done += 1
             continue
         acts = item.expand() if isinstance(item, Gripper) else (item,)
@@ -201,7 +95,7 @@ def wait_summary(items: Sequence[Item], path: JointPath) -> str:
     inputs = any(
         isinstance(a, WaitInput)
         for it in items
-        if _is_action(it)
+        if is_action(it)
         for a in (it.expand() if isinstance(it, Gripper) else (it,))
     )
     parts = [f"{held:.2f} s of waits"] if held > 0 else []
@@ -316,7 +210,7 @@ def robot_program(
     pose targets also their TCP pose in that work object and arm configuration. The work
     objects (in the robot base frame) the moves use are kept, in the given order.
     """
-    moves_in = _moves(items)
+    moves_in = program_moves(items)
     if len(moves_in) != len(program.moves):
         raise InputError(f"{len(moves_in)} program moves but {len(program.moves)} planned moves")
     n = len(program.moves)
@@ -331,7 +225,7 @@ def robot_program(
     planned = iter(range(n))
     instructions: list[Instruction] = []
     for item in items:
-        if _is_action(item):
+        if is_action(item):
             instructions.append(item)  # type: ignore[arg-type]
             continue
         k = next(planned)
@@ -353,7 +247,7 @@ def robot_program(
             target = Target(names[k], np.asarray(q, float))
         else:
             T_wobj_tcp = invert_transform(wobj.T_base_wobj) @ model.fk(q) @ tool.T_flange_tcp
-            target = Target(names[k], np.asarray(q, float), T_wobj_tcp, arm_configuration(model, q))
+            target = Target.planned(names[k], np.asarray(q, float), model, T_wobj_tcp)
         instructions.append(
             MoveInstr(
                 mv.kind,  # type: ignore[arg-type]

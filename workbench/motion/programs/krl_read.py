@@ -42,9 +42,11 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -53,6 +55,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.program_text import split_comment, split_top
 
 _I = re.IGNORECASE
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -100,31 +103,13 @@ _TURN = 2.0 * np.pi
 
 def _split_comment(line: str) -> tuple[str, str]:
     """Return (code, comment) of one KRL line (';' outside a string starts the comment)."""
-    in_str = False
-    for i, ch in enumerate(line):
-        if ch == '"':
-            in_str = not in_str
-        elif ch == ";" and not in_str:
-            return line[:i].strip(), line[i + 1 :].strip()
-    return line.strip(), ""
+    code, comment = split_comment(line, ";")
+    return code.strip(), (comment or "").strip()
 
 
 def _split_top(text: str) -> list[str]:
-    parts: list[str] = []
-    cur: list[str] = []
-    depth = 0
-    for ch in text:
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-        if ch == "," and depth == 0:
-            parts.append("".join(cur))
-            cur = []
-        else:
-            cur.append(ch)
-    parts.append("".join(cur))
-    return [p.strip() for p in parts if p.strip()]
+    """Return the components of an aggregate's inside: split at commas outside braces."""
+    return [p for p in split_top(text, ",", "{}", strict=False) if p]
 
 
 def _value(text: str, where: str) -> object:

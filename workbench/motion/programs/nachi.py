@@ -62,8 +62,7 @@ import numpy as np
 
 from workbench.errors import InputError
 from workbench.motion.programs.angles import abc_deg
-from workbench.motion.programs.exported import ExportedProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     Instruction,
@@ -78,6 +77,7 @@ from workbench.motion.programs.model import (
     check_program,
     move_label,
 )
+from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.names import NameTable
 
 RESERVED = (

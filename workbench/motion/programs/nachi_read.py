@@ -31,10 +31,12 @@ import numpy as np
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform, rpy_to_matrix
 from workbench.kinematics.arm_configuration import ArmConfiguration
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -43,6 +45,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.program_text import Unbalanced, split_top
 
 _FILE = re.compile(r"^.+\.\d{3}$")
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -87,25 +90,12 @@ class _Note:
 
 def _split_options(text: str, line: int) -> list[str]:
     """Split a MOVEX argument list at commas outside parentheses."""
-    out: list[str] = []
-    cur: list[str] = []
-    depth = 0
-    for ch in text:
-        if ch == "(":
-            depth += 1
-        elif ch == ")":
-            depth -= 1
-            if depth < 0:
-                raise InputError(f"line {line}: unbalanced ')' in the MOVEX line")
-        if ch == "," and depth == 0:
-            out.append("".join(cur).strip())
-            cur = []
-        else:
-            cur.append(ch)
-    if depth != 0:
-        raise InputError(f"line {line}: unbalanced '(' in the MOVEX line")
-    out.append("".join(cur).strip())
-    return [t for t in out if t]
+    try:
+        parts = split_top(text, ",", "()")
+    except Unbalanced as exc:
+        which = "')'" if exc.closing else "'('"
+        raise InputError(f"line {line}: unbalanced {which} in the MOVEX line") from None
+    return [t for t in parts if t]
 
 
 @dataclass

@@ -71,8 +71,7 @@ import numpy as np
 
 from workbench.kinematics.arm_configuration import ArmConfiguration
 from workbench.motion.programs.angles import quaternion_wxyz
-from workbench.motion.programs.exported import ExportedProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
@@ -86,6 +85,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     check_program,
 )
+from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.names import NameTable
 
 # ABB's predefined zones (TCP path radius in mm); other radii become zonedata literals.

@@ -51,10 +51,12 @@ from workbench.geometry.transforms import (
     rot_z,
     wxyz_to_matrix,
 )
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -63,6 +65,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.program_text import open_string, split_comment, split_statements
 from workbench.motion.programs.rapid import (
     CFX_TABLE,
     PREDEFINED_SPEEDS_MM_S,
@@ -152,16 +155,10 @@ class _Args:
 
 
 def _strip_comment(line: str, where: str) -> str:
-    out, in_str = [], False
-    for ch in line:
-        if ch == '"':
-            in_str = not in_str
-        elif ch == "!" and not in_str:
-            break
-        out.append(ch)
-    if in_str:
+    code, comment = split_comment(line, "!")
+    if comment is None and open_string(code):
         raise InputError("unterminated string; close it with '\"'", field=where)
-    return "".join(out)
+    return code
 
 
 def _first_word(text: str) -> str:
@@ -188,7 +185,7 @@ def _statements(text: str, fname: str) -> list[_Stmt]:
             if word in _HEADERS and not is_compact_if:
                 out.append(_Stmt(n, line.strip(), header=True))
                 continue
-        for piece in _split_semicolons(line):
+        for piece in split_statements(line, ";"):
             if not buf.strip():
                 start = n
             if piece.endswith(";"):
@@ -200,20 +197,6 @@ def _statements(text: str, fname: str) -> list[_Stmt]:
     if buf.strip():
         raise InputError(f"{fname} line {start}: the statement {buf.strip()[:60]!r} has no ';'")
     return out
-
-
-def _split_semicolons(line: str) -> list[str]:
-    pieces, cur, in_str = [], "", False
-    for ch in line:
-        cur += ch
-        if ch == '"':
-            in_str = not in_str
-        elif ch == ";" and not in_str:
-            pieces.append(cur.strip())
-            cur = ""
-    if cur.strip():
-        pieces.append(cur.strip())
-    return pieces
 
 
 # ---------------------------------------------------------------- expressions

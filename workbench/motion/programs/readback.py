@@ -10,11 +10,13 @@ from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.arm_configuration import arm_configuration, select_solution
 from workbench.kinematics.model import RobotModel
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Instruction,
     MotionLimits,
     MoveInstr,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     RobotProgram,
     Target,
     ToolData,
@@ -92,7 +94,6 @@ def to_robot_program(
             continue
         q = next(joints)
         tgt = ins.target
-        cfg = arm_configuration(model, q) if tgt.T_wobj_tcp is not None else None
         via = None
         if ins.via is not None:
             tool = _find(read.tools, ins.tool, "tool", ins.line)
@@ -103,7 +104,7 @@ def to_robot_program(
         instructions.append(
             MoveInstr(
                 ins.kind,
-                Target(tgt.name, q, tgt.T_wobj_tcp, cfg),
+                Target.planned(tgt.name, q, model, tgt.T_wobj_tcp),
                 speed,
                 ins.zone,
                 ins.tool,

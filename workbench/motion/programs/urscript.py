@@ -51,8 +51,7 @@ import numpy as np
 
 from workbench.errors import InputError
 from workbench.motion.programs.angles import rotation_vector
-from workbench.motion.programs.exported import ExportedProgram
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
@@ -66,6 +65,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     check_program,
 )
+from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.names import NameTable
 
 #: URScript keywords and the built-in functions and names a program must not shadow.

@@ -30,10 +30,12 @@ import numpy as np
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import make_transform
-from workbench.motion.programs.exported import ReadMove, ReadProgram, ReadTarget
-from workbench.motion.programs.model import (
+from workbench.motion.programs.controller_program import (
     Action,
     PulseOutput,
+    ReadMove,
+    ReadProgram,
+    ReadTarget,
     SetOutput,
     Signal,
     SyncPoint,
@@ -42,6 +44,7 @@ from workbench.motion.programs.model import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.program_text import Unbalanced, numbered_lines, split_top
 from workbench.motion.programs.urscript import JOINT_SPEED, STANDARD_IO
 
 _IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
@@ -60,24 +63,12 @@ def rotvec_matrix(r: np.ndarray) -> np.ndarray:
 
 
 def _split_args(s: str, where: str) -> list[str]:
-    out, depth, cur = [], 0, ""
-    for ch in s:
-        if ch in "([":
-            depth += 1
-        elif ch in ")]":
-            depth -= 1
-            if depth < 0:
-                raise InputError(f"unbalanced brackets in {s!r}", field=where)
-        if ch == "," and depth == 0:
-            out.append(cur.strip())
-            cur = ""
-        else:
-            cur += ch
-    if depth != 0:
-        raise InputError(f"unbalanced brackets in {s!r}", field=where)
-    if cur.strip():
-        out.append(cur.strip())
-    return out
+    """Split an argument list at commas outside brackets (a trailing empty argument dropped)."""
+    try:
+        parts = split_top(s, ",", "()[]")
+    except Unbalanced:
+        raise InputError(f"unbalanced brackets in {s!r}", field=where) from None
+    return parts if parts[-1] else parts[:-1]
 
 
 def _call(text: str) -> tuple[str, str] | None:
@@ -335,8 +326,7 @@ def read_urscript(files: dict[str, str]) -> ReadProgram:
     scripts = {k: v for k, v in files.items() if k.lower().endswith((".script", ".urscript"))}
     if len(scripts) != 1:
         raise InputError(f"read_urscript needs exactly one .script file, got {sorted(files)}")
-    raw = next(iter(scripts.values())).splitlines()
-    lines = [(no, t.strip()) for no, t in enumerate(raw, start=1) if t.strip()]
+    lines = numbered_lines(next(iter(scripts.values())))
     rd = _Reader()
     name = ""
     k = 0

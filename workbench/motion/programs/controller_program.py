@@ -1,4 +1,5 @@
-"""The robot program model: what every workflow produces, every post writes and every reader returns.
+"""THE CONTROLLER PROGRAM: what every workflow's builder makes from its plan, every post writes
+and every reader reads back (as its `ReadProgram` view, below).
 
 A `RobotProgram` is one robot's program as a controller runs it: named tools (TCP, mass,
 centre of gravity), named work objects (frames in the robot base), and a list of
@@ -12,6 +13,11 @@ planned duration [s] so posts can write speed data that reproduce the planned ti
 `check_program` refuses speeds, zones and accelerations outside the robot's limits, naming
 the move, before anything is written.
 
+A reader returns a `ReadProgram`: the same tools, work objects and actions, but targets as the
+text states them (controller joints, or a pose with configuration data and turn ranges, no
+model joints) and the lines it did not understand; `readback.to_robot_program` re-solves it
+into a `RobotProgram` with the robot's model.
+
 SI inside: m, rad, s, kg. Posts convert to each controller's units.
 """
 
@@ -24,8 +30,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
-from workbench.kinematics.arm_configuration import ArmConfiguration
+from workbench.kinematics.arm_configuration import ArmConfiguration, arm_configuration
 from workbench.kinematics.joint_convention import JointConvention
+from workbench.kinematics.model import RobotModel
 
 FloatArray = NDArray[np.float64]
 
@@ -74,6 +81,16 @@ class Target:
     def cartesian(self) -> bool:
         """Return True for a Cartesian (pose) target, False for a joint target."""
         return self.T_wobj_tcp is not None
+
+    @classmethod
+    def planned(
+        cls, name: str, q: FloatArray, model: RobotModel, T_wobj_tcp: FloatArray | None = None
+    ) -> Target:
+        """Return the target of planned joints `q`: a joint target, or with `T_wobj_tcp` a
+        Cartesian one carrying the arm configuration of `q` (what every builder writes)."""
+        if T_wobj_tcp is None:
+            return cls(name, q)
+        return cls(name, q, T_wobj_tcp, arm_configuration(model, q))
 
 
 @dataclass(frozen=True, eq=False)
@@ -252,6 +269,71 @@ class RobotProgram:
             elif isinstance(a, PulseOutput):
                 t += 0.0
         return float(t)
+
+
+# ---------------------------------------------------------------- the program as read back
+# A reader cannot give a Cartesian target's joints (the robot model and the controller's IK
+# choose them: `readback.to_robot_program`), so what it returns is this view of a RobotProgram:
+# the same tools, work objects and actions, moves whose targets are as the text states them,
+# plus the source lines and what the reader did not understand.
+
+
+@dataclass(frozen=True, eq=False)
+class ReadTarget:
+    """A target as a program states it: controller `joints` (dof,) [rad] for a joint target, or
+    a TCP pose `T_wobj_tcp` (4, 4) [m] with its `configuration` and the controller joint ranges
+    (dof, 2) [rad] its turn data allow (None: not stated)."""
+
+    name: str
+    joints: FloatArray | None = None
+    T_wobj_tcp: FloatArray | None = None
+    configuration: ArmConfiguration | None = None
+    controller_ranges: FloatArray | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class ReadMove:
+    """A move as read: kind, target (and `via` for circular), `speed` (joint: fraction of max,
+    linear/circular: TCP m/s; None when the program gives only a time), `zone` [m], `tool`
+    and `wobj` names, `duration` [s] when the program states one (RAPID \\T), source `line`."""
+
+    kind: MoveKind
+    target: ReadTarget
+    speed: float | None
+    zone: float
+    tool: str
+    wobj: str
+    duration: float | None = None
+    via: ReadTarget | None = None
+    line: int = 0
+
+    @property
+    def name(self) -> str:
+        """Return the target's name."""
+        return self.target.name
+
+
+@dataclass(frozen=True, eq=False)
+class ReadProgram:
+    """A program read back: name, tools, work objects (as declared in the file), instructions
+    (moves and low-level actions, in order), and the lines the reader did not understand
+    (`unknown`: (line number, text)), never dropped silently."""
+
+    name: str
+    tools: tuple[ToolData, ...]
+    work_objects: tuple[WorkObject, ...]
+    instructions: tuple[ReadMove | Action, ...]
+    unknown: tuple[tuple[int, str], ...] = ()
+    notes: tuple[str, ...] = ()
+
+    @property
+    def moves(self) -> tuple[ReadMove, ...]:
+        """Return the moves, in order."""
+        return tuple(i for i in self.instructions if isinstance(i, ReadMove))
+
+    def actions(self) -> tuple[Action, ...]:
+        """Return the actions, in order."""
+        return tuple(i for i in self.instructions if not isinstance(i, ReadMove))
 
 
 @dataclass(frozen=True, eq=False)
