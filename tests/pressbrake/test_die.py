@@ -8,7 +8,14 @@ from seed_part import seed_spec
 
 from workbench.errors import InputError
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
-from workbench.pressbrake.die import Die, bend_on_die, die_part_pose, die_placements, die_targets
+from workbench.pressbrake.die import (
+    Die,
+    bend_on_die,
+    die_boxes,
+    die_part_pose,
+    die_placements,
+    die_targets,
+)
 from workbench.pressbrake.grasp import Grasp, T_part_grasp
 from workbench.sheetmetal import SheetMetalPart
 
@@ -72,3 +79,18 @@ def test_bend_on_die() -> None:
         5,
         5,
     ]
+
+
+def test_die_boxes_hold_the_flat_part_on_the_die_and_the_bend_line(part) -> None:  # type: ignore[no-untyped-def]
+    g = Grasp("1")
+    flat, line = die_boxes(part, DIE, g)
+    # the twin: every vertex of the flat solid placed by hand, min and max taken in a loop
+    T = die_part_pose(part, 0, DIE, g)
+    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+    for v in part.fold(0.0).solid().vertices:
+        w = T[:3, :3] @ v + T[:3, 3]
+        lo, hi = np.minimum(lo, w), np.maximum(hi, w)
+    np.testing.assert_allclose(flat, [lo, hi], atol=1e-12)
+    a = DIE.T_world_die[:3, 3] - DIE.T_world_die[:3, 0] * DIE.length / 2
+    b = DIE.T_world_die[:3, 3] + DIE.T_world_die[:3, 0] * DIE.length / 2
+    np.testing.assert_allclose(line, [np.minimum(a, b), np.maximum(a, b)], atol=1e-12)

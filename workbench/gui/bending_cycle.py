@@ -17,7 +17,7 @@ from workbench.gui.scene import place
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import BendingCycle
+    from workbench.service.bending import BendingResult
 
 MESH_STEP = 0.01  # [bends] a fold change up to this keeps the mesh drawn
 MESH_PERIOD = 0.1  # [s] at most one mesh rebuild this often (playback and scrubbing)
@@ -35,7 +35,7 @@ class CycleFollower:
     def __init__(
         self,
         app: WorkbenchApp,
-        plan: BendingCycle,
+        plan: BendingResult,
         *,
         part_frame: Any,
         show_fold: Callable[[float], None],

@@ -22,13 +22,12 @@ from workbench.gui.progress import busy
 from workbench.gui.scene import place
 from workbench.gui.sequence_search import SequenceSearch
 from workbench.gui.timeline import SECONDS
-from workbench.service.bending import BendingPlan
 
 if TYPE_CHECKING:
     import trimesh
 
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import BendingCycle, DiePlacement, OBBTree
+    from workbench.service.bending import BendingResult, CheckCost, DiePlacement, OBBTree
 
 MM_PER_M = 1e3  # m -> mm for display
 PART_COLOR = (120, 170, 230)
@@ -370,22 +369,22 @@ class BendingPanel:
             plan = svc.plan(progress=progress)
         self._show_plan(plan)
 
-    def _show_plan(self, plan: BendingPlan | BendingCycle) -> None:
+    def _show_plan(self, plan: BendingResult) -> None:
         """Show a plan's summary, and its motion on the timeline."""
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()
-        if isinstance(plan, BendingPlan):
+        cost = self.app.wb.bending.check_cost(plan)  # measured on request, not by the plan
+        if cost is not None:  # one OBB tree checks the part throughout (no press)
             nb = float(len(self.app.wb.bending.part.bends))
             self.step.value = nb  # type: ignore[misc]  # redraws the folded tree
-            self._show_plots(plan)
+            self._show_plots(plan, cost)
             self._load_timeline(plan)
         else:
             self._load_cycle(plan)
 
-    def _show_plots(self, plan: BendingPlan) -> None:
+    def _show_plots(self, plan: BendingResult, cost: CheckCost) -> None:
         for h in self.plots:
             h.remove()
-        cost = self.app.wb.bending.check_cost(plan)  # measured on request, not by the plan
         x = np.arange(1, len(plan.times) + 1, dtype=float)
         fx = uplot.Series(label="frame")
         with self.plot_folder:
@@ -414,14 +413,13 @@ class BendingPanel:
                 ),
             ]
 
-    def _load_timeline(self, plan: BendingPlan) -> None:
+    def _load_timeline(self, plan: BendingResult) -> None:
         svc = self.app.wb.bending
         robot = self.app.wb.robot
 
         def follow(t: float) -> None:
             place(self.part_frame, svc.part_pose_at(plan, t))
-            rep = plan.part_report.frame(plan.nearest_frame(t))
-            self._check = (rep.nodes_tested, rep.nodes_hit)
+            self._check = plan.tree_check_at(t)
             self._show_levels()
 
         self.app.timeline.load(
@@ -429,11 +427,11 @@ class BendingPanel:
             robot=robot,
             follow=follow,
         )
-        first = plan.first_collision
+        first = plan.first_problem_time
         if first is not None:
-            self.app.timeline.time.value = round(float(plan.times[first.frame]), 4)  # type: ignore[misc]
+            self.app.timeline.time.value = round(first, 4)  # type: ignore[misc]
 
-    def _load_cycle(self, plan: BendingCycle) -> None:
+    def _load_cycle(self, plan: BendingResult) -> None:
         """Play a press-brake cycle: the robot, the part folded and carried, the ram and the
         back-gauge; the timeline starts at the first colliding frame when there is one."""
         svc = self.app.wb.bending
@@ -443,6 +441,6 @@ class BendingPanel:
             self.app, plan, part_frame=self.part_frame, show_fold=self.show_fold
         )
         self.app.timeline.load(svc.playback(plan), robot=self.app.wb.robot, follow=self.follower)
-        hits = np.flatnonzero(plan.colliding)
-        if len(hits):
-            self.app.timeline.time.value = round(float(plan.frames.times[hits[0]]), 4)  # type: ignore[misc]
+        first = plan.first_problem_time
+        if first is not None:
+            self.app.timeline.time.value = round(first, 4)  # type: ignore[misc]

@@ -19,7 +19,7 @@ from workbench.gui.progress import busy
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
-    from workbench.service.bending import BendingCycle, BendingPlan, SearchResult, SequencePlan
+    from workbench.service.bending import BendingResult, SearchResult, SequencePlan
 
 ENGINES = ("serial", "ray")
 MAX_TIME_LIMIT = 3600.0  # [s] the longest search the box takes
@@ -85,7 +85,7 @@ class SequenceSearch:
         app: WorkbenchApp,
         *,
         on_used: Callable[[], None],
-        on_planned: Callable[[BendingPlan | BendingCycle], None],
+        on_planned: Callable[[BendingResult], None],
     ) -> None:
         self.app = app
         self.server = s = app.server

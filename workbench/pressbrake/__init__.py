@@ -12,6 +12,7 @@ from workbench.pressbrake.bend_eval import BendEval, Reach, SweepContext, evalua
 from workbench.pressbrake.bend_setup import BendPose, GaugeStop, bend_pose, gauge_stop
 from workbench.pressbrake.cycle import BendingCycle, check_cycle
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.cycle_plan import CycleRobot
 from workbench.pressbrake.die import (
     Die,
     DiePlacement,
@@ -46,6 +47,7 @@ from workbench.pressbrake.press import (
     punch_profile,
     ram_time,
 )
+from workbench.pressbrake.result import BendingResult
 from workbench.pressbrake.sequencing import (
     SearchResult,
     SearchSettings,
@@ -61,6 +63,7 @@ from workbench.pressbrake.transfer import (
     transfer_poses,
     world_tcp,
 )
+from workbench.pressbrake.transfer_plan import plan_transfer
 
 __all__ = [
     "air_bend_radius",
@@ -73,10 +76,12 @@ __all__ = [
     "BendEval",
     "BendingCycle",
     "BendingPlan",
+    "BendingResult",
     "BendPose",
     "carried_poses",
     "cell_obstacles",
     "check_cycle",
+    "CycleRobot",
     "check_flange",
     "check_part",
     "checked_grasp",
@@ -97,6 +102,7 @@ __all__ = [
     "Grasp",
     "grasp_point",
     "Obstacles",
+    "plan_transfer",
     "playback",
     "PressBrake",
     "Punch",

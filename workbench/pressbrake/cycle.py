@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 import trimesh
@@ -41,6 +42,7 @@ from workbench.pressbrake.bend_setup import (
     bend_pose,
     contact_zone,
     merge_obstacles,
+    press_poses,
 )
 from workbench.pressbrake.cycle_path import (
     CycleCell,
@@ -61,6 +63,11 @@ from workbench.pressbrake.transit import (
 )
 from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.part import SheetMetalPart
+
+if TYPE_CHECKING:
+    from workbench.motion.programs.model import ProgramSettings, RobotProgram
+    from workbench.pressbrake.press import PressBrake
+    from workbench.pressbrake.program import RobotAt
 
 F64 = NDArray[np.float64]
 Progress = Callable[[float, str], None]
@@ -153,6 +160,53 @@ class BendingCycle:
         return SampledMotion(
             t, p, v, a, world_tcp(p), self.colliding[self.frame_at(t)], name="bending cycle"
         )
+
+    @property
+    def duration(self) -> float:
+        """Return the cycle's duration [s] (`cycle_time`)."""
+        return self.cycle_time
+
+    @property
+    def first_problem_time(self) -> float | None:
+        """Return the time [s] of the first colliding frame (None: free)."""
+        hits = np.flatnonzero(self.colliding)
+        return float(self.frames.times[hits[0]]) if len(hits) else None
+
+    @property
+    def grasp_frames(self) -> None:
+        """Return None: the cycle checks the part per state, not by one tree at the grasp."""
+        return None
+
+    def part_pose_at(self, t: float, world_tcp: Callable[[F64], F64] | None = None) -> F64:
+        """Return T_world_part (4, 4) [m] at the last checked frame at or before time `t` [s]
+        (`world_tcp` unused: the frames hold the part's pose)."""
+        return self.frames.T_world_part[int(self.frame_at(t))]  # type: ignore[no-any-return]
+
+    def part_step_at(self, t: float) -> float:
+        """Return how far the part is folded at time `t` [s] (bends done, fractions partway)."""
+        return float(self.frames.step[int(self.frame_at(t))])
+
+    def press_poses_at(self, t: float, press: PressBrake | None) -> dict[str, F64]:
+        """Return the world poses (4, 4) [m] of `press`'s moving bodies at time `t` [s], by
+        their display names (`bend_setup.press_poses`)."""
+        assert press is not None, "a cycle is planned with a press"
+        n = int(self.frame_at(t))
+        k = int(self.frames.stop[n])
+        stop = self.path.stops[k] if k >= 0 else None
+        return press_poses(press, float(self.frames.punch_z[n]), stop)
+
+    def tree_check_at(self, t: float) -> None:
+        """Return None: no single OBB tree checks the part through the cycle."""
+        return None
+
+    def robot_program(
+        self, robot_at: RobotAt, cell: object, settings: ProgramSettings, q_start: F64
+    ) -> RobotProgram:
+        """Return the cycle as a robot program (`pressbrake.cycle_program.cycle_program`;
+        `cell` unused: the cycle holds its stations)."""
+        from workbench.pressbrake.cycle_program import cycle_program  # it imports this module
+
+        return cycle_program(self, robot_at, settings, q_start)
 
     def waypoint_times(self) -> F64:
         """Return when the robot reaches each waypoint [s] (arrival, before its hold)."""

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
+from workbench.geometry.aabb import world_aabb
 from workbench.geometry.transforms import invert_transform, make_transform, rot_z
 from workbench.pressbrake.grasp import Grasp, T_flange_grasp, T_part_grasp
 from workbench.sheetmetal.part import SheetMetalPart
@@ -101,3 +102,12 @@ def die_placements(
         DiePlacement(part.bends[s].name, s, T_world_part[s], T_world_tcp[s], q[s])
         for s in range(len(part.bends))
     )
+
+
+def die_boxes(part: SheetMetalPart, die: Die, grasp: Grasp) -> list[NDArray[np.float64]]:
+    """Return world boxes (2, 3) [m] (lo, hi) of the flat part on the die for its first bend
+    and of the die's bend line: what a view of the bending frames."""
+    T_world_part = die_part_pose(part, 0, die, grasp)
+    flat = world_aabb(part.fold(0.0).solid().vertices, T_world_part)
+    ends = np.array([[-die.length / 2, 0, 0, 1], [die.length / 2, 0, 0, 1]]) @ die.T_world_die.T
+    return [flat, world_aabb(ends[:, :3])]

@@ -9,14 +9,21 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision.engine import EnginePathReport
 from workbench.motion import SampledMotion, Trajectory
 from workbench.pressbrake.die import DiePlacement
 from workbench.sheetmetal.obbtree import FramesReport
+
+if TYPE_CHECKING:
+    from workbench.motion.programs.model import ProgramSettings, RobotProgram
+    from workbench.pressbrake.program import BendingCell, RobotAt
+
+F64 = NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -136,6 +143,7 @@ class BendingPlan:
     obstacle_names: tuple[str, ...]
     robot_report: EnginePathReport | None = None
     robot_between: NDArray[np.bool_] | None = None
+    T_tcp_part: NDArray[np.float64] | None = None  # (4, 4) [m] the part held, in the TCP frame
 
     @property
     def tree_tests(self) -> NDArray[np.int64]:
@@ -157,10 +165,63 @@ class BendingPlan:
         """Return the index of the checked frame nearest time `t` [s]."""
         return int(np.argmin(np.abs(self.times - t)))
 
-    def frame_at(self, t: NDArray[np.float64]) -> NDArray[np.intp]:
+    def frame_at(self, t: ArrayLike) -> NDArray[np.intp]:
         """Return, per time (N,) [s], the index of the last checked frame at or before it."""
         k = np.searchsorted(self.times, t, side="right") - 1
         return np.clip(k, 0, len(self.times) - 1)
+
+    @property
+    def duration(self) -> float:
+        """Return the transfer's duration [s]."""
+        return float(self.trajectory.duration)
+
+    @property
+    def first_problem_time(self) -> float | None:
+        """Return the time [s] of the first collision's frame (None: free)."""
+        first = self.first_collision
+        return None if first is None else float(self.times[first.frame])
+
+    @property
+    def grasp_frames(self) -> NDArray[np.float64]:
+        """Return the gripped flange's poses (F, 4, 4) [m] (the tree's root at each frame)."""
+        return self.T_world_grasp
+
+    def part_pose_at(
+        self, t: float, world_tcp: Callable[[NDArray[np.float64]], NDArray[np.float64]]
+    ) -> NDArray[np.float64]:
+        """Return T_world_part (4, 4) [m] of the part held at time `t` [s] of the transfer
+        (a plan without `T_tcp_part`: at the last checked frame before t)."""
+        if self.T_tcp_part is None:
+            return self.T_world_part[int(self.frame_at(t))]  # type: ignore[no-any-return]
+        q = self.trajectory.at([t])[0][0]
+        return world_tcp(q) @ self.T_tcp_part  # type: ignore[no-any-return]
+
+    def part_step_at(self, t: float) -> float:
+        """Return how far the part is folded at time `t` [s]: all bends done (the transfer)."""
+        return float(len(self.placements))
+
+    def press_poses_at(self, t: float, press: object) -> dict[str, NDArray[np.float64]]:
+        """Return no press poses: the transfer moves no press."""
+        return {}
+
+    def tree_check_at(self, t: float) -> tuple[tuple[int, ...], tuple[int, ...]]:
+        """Return the OBB tree's (tested, hit) nodes at the frame nearest time `t` [s]."""
+        rep = self.part_report.frame(self.nearest_frame(t))
+        return rep.nodes_tested, rep.nodes_hit
+
+    def playback(
+        self, world_tcp: Callable[[NDArray[np.float64]], NDArray[np.float64]], dt: float = 0.02
+    ) -> SampledMotion:
+        """Return the transfer sampled every `dt` [s] for the timeline (`playback`)."""
+        return playback(self, world_tcp, dt)
+
+    def robot_program(
+        self, robot_at: RobotAt, cell: BendingCell, settings: ProgramSettings, q_start: F64
+    ) -> RobotProgram:
+        """Return the plan as a robot program (`pressbrake.program.bending_program`)."""
+        from workbench.pressbrake.program import bending_program  # it imports this module
+
+        return bending_program(self, robot_at, cell, settings, q_start)
 
     def summary(self) -> str:
         """Return a short human summary (markdown)."""

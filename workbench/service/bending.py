@@ -16,9 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.collision import Solid
 from workbench.errors import InputError
 from workbench.motion import SampledMotion
-from workbench.pressbrake.bend_setup import press_poses
-from workbench.pressbrake.cycle import BendingCycle
-from workbench.pressbrake.cycle_program import cycle_program
+from workbench.pressbrake.cycle import BendingCycle as BendingCycle  # re-exported (gui)
 from workbench.pressbrake.die import DiePlacement, bend_on_die, die_part_pose
 from workbench.pressbrake.grasp import (
     Grasp,
@@ -28,15 +26,15 @@ from workbench.pressbrake.grasp import (
     grasp_point,
 )
 from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
-from workbench.pressbrake.plan import BendingPlan
-from workbench.pressbrake.plan import playback as sample_playback
-from workbench.pressbrake.program import RobotProgram, bending_program
+from workbench.pressbrake.plan import BendingPlan as BendingPlan  # re-exported (gui)
+from workbench.pressbrake.program import RobotProgram
+from workbench.pressbrake.result import BendingResult
 from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
-from workbench.pressbrake.transfer import carried_poses, transfer_poses, world_tcp
+from workbench.pressbrake.transfer import transfer_poses, world_tcp
+from workbench.pressbrake.transfer_plan import placements, plan_transfer
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.project.program_io import program_settings
 from workbench.service import bending_process as process
-from workbench.service import bending_transfer as transfer_plan
 from workbench.service.section import SectionService
 from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
 from workbench.sheetmetal.check_cost import CheckCost, check_cost
@@ -58,7 +56,8 @@ class BendingService(SectionService[BendingSpec]):
         super().__init__(wb)
         self._part: SheetMetalPart | None = None
         self._part_spec: PartSpec | None = None
-        self._plan: BendingPlan | BendingCycle | None = None
+        self._plan: BendingResult | None = None
+        self._si: tuple[BendingSpec, BendingSI] | None = None  # (section converted, its SI)
 
     # -- project section ------------------------------------------------------------------
     def part_spec(self) -> PartSpec:
@@ -68,8 +67,18 @@ class BendingService(SectionService[BendingSpec]):
         return self._part_spec
 
     def si(self) -> BendingSI:
-        """Return the `bending` section in SI units (its part and sequence resolved)."""
-        return self.spec.to_si(self.part_spec())
+        """Return the `bending` section in SI units (its part and sequence resolved).
+
+        Converted once per change: every setter here that changes the section calls
+        `_changed`, and another project is another service (`Workbench._load`)."""
+        spec = self.spec
+        if self._si is None or self._si[0] is not spec:
+            self._si = (spec, spec.to_si(self.part_spec()))
+        return self._si[1]
+
+    def _changed(self) -> None:
+        """Forget what was derived from the section before it changed: its SI form, the plan."""
+        self._si, self._plan = None, None
 
     @property
     def part(self) -> SheetMetalPart:
@@ -99,7 +108,8 @@ class BendingService(SectionService[BendingSpec]):
         part = self._build_part(replace(part_si, sequence=tuple(names)))  # raises when infeasible
         self.spec.steps = None  # a plan's grasps and stations belong to its own order
         self.spec.sequence = names
-        self._part, self._plan = part, None
+        self._changed()
+        self._part = part
 
     # -- grasp --------------------------------------------------------------------------
     @property
@@ -123,7 +133,7 @@ class BendingService(SectionService[BendingSpec]):
         grasp = checked_grasp(self.part, flange, offset, 0.0 if yaw is None else yaw)
         self.spec.steps = None  # the grasp chosen now serves every bend
         self.spec.grasp.set_si(grasp, keep_yaw=yaw is None)
-        self._plan = None
+        self._changed()
 
     def T_flange_grasp(self) -> NDArray[np.float64]:
         """Return the TCP pose (4, 4) [m] in the gripped flange's frame: on its top face, z into the sheet."""
@@ -166,27 +176,41 @@ class BendingService(SectionService[BendingSpec]):
 
         Raises UnreachableError naming the bend the robot cannot hold on the die.
         """
-        return transfer_plan.placements(self)
+        return placements(self.wb.setup, self.part, self.si().die, self.grasp, self.wb.joints)
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
         """Return TCP poses (N, 4, 4) [m] of the transfer: retract, via poses, pallet; with names."""
         si = self.si()
         return transfer_poses(si.transfer, si.die, last, self.part, si.grasp)
 
-    def plan(self, *, progress: Progress | None = None) -> BendingPlan | BendingCycle:
+    def plan(self, *, progress: Progress | None = None) -> BendingResult:
         """Plan the project's bending.
 
         With a press (`bending.press`): the whole cycle of the project's sequence and steps
         (`BendingCycle`: pick, every bend with the ram and back-gauge, regrips, transfer,
         pallet; every frame checked; `bending_process.plan_cycle`). Without: each bend placed
         on the die and the checked transfer to the pallet (`BendingPlan`,
-        `bending_transfer.plan_transfer`). `progress(fraction, message)` reports the stages.
+        `pressbrake.transfer_plan.plan_transfer`). `progress(fraction, message)` reports the
+        stages. Either is a `BendingResult`.
         """
-        plan: BendingPlan | BendingCycle
-        if self.si().press is not None:
+        plan: BendingResult
+        si = self.si()
+        if si.press is not None:
             plan = process.plan_cycle(self, progress)
         else:
-            plan = transfer_plan.plan_transfer(self, progress)
+            plan = plan_transfer(
+                self.wb.setup,
+                self.part,
+                self.grasp,
+                die=si.die,
+                transfer=si.transfer,
+                frames=si.frames,
+                q_start=self.wb.joints,
+                obstacles=self.obstacles(),
+                checker=self.wb.checker,
+                policy=self.wb.collision_policy,
+                progress=progress,
+            )
         self._plan = plan
         return plan
 
@@ -218,8 +242,8 @@ class BendingService(SectionService[BendingSpec]):
         """Put a plan's sequence, grasps and stations into the project: `plan()` then replays
         that cycle, and saving keeps it."""
         self.spec.set_steps_si(list(plan.sequence), process.steps_of(plan))
+        self._changed()
         self._part = None
-        self._plan = None
 
     def part_cell_bodies(self) -> list[tuple[str, Solid, NDArray[np.float64]]]:
         """Return the cell's colliding objects the part is checked against (world), the press
@@ -238,47 +262,39 @@ class BendingService(SectionService[BendingSpec]):
         return 0.0 if g is None else float(g.settle)
 
     @property
-    def last_plan(self) -> BendingPlan | BendingCycle | None:
+    def last_plan(self) -> BendingResult | None:
         """Return the latest plan (None before `plan`, or after the sequence or grasp changed)."""
         return self._plan
 
-    def robot_programs(self, plan: BendingPlan | BendingCycle | None = None) -> list[RobotProgram]:
-        """Return the plan (default: the last) as a robot program (`sheetmetal.program`)."""
+    def robot_programs(self, plan: BendingResult | None = None) -> list[RobotProgram]:
+        """Return the plan (default: the last) as a robot program (`BendingResult.robot_program`)."""
         plan, s = plan or self.last_plan or self.plan(), program_settings(self.wb.project)
-        if isinstance(plan, BendingCycle):
-            return [cycle_program(plan, self.wb.setup, s, self.wb.joints)]
-        return [bending_program(plan, self.wb.setup, self.si(), s, self.wb.joints)]
+        return [plan.robot_program(self.wb.setup, self.si(), s, self.wb.joints)]
 
-    def check_cost(self, plan: BendingPlan, repeat: int = 3) -> CheckCost:
-        """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request."""
-        return check_cost(self.tree(), self.obstacles().boxes, plan.T_world_grasp, repeat)
+    def check_cost(self, plan: BendingResult, repeat: int = 3) -> CheckCost | None:
+        """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request;
+        None for a result whose part no single tree checks (a cycle)."""
+        frames = plan.grasp_frames
+        if frames is None:
+            return None
+        return check_cost(self.tree(), self.obstacles().boxes, frames, repeat)
 
-    def part_pose_at(self, plan: BendingPlan | BendingCycle, t: float) -> NDArray[np.float64]:
+    def part_pose_at(self, plan: BendingResult, t: float) -> NDArray[np.float64]:
         """Return T_world_part (4, 4) [m] of the part at time `t` [s] (a cycle: at the last
         checked frame before t; its fold step is `part_step_at`)."""
-        if isinstance(plan, BendingCycle):
-            return plan.frames.T_world_part[int(plan.frame_at(t))]  # type: ignore[no-any-return]
-        q = plan.trajectory.at([t])[0][0]
-        return carried_poses(self.world_tcp(q), self.part, self.grasp)[1]
+        return plan.part_pose_at(t, self.world_tcp)
 
-    def part_step_at(self, plan: BendingPlan | BendingCycle, t: float) -> float:
+    def part_step_at(self, plan: BendingResult, t: float) -> float:
         """Return how far the part is folded at time `t` [s] (bends done, fractions partway)."""
-        if isinstance(plan, BendingCycle):
-            return float(plan.frames.step[int(plan.frame_at(t))])
-        return float(len(self.part.bends))
+        return plan.part_step_at(t)
 
-    def press_poses_at(self, plan: BendingCycle, t: float) -> dict[str, NDArray[np.float64]]:
+    def press_poses_at(self, plan: BendingResult, t: float) -> dict[str, NDArray[np.float64]]:
         """Return the world poses (4, 4) [m] of the press's moving bodies at time `t` [s], by
-        their cell names ("press punch", "press upper beam", "press back-gauge finger 1", ...)."""
-        press = process.press_of(self.si())
-        n = int(plan.frame_at(t))
-        k = int(plan.frames.stop[n])
-        stop = plan.path.stops[k] if k >= 0 else None
-        poses = press_poses(press, float(plan.frames.punch_z[n]), stop)
+        their cell names ("press punch", "press upper beam", "press back-gauge finger 1", ...);
+        empty for a plan without a press."""
+        poses = plan.press_poses_at(t, self.si().press)
         return {f"press {name}": T for name, T in poses.items()}
 
-    def playback(self, plan: BendingPlan | BendingCycle, dt: float = 0.02) -> SampledMotion:
+    def playback(self, plan: BendingResult, dt: float = 0.02) -> SampledMotion:
         """Return the plan sampled every `dt` [s] for the timeline, frames' verdicts carried over."""
-        if isinstance(plan, BendingCycle):
-            return plan.playback(self.world_tcp, dt)
-        return sample_playback(plan, self.world_tcp, dt)
+        return plan.playback(self.world_tcp, dt)

@@ -2,34 +2,24 @@
 planned cycle, built from the project's `bending` section (SI through `BendingSpec.to_si`).
 
 Orchestration only: it hands the project's SI values, the robot and the cell to
-`workbench.sheetmetal` (`sequencing.find_sequences`, `cycle.check_cycle`) and returns their
-results.
+`workbench.pressbrake` (`cycle_plan`, `cycle_search`) and returns their results.
 """
 
 from __future__ import annotations
 
-import uuid
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from workbench.batch import check_engine
-from workbench.collision.plan_check import shared_engine
 from workbench.errors import InputError
-from workbench.pressbrake.airbend import short_flanges
-from workbench.pressbrake.bend_eval import Reach, SweepContext, fitting_station
-from workbench.pressbrake.cycle import BendingCycle, PartScene, check_cycle
+from workbench.pressbrake.bend_eval import SweepContext
+from workbench.pressbrake.cycle import BendingCycle
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
-from workbench.pressbrake.grasp_grid import grasp_grid
+from workbench.pressbrake.cycle_plan import CycleRobot, checked_press, default_steps
+from workbench.pressbrake.cycle_search import search_cycles
+from workbench.pressbrake.cycle_search import sweep_context as search_context
 from workbench.pressbrake.press import PressBrake
-from workbench.pressbrake.sequencing import (
-    Rejected,
-    SearchResult,
-    SearchSettings,
-    SequencePlan,
-    find_sequences,
-)
+from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
 from workbench.project.bending import BendingSI, BendStepSI
 
 if TYPE_CHECKING:
@@ -48,43 +38,34 @@ def press_of(si: BendingSI) -> PressBrake:
     return si.press
 
 
-def checked_press(svc: BendingService) -> PressBrake:
-    """Return the press after the part's fit on its die: InputError naming each flange too
-    short to bridge the V-opening."""
-    press = press_of(svc.si())
-    problems = short_flanges(svc.part, press.die.v_opening)
-    if problems:
-        raise InputError("; ".join(problems))
-    return press
+def cycle_robot(svc: BendingService) -> CycleRobot:
+    """Return the project's robot in its cell, the press left out of the part's bodies."""
+    wb = svc.wb
+    setup = wb.setup
+    return CycleRobot(
+        wb.robot,
+        setup.T_world_base,
+        setup.T_flange_tcp,
+        wb.checker,
+        wb.collision_policy,
+        svc.part_cell_bodies(),
+    )
 
 
 def sweep_context(svc: BendingService) -> SweepContext:
     """Return the search's context: the part, press, cell, robot and candidate grasps."""
-    wb = svc.wb
-    si = svc.si()
-    press = checked_press(svc)
-    setup = wb.setup
-    reach = Reach.of(
-        wb.robot,
-        setup.T_world_base,
-        setup.T_flange_tcp,
-        wb.joints,
-        setup.tool_mesh,
-        setup.link_meshes,
-    )
-    part = svc.part
-    g = si.grasp_grid
-    try:
-        grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
-    except InputError as exc:
-        raise InputError(f"bending.grasp_grid: {str(exc).removeprefix('grasp grid: ')}") from None
-    return SweepContext(
+    si, wb = svc.si(), svc.wb
+    press = press_of(si)
+    press = checked_press(svc.part, press)
+    return search_context(
         si.part,
+        svc.part,
         press,
-        tuple(svc.part_cell_bodies()),
-        reach,
-        tuple(grasps),
-        key=uuid.uuid4().hex,
+        cycle_robot(svc),
+        wb.joints,
+        wb.setup.tool_mesh,
+        wb.setup.link_meshes,
+        si.grasp_grid,
         T_world_blank=si.blank,
         T_world_pallet=si.transfer.T_world_pallet,
         lift=si.lift,
@@ -96,8 +77,9 @@ def sweep_context(svc: BendingService) -> SweepContext:
 def cycle_cell(svc: BendingService) -> CycleCell:
     """Return the cycle's cell from the project: press, stack, station, pallet, transfer."""
     si = svc.si()
+    press = press_of(si)
     return CycleCell(
-        checked_press(svc),
+        checked_press(svc.part, press),
         si.blank,
         si.regrip,
         si.transfer.T_world_pallet,
@@ -117,29 +99,12 @@ def cycle_steps(svc: BendingService) -> list[CycleStep]:
     si, part = svc.si(), svc.part
     if si.steps is not None:
         return [CycleStep(s.bend, s.grasp, s.station) for s in si.steps]
-    press = press_of(si)
-    return [
-        CycleStep(b.name, si.grasp, fitting_station(press, float(part.bend_lengths[i])))
-        for i, b in enumerate(part.bends)
-    ]
+    return default_steps(part, si.grasp, press_of(si))
 
 
 def plan_cycle(svc: BendingService, progress: Progress | None = None) -> BendingCycle:
     """Return the planned and checked cycle of the project's sequence and steps."""
-    wb = svc.wb
-    setup = wb.setup
-    return check_cycle(
-        svc.part,
-        cycle_steps(svc),
-        cycle_cell(svc),
-        model=wb.robot,
-        T_world_base=setup.T_world_base,
-        T_flange_tcp=setup.T_flange_tcp,
-        checker=wb.checker,
-        policy=wb.collision_policy,
-        cell_bodies=svc.part_cell_bodies(),
-        progress=progress,
-    )
+    return cycle_robot(svc).check_cycle(svc.part, cycle_steps(svc), cycle_cell(svc), progress)
 
 
 def search(
@@ -155,67 +120,10 @@ def search(
     """Return the ranked plans of the project's part; each is checked as a full cycle."""
     check_engine(engine, address)  # before the set-up: an unusable engine fails at once
     ctx = sweep_context(svc)
-    wb = svc.wb
-    setup = wb.setup
-    cell = cycle_cell(svc)
-    base = ctx.part()
-    names = [b.name for b in base.bends]
-    others = svc.part_cell_bodies()
-
-    def verify(plan: SequencePlan) -> SequencePlan | Rejected:
-        from dataclasses import replace
-
-        from workbench.errors import WorkbenchError
-        from workbench.sheetmetal.part import SheetMetalPart
-
-        order = [names.index(b) for b in plan.sequence]
-        part = SheetMetalPart(base.thickness, list(base.flanges), [base.bends[i] for i in order])
-        steps = [
-            CycleStep(b, g, s)
-            for b, g, s in zip(plan.sequence, plan.grasps, plan.stations, strict=True)
-        ]
-        try:
-            cyc = check_cycle(
-                part,
-                steps,
-                cell,
-                model=wb.robot,
-                T_world_base=setup.T_world_base,
-                T_flange_tcp=setup.T_flange_tcp,
-                checker=wb.checker,
-                policy=wb.collision_policy,
-                cell_bodies=others,
-            )
-        except WorkbenchError as exc:
-            return Rejected(f"full cycle: {exc}")
-        if cyc.first_problem is not None:
-            return Rejected(f"full cycle: {cyc.first_problem}", cyc.first_step)
-        return replace(
-            plan,
-            cycle_time=cyc.cycle_time,
-            regrips=cyc.regrips,
-            verified=True,
-            estimated=False,
-        )
-
-    fast, _ = shared_engine(wb.checker, wb.collision_policy)
-
-    def robot_free(q: np.ndarray, lying: tuple[Any, np.ndarray] | None) -> np.ndarray:
-        scene = None if lying is None else PartScene(wb.checker, *lying)
-
-        def hits(qi: np.ndarray) -> bool:
-            if fast is not None:
-                return fast.check(qi).colliding
-            return bool(wb.checker.check(qi, distance=False).colliding)
-
-        return np.array(
-            [not hits(qi) and (scene is None or scene.link_hit(qi) is None) for qi in q]
-        )
-
-    return find_sequences(
+    return search_cycles(
         ctx,
-        verify=verify,
-        robot_free=robot_free,
+        cycle_cell(svc),
+        cycle_robot(svc),
         engine=engine,
         address=address,
         time_limit=time_limit,

@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError, WorkbenchError
 from workbench.geometry.aabb import aabb_union, world_aabb
+from workbench.pressbrake.die import die_boxes
 
 if TYPE_CHECKING:
     from workbench.service.workbench import Workbench
@@ -65,10 +66,7 @@ def _cell(wb: Workbench) -> list[NDArray[np.float64]]:
 
 def _bending(wb: Workbench) -> list[NDArray[np.float64]]:
     svc = wb.bending
-    part = world_aabb(svc.fold(0.0).solid().vertices, svc.die_part_pose(0))
-    die = svc.si().die
-    ends = np.array([[-die.length / 2, 0, 0, 1], [die.length / 2, 0, 0, 1]]) @ die.T_world_die.T
-    return [part, world_aabb(ends[:, :3])]
+    return die_boxes(svc.part, svc.si().die, svc.grasp)
 
 
 def scene_bounds(wb: Workbench, focus: str = "all") -> SceneBounds:
