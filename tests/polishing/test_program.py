@@ -10,7 +10,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from workbench import Workbench
 from workbench.errors import InputError
 from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
@@ -20,6 +19,7 @@ from workbench.motion.programs.rapid_read import read_rapid
 from workbench.polishing.program import CHORD_TOLERANCE, thin_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from example_plans import planned  # noqa: E402
 from program_round_trip import check_read_back  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -86,10 +86,10 @@ def test_thinning_keeps_the_tool_axis_within_its_angle() -> None:
 
 @pytest.fixture(scope="module")
 def polished() -> tuple:
-    wb = Workbench.open(ROOT / "projects" / "polishing_cell.json")
-    plan = wb.polishing.plan_motion()
-    (prog,) = wb.polishing.robot_programs(plan)
-    return wb, plan, prog
+    # the polishing cell's plan and program, once per session (tests/example_plans.py: the
+    # export and read-back matrices read the same ones); these tests only read them
+    wb, (prog,) = planned("polishing_cell.json", "polishing")
+    return wb, wb.polishing.last_motion, prog
 
 
 def test_program_reproduces_the_planned_path_joints_and_times(polished: tuple) -> None:
