@@ -250,14 +250,14 @@ def main() -> None:
 def _narrow_passages(seeds: int) -> None:
     """Ant and RRT-Connect through a window that fills the bounds (no way round the wall).
 
-    The scene of tests/assembly/test_narrow_passages.py: a 5 cm box, fixed orientation, the
+    The scene of tests/assembly/planners/test_ant.py: a 5 cm box, fixed orientation, the
     window's centre and the end offsets varied by seed; the planners check every 1 mm.
     """
     import sys
     from pathlib import Path
 
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "assembly"))
-    from test_narrow_passages import BOUNDS, EDGE, RES, window_scene  # noqa: PLC0415
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "assembly" / "planners"))
+    from test_ant import BOUNDS, EDGE, RES, window_scene  # noqa: PLC0415
 
     print(
         "== narrow passages (window side / box edge, wall fills the bounds): solved, median"

@@ -8,12 +8,11 @@ import ast
 import copy
 import importlib
 import json
-import subprocess
-import sys
 from pathlib import Path
 from typing import Any
 
 import pytest
+from cli_run import run_cli
 
 import workbench.project.bounds as B
 from workbench.errors import ProjectError
@@ -251,12 +250,6 @@ def test_unreadable_files_are_project_errors_saying_why(data: bytes, words: str)
 def test_check_exits_2_without_a_traceback(tmp_path: Path, content: bytes) -> None:
     path = tmp_path / "bad.json"
     path.write_bytes(content)
-    res = subprocess.run(
-        [sys.executable, "-m", "workbench", "check", str(path)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-        cwd=ROOT,
-    )
+    res = run_cli("check", str(path))  # in this process (tests/cli_run.py)
     assert res.returncode == 2, res.stderr
     assert "Traceback" not in res.stderr and res.stderr.startswith("workbench check: error:")

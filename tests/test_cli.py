@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from cli_run import run_cli
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -24,7 +25,7 @@ def run(*args: str, timeout: float = 120) -> subprocess.CompletedProcess[str]:
 
 
 def test_check_example_is_collision_free() -> None:
-    res = run("check", "projects/mz07_cell.json")
+    res = run_cli("check", "projects/mz07_cell.json")
     assert res.returncode == 0, res.stderr
     assert "collision-free" in res.stdout
 
@@ -32,12 +33,12 @@ def test_check_example_is_collision_free() -> None:
 def test_check_bad_project_gives_one_line_reason(tmp_path: Path) -> None:
     bad = tmp_path / "bad.json"
     bad.write_text(json.dumps({"schema_version": 1, "robot": {"preset": "mz07", "bogus": 1}}))
-    res = run("check", str(bad))
+    res = run_cli("check", str(bad))
     assert res.returncode == 2
     assert "Traceback" not in res.stderr
     assert "robot.bogus: unknown field" in res.stderr
     bad.write_text('{"schema_version": 1,')
-    res = run("check", str(bad))
+    res = run_cli("check", str(bad))
     assert res.returncode == 2 and "not valid JSON at line 1" in res.stderr
 
 
@@ -46,7 +47,7 @@ def test_check_colliding_configuration_exits_1(tmp_path: Path) -> None:
     data["robot"]["joints"] = [0, 30, 0, 0, -90, 0]  # controller degrees: leaning onto the table
     path = tmp_path / "hit.json"
     path.write_text(json.dumps(data))
-    res = run("check", str(path))
+    res = run_cli("check", str(path))
     assert res.returncode == 1 and "table" in res.stdout
 
 
@@ -95,6 +96,6 @@ def test_sweep_with_a_ray_address_that_does_not_answer_names_it() -> None:
 
 
 def test_sweep_needs_a_press() -> None:
-    res = run("sweep", "bending", "projects/bending_cell.json")
+    res = run_cli("sweep", "bending", "projects/bending_cell.json")
     assert res.returncode == 2
     assert "bending.press: the project has no press brake model" in res.stderr

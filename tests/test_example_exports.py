@@ -13,16 +13,17 @@ export (`wb.export_program`, what `workbench export` writes), read back (issue 1
 - Sample formats (csv, json): the files load back (`load_csv` / `load_json`) to the plan's
   times and joints.
 
-Plans are made once per example and workflow (`_planned`, cached) and shared by the formats.
+Plans are made once per example and workflow and session (tests/example_plans.py) and shared by
+the formats and by tests/test_program_read_back.py.
 """
 
 from __future__ import annotations
 
-import functools
 from pathlib import Path
 
 import numpy as np
 import pytest
+from example_plans import planned
 from program_round_trip import check_read_back
 
 from workbench import Workbench
@@ -61,10 +62,8 @@ CASES = [
 ]
 
 
-@functools.cache
 def _planned(project: str, workflow: str) -> tuple[Workbench, tuple[RobotProgram, ...]]:
-    wb = Workbench.open(ROOT / "projects" / project)
-    return wb, tuple(wb.robot_programs(workflow))
+    return planned(project, workflow)  # once per session, shared (tests/example_plans.py)
 
 
 def _model(wb: Workbench, workflow: str, program: RobotProgram):  # noqa: ANN202
@@ -144,7 +143,12 @@ def test_example_exports_and_reads_back(
 
 
 @pytest.mark.parametrize(
-    "project", [p.name for p in PROJECTS if load_project(p).io is not None], ids=str
+    "project",
+    [
+        pytest.param(p.name, id=p.name, marks=_slow_if_press(p, _workflows(p)[0]))
+        for p in PROJECTS
+        if load_project(p).io is not None
+    ],
 )
 def test_the_examples_io_is_used_by_their_programs(project: str) -> None:
     path = ROOT / "projects" / project

@@ -13,7 +13,7 @@ by each format's post and read back by that format's reader; then
   durations plus the waits, within 1 %.
 
 Every case runs (no skips): a missing post, reader or workflow builder fails. The workflows'
-plans are made once per module (`_planned`, cached) and shared by the formats; each read-back
+plans are made once per session (tests/example_plans.py) and shared by the formats; each read-back
 program is planned (IK along its moves) once and only re-timed while the stated joint-move
 times are fitted, so the whole matrix stays fast enough for the unit suite.
 """
@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from example_plans import planned
 from program_round_trip import check_read_back
 
 from workbench import Workbench
@@ -84,8 +85,7 @@ CASES = [
 
 @functools.cache
 def _planned(project: str, workflow: str) -> tuple[Workbench, tuple[RobotProgram, ...], dict]:
-    wb = Workbench.open(ROOT / "projects" / project)
-    programs = tuple(wb.robot_programs(workflow))
+    wb, programs = planned(project, workflow)  # once per session, shared (tests/example_plans.py)
     return wb, programs, _start_joints(wb, workflow, programs)
 
 

@@ -5,6 +5,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import fcl
 import numpy as np
 import pytest
@@ -124,10 +126,16 @@ def _translation(c: tuple[float, float, float]) -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def setup() -> tuple[DHRobot, list[trimesh.Trimesh], SpheresMode]:
+def setup(engine_cache: Path) -> tuple[DHRobot, list[trimesh.Trimesh], SpheresMode]:
     robot = preset_robot("mz07")
     meshes = link_meshes(robot)
-    eng = CollisionEngine(_checker(robot, meshes), "spheres", spheres_per_link=6, resolution=24)
+    eng = CollisionEngine(
+        _checker(robot, meshes),
+        "spheres",
+        spheres_per_link=6,
+        resolution=24,
+        cache_dir=str(engine_cache),
+    )
     assert isinstance(eng.checker, SpheresMode)
     return robot, meshes, eng.checker
 

@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 import zipfile
 from pathlib import Path
 
 import pytest
+from cli_run import run_cli
 
 from workbench import Workbench
 from workbench.errors import InputError, PlanningError
@@ -69,10 +69,7 @@ def test_a_colliding_plan_is_refused_unless_forced() -> None:
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [sys.executable, "-m", "workbench", "export", str(MZ07), *args],
-        capture_output=True, text=True, timeout=300, cwd=ROOT,
-    )  # fmt: skip
+    return run_cli("export", str(MZ07), *args)  # in this process (tests/cli_run.py)
 
 
 def test_cli_writes_a_file_a_folder_or_a_zip(tmp_path: Path) -> None:

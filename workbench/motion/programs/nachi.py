@@ -24,7 +24,7 @@ Confirmed by a public source (forms seen in two or more independent writers):
 - Orientation of a NACHI pose: (X, Y, Z, RZ, RY, RX) [mm, deg] with R = Rz(RZ) Ry(RY) Rx(RX),
   the order RoboDK's ``Pose_2_Nachi`` writes and Cenit writes, checked against real teach-pendant
   joint/pose pairs of an MZ07F and an MZ04D (gstorm-b/RobotKinematics,
-  ``docs/preset_references/nachi-mz07f.md``, ``nachi-mz04d.md``); tests/motion/test_nachi.py
+  ``docs/preset_references/nachi-mz07f.md``, ``nachi-mz04d.md``); tests/motion/programs/test_nachi.py
   checks it again on the MZ07F pairs.
 
 Our reading (no NACHI manual is public in the corpora; each is stated in docs/programs.md):
