@@ -65,7 +65,7 @@ from workbench.sheetmetal.folding import FoldedState, fold_state
 from workbench.sheetmetal.part import SheetMetalPart
 
 if TYPE_CHECKING:
-    from workbench.motion.programs.model import ProgramSettings, RobotProgram
+    from workbench.motion.programs.controller_program import ProgramSettings, RobotProgram
     from workbench.pressbrake.press import PressBrake
     from workbench.pressbrake.program import RobotAt
 

@@ -20,7 +20,7 @@ from workbench.pressbrake.die import DiePlacement
 from workbench.sheetmetal.obbtree import FramesReport
 
 if TYPE_CHECKING:
-    from workbench.motion.programs.model import ProgramSettings, RobotProgram
+    from workbench.motion.programs.controller_program import ProgramSettings, RobotProgram
     from workbench.pressbrake.program import BendingCell, RobotAt
 
 F64 = NDArray[np.float64]

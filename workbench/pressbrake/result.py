@@ -14,7 +14,7 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.motion.programs.model import ProgramSettings, RobotProgram
+from workbench.motion.programs.controller_program import ProgramSettings, RobotProgram
 from workbench.motion.sampled import SampledMotion
 from workbench.pressbrake.press import PressBrake
 from workbench.pressbrake.program import BendingCell, RobotAt
