@@ -1,7 +1,8 @@
 """`Workbench.bending`: the open project's press-brake bending (seed 000).
 
-Builds the domain objects of `workbench.sheetmetal` from the project's `bending` section
-(in SI through `BendingSpec.to_si`), calls them and returns their results (SI units).
+Builds the domain objects of `workbench.sheetmetal` and `workbench.pressbrake` from the
+project's `bending` section (in SI through `BendingSpec.to_si`, once per change), calls them
+and returns their results (SI units; a plan is a `pressbrake.BendingResult`).
 """
 
 from __future__ import annotations
@@ -274,10 +275,8 @@ class BendingService(SectionService[BendingSpec]):
     def check_cost(self, plan: BendingResult, repeat: int = 3) -> CheckCost | None:
         """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request;
         None for a result whose part no single tree checks (a cycle)."""
-        frames = plan.grasp_frames
-        if frames is None:
-            return None
-        return check_cost(self.tree(), self.obstacles().boxes, frames, repeat)
+        T = plan.grasp_frames
+        return None if T is None else check_cost(self.tree(), self.obstacles().boxes, T, repeat)
 
     def part_pose_at(self, plan: BendingResult, t: float) -> NDArray[np.float64]:
         """Return T_world_part (4, 4) [m] of the part at time `t` [s] (a cycle: at the last
