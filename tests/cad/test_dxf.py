@@ -39,8 +39,8 @@ PAN_DXF = ROOT / "projects" / "parts" / "pan_flat.dxf"
 
 
 def _twin() -> Any:
-    """Import tests/sheetmetal/test_flat_pattern.py (its part loader and part comparison)."""
-    path = ROOT / "tests" / "sheetmetal" / "test_flat_pattern.py"
+    """Import tests/sheetmetal/test_flat_split.py (its part loader and part comparison)."""
+    path = ROOT / "tests" / "sheetmetal" / "test_flat_split.py"
     spec = importlib.util.spec_from_file_location("flat_pattern_twin", path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
