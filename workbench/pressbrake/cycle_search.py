@@ -63,7 +63,8 @@ def sweep_context(
     try:
         grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
     except InputError as exc:
-        raise InputError(f"bending.grasp_grid: {str(exc).removeprefix('grasp grid: ')}") from None
+        said = exc.detail if exc.field == "grasp grid" else str(exc)
+        raise InputError(said, field="bending.grasp_grid") from None
     return SweepContext(
         part_spec,
         press,

@@ -48,7 +48,7 @@ def grasp_grid(
     InputError when `spacing` is not positive or the grid holds more than `MAX_GRASPS`.
     """
     if not (np.isfinite(spacing) and spacing > 0):
-        raise InputError(f"grasp spacing: must be > 0 m, got {spacing!r}")
+        raise InputError(f"must be > 0 m, got {spacing!r}", field="grasp spacing")
     out: list[Grasp] = []
     names = [f.name for f in part.flanges] if flanges is None else list(flanges)
     for name in names:
@@ -70,8 +70,9 @@ def grasp_grid(
                     out.append(Grasp(name, np.array(p), float(yaw), int(face)))  # type: ignore[call-arg]
     if len(out) > MAX_GRASPS:
         raise InputError(
-            f"grasp grid: {len(out)} candidates, above {MAX_GRASPS} "
+            f"{len(out)} candidates, above {MAX_GRASPS} "
             "(workbench.pressbrake.grasp_grid.MAX_GRASPS); widen the spacing or name fewer "
-            "yaws or faces"
+            "yaws or faces",
+            field="grasp grid",
         )
     return out
