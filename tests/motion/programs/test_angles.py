@@ -1,4 +1,4 @@
-"""Controller angle conventions against scipy, CSV/JSON sample round trips, bad motion programs."""
+"""Tests of workbench/motion/programs/angles.py: controller angle conventions against scipy."""
 
 from __future__ import annotations
 
@@ -6,14 +6,6 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from workbench.errors import InputError
-from workbench.motion.program import Move, Program
-from workbench.motion.programs import (
-    load_csv,
-    load_json,
-    save_csv,
-    save_json,
-)
 from workbench.motion.programs.angles import abc_deg, quaternion_wxyz, rotation_vector, wpr_deg
 
 
@@ -65,38 +57,3 @@ def test_orientations_are_canonical_where_the_convention_leaves_a_choice():
         M = Rotation.from_euler("ZYX", [30.0, 0.0, 180.0 + eps], degrees=True).as_matrix()
         assert abc_deg(M)[2] == pytest.approx(180.0, abs=1e-9)
         assert wpr_deg(M)[0] == pytest.approx(180.0, abs=1e-9)
-
-
-def test_csv_and_json_round_trip(tmp_path):
-    rng = np.random.default_rng(0)
-    t = np.sort(rng.uniform(0, 5, 57))
-    q = rng.uniform(-3, 3, (57, 6))
-    save_csv(tmp_path / "s.csv", t, q)
-    save_json(tmp_path / "s.json", t, q)
-    for loader, name in ((load_csv, "s.csv"), (load_json, "s.json")):
-        t2, q2 = loader(tmp_path / name)
-        np.testing.assert_array_equal(t2, t)
-        np.testing.assert_array_equal(q2, q)
-    head = (tmp_path / "s.csv").read_text().splitlines()[0]
-    assert head.startswith("t [s],q1 [rad]") and head.endswith("q6 [deg]")
-    # the degree columns are the radians converted
-    row = (tmp_path / "s.csv").read_text().splitlines()[1].split(",")
-    assert float(row[7]) == pytest.approx(np.degrees(q[0, 0]), abs=1e-6)
-
-
-def test_bad_program_inputs(tmp_path):
-    with pytest.raises(InputError, match="speed"):
-        Move.joint(np.zeros(6), speed=1.5)
-    with pytest.raises(InputError, match="zone"):
-        Move.joint(np.zeros(6), zone=-0.01)
-    with pytest.raises(InputError, match="target"):
-        Move.joint(np.zeros(5))
-    with pytest.raises(InputError, match="rotation"):
-        Move.linear(np.diag([1.0, 1.0, -1.0, 1.0]))
-    with pytest.raises(InputError, match="name"):
-        Program("2bad name", (Move.joint(np.zeros(6)),))
-    with pytest.raises(InputError, match="positions"):
-        save_csv(tmp_path / "x.csv", [0.0, 1.0], np.zeros((3, 6)))
-    (tmp_path / "bad.json").write_text("{}")
-    with pytest.raises(InputError, match="format"):
-        load_json(tmp_path / "bad.json")

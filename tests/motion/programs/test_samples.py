@@ -1,0 +1,34 @@
+"""Tests of workbench/motion/programs/samples.py: CSV/JSON joint samples that load back."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from workbench.errors import InputError
+from workbench.motion.programs import load_csv, load_json, save_csv, save_json
+
+
+def test_csv_and_json_round_trip(tmp_path):
+    rng = np.random.default_rng(0)
+    t = np.sort(rng.uniform(0, 5, 57))
+    q = rng.uniform(-3, 3, (57, 6))
+    save_csv(tmp_path / "s.csv", t, q)
+    save_json(tmp_path / "s.json", t, q)
+    for loader, name in ((load_csv, "s.csv"), (load_json, "s.json")):
+        t2, q2 = loader(tmp_path / name)
+        np.testing.assert_array_equal(t2, t)
+        np.testing.assert_array_equal(q2, q)
+    head = (tmp_path / "s.csv").read_text().splitlines()[0]
+    assert head.startswith("t [s],q1 [rad]") and head.endswith("q6 [deg]")
+    # the degree columns are the radians converted
+    row = (tmp_path / "s.csv").read_text().splitlines()[1].split(",")
+    assert float(row[7]) == pytest.approx(np.degrees(q[0, 0]), abs=1e-6)
+
+
+def test_bad_sample_files(tmp_path):
+    with pytest.raises(InputError, match="positions"):
+        save_csv(tmp_path / "x.csv", [0.0, 1.0], np.zeros((3, 6)))
+    (tmp_path / "bad.json").write_text("{}")
+    with pytest.raises(InputError, match="format"):
+        load_json(tmp_path / "bad.json")
