@@ -18,7 +18,7 @@ import workbench.project.bounds as B
 from workbench.errors import ProjectError
 from workbench.project.io import parse_project_json, project_from_dict
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ("mz07_cell", "bending_cell", "assembly_cell", "polishing_cell")
 SECTION = "## Input bounds"
 
