@@ -9,7 +9,6 @@ import pytest
 from block_cell import block_cell
 
 from workbench.collision.engine import CollisionEngine
-from workbench.collision.motion_bound import JointLevers
 from workbench.errors import InputError
 from workbench.service import Workbench
 
@@ -30,27 +29,6 @@ def engines(wb: Workbench, engine_cache: Path) -> dict[str, CollisionEngine]:
         m: CollisionEngine(wb.checker, m, spheres_per_link=4, resolution=32, cache_dir=cache)
         for m in ("spheres", "capsules", "exact")
     }
-
-
-def test_levers_bound_the_motion_of_link_points(wb: Workbench) -> None:
-    """Twin: forward kinematics of random points for random joint steps."""
-    robot = wb.robot
-    lev = JointLevers(robot)
-    rng = np.random.default_rng(0)
-    lim = robot.limits
-    for frame in range(1, 7):
-        pts = rng.normal(0, 0.2, (20, 3))
-        L = lev.levers(frame, pts)
-        assert np.all(L[frame:] == 0)
-        for _ in range(40):
-            q = rng.uniform(lim[:, 0], lim[:, 1])
-            dq = rng.normal(0, 0.05, 6)
-            # Travel along the straight joint segment, by fine steps.
-            qs = np.linspace(q, q + dq, 30)
-            T = robot.link_transforms(qs)[:, frame]
-            p = np.einsum("nij,pj->npi", T[:, :3, :3], pts) + T[:, None, :3, 3]
-            travel = np.linalg.norm(np.diff(p, axis=0), axis=2).sum(axis=0)
-            assert np.all(travel <= np.abs(dq) @ L + 1e-12)
 
 
 def test_no_misses_on_random_configurations(
