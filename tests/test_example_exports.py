@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from example_plans import planned
+from example_plans import PROJECTS, planned, slow_marks
 from program_round_trip import check_read_back
 
 from workbench import Workbench
@@ -41,21 +41,14 @@ from workbench.project import load_project
 from workbench.service.programs import latest_plan
 
 ROOT = Path(__file__).resolve().parents[1]
-PROJECTS = sorted((ROOT / "projects").glob("*.json"))
 
 
 def _workflows(path: Path) -> list[str]:
     return load_project(path).workflows()
 
 
-def _slow_if_press(path: Path, workflow: str) -> tuple[pytest.MarkDecorator, ...]:
-    """A press cell's bending program replans its whole cycle (a minute of frames): slow."""
-    bending = load_project(path).bending
-    return (pytest.mark.slow,) if workflow == "bending" and bending and bending.press else ()
-
-
 CASES = [
-    pytest.param(path.name, wf, fmt, id=f"{path.stem}-{wf}-{fmt}", marks=_slow_if_press(path, wf))
+    pytest.param(path.name, wf, fmt, id=f"{path.stem}-{wf}-{fmt}", marks=slow_marks(path, wf))
     for path in PROJECTS
     for wf in _workflows(path)
     for fmt in EXPORT_FORMATS
@@ -145,7 +138,7 @@ def test_example_exports_and_reads_back(
 @pytest.mark.parametrize(
     "project",
     [
-        pytest.param(p.name, id=p.name, marks=_slow_if_press(p, _workflows(p)[0]))
+        pytest.param(p.name, id=p.name, marks=slow_marks(p, _workflows(p)[0]))
         for p in PROJECTS
         if load_project(p).io is not None
     ],

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from example_plans import planned
+from example_plans import PROJECTS, planned, slow_marks
 from program_round_trip import check_read_back
 
 from workbench import Workbench
@@ -44,29 +44,8 @@ from workbench.motion.programs.controller_program import ReadProgram
 from workbench.project import load_project
 
 ROOT = Path(__file__).resolve().parents[1]
-PROJECTS = sorted((ROOT / "projects").glob("*.json"))
 SIGNALS_BY = {"rapid": "name"}  # RAPID names its signals; the others number them
 CHECK_ARGS = {"ls": {"zone_tol": 1e-3}}  # FANUC's CNT has 1 mm steps (CNT1 is the least blend)
-
-
-def _workflows(path: Path) -> list[str]:
-    p = load_project(path)
-    found = []
-    if p.program is not None and p.program.moves:
-        found.append("motion")
-    if p.bending is not None:
-        found.append("bending")
-    if p.assembly is not None and p.assembly.parts:
-        found.append("assembly")
-    if p.polishing is not None:
-        found.append("polishing")
-    return found
-
-
-def _slow_if_press(path: Path, workflow: str) -> tuple[pytest.MarkDecorator, ...]:
-    """A press cell's bending program replans its whole cycle (a minute of frames): slow."""
-    bending = load_project(path).bending
-    return (pytest.mark.slow,) if workflow == "bending" and bending and bending.press else ()
 
 
 CASES = [
@@ -75,10 +54,10 @@ CASES = [
         wf,
         fmt,
         id=f"{path.stem}-{wf}-{fmt}",
-        marks=_slow_if_press(path, wf),
+        marks=slow_marks(path, wf),
     )
     for path in PROJECTS
-    for wf in _workflows(path)
+    for wf in load_project(path).workflows()
     for fmt in PROGRAM_FORMATS
 ]
 

@@ -13,15 +13,21 @@ from workbench.polishing.example_workpiece import make_panel
 
 
 def _brute_locate(uv: np.ndarray, faces: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """Twin: barycentrics of every point in every face; the face where all are >= -1e-12."""
+    """Twin: barycentrics of every point in every face; the face where all are >= -1e-12.
+
+    Points go 32 at a time (the same arithmetic; blocks that stay in the CPU's cache make it
+    about 6x faster than one (points x faces) block)."""
     a, b, c = (uv[faces[:, i]] for i in range(3))
     v0, v1 = a - c, b - c
     det = v0[:, 0] * v1[:, 1] - v0[:, 1] * v1[:, 0]
-    d = p[:, None, :] - c[None]
-    u = (d[..., 0] * v1[:, 1] - d[..., 1] * v1[:, 0]) / det
-    v = (v0[:, 0] * d[..., 1] - v0[:, 1] * d[..., 0]) / det
-    inside = (u >= -1e-12) & (v >= -1e-12) & (1 - u - v >= -1e-12)
-    return np.where(inside.any(axis=1), np.argmax(inside, axis=1), -1)
+    out = np.empty(len(p), dtype=np.intp)
+    for s in range(0, len(p), 32):
+        d = p[s : s + 32, None, :] - c[None]
+        u = (d[..., 0] * v1[:, 1] - d[..., 1] * v1[:, 0]) / det
+        v = (v0[:, 0] * d[..., 1] - v0[:, 1] * d[..., 0]) / det
+        inside = (u >= -1e-12) & (v >= -1e-12) & (1 - u - v >= -1e-12)
+        out[s : s + 32] = np.where(inside.any(axis=1), np.argmax(inside, axis=1), -1)
+    return out
 
 
 def test_locate_matches_brute_force() -> None:
@@ -127,7 +133,17 @@ def _check_against_brute(chart, p: np.ndarray) -> None:
     assert (bary[ok] >= 0).all()
 
 
-def test_grid_and_tree_locators_both_match_brute_force() -> None:
+@pytest.mark.parametrize(
+    ("even", "locator"),
+    [
+        (True, "grid"),
+        (True, "tree"),
+        (False, "tree"),
+        # The grid forced on the uneven mesh (the chart picks the tree there): 10 s, slow run.
+        pytest.param(False, "grid", marks=pytest.mark.slow),
+    ],
+)
+def test_grid_and_tree_locators_both_match_brute_force(even: bool, locator: str) -> None:
     # The chart picks the centroid grid on an even mesh and the KD-tree on an uneven one;
     # each locator is checked on both meshes (the other one forced) against the brute force.
     import dataclasses
@@ -135,28 +151,24 @@ def test_grid_and_tree_locators_both_match_brute_force() -> None:
     from workbench.polishing.facegrid import FaceGrid
 
     rng = np.random.default_rng(5)
-    for mesh, grid_expected in ((make_panel(25, 18), True), (_uneven_mesh(), False)):
-        chart = build_chart(mesh)
-        assert (chart.grid is not None) == grid_expected
-        lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
-        tri = chart.uv[chart.faces]
-        # Random points, points on edges and at vertices (ties), points just outside the rim.
-        p = np.vstack(
-            [
-                rng.uniform(lo - 0.01, hi + 0.01, (2000, 2)),
-                0.5 * (tri[:300, 0] + tri[:300, 1]),
-                tri[:300, 2],
-                chart.boundary + 1e-7 * rng.normal(size=chart.boundary.shape),
-            ]
-        )
-        cu, cv = chart.centroids
-        grid = FaceGrid.build(cu, cv, chart.reach, max_per_cell=10**9)
-        assert grid is not None
-        for variant in (
-            dataclasses.replace(chart, grid=grid),
-            dataclasses.replace(chart, grid=None),
-        ):
-            _check_against_brute(variant, p)
+    mesh = make_panel(25, 18) if even else _uneven_mesh()
+    chart = build_chart(mesh)
+    assert (chart.grid is not None) == even
+    lo, hi = chart.uv.min(axis=0), chart.uv.max(axis=0)
+    tri = chart.uv[chart.faces]
+    # Random points, points on edges and at vertices (ties), points just outside the rim.
+    p = np.vstack(
+        [
+            rng.uniform(lo - 0.01, hi + 0.01, (2000, 2)),
+            0.5 * (tri[:300, 0] + tri[:300, 1]),
+            tri[:300, 2],
+            chart.boundary + 1e-7 * rng.normal(size=chart.boundary.shape),
+        ]
+    )
+    cu, cv = chart.centroids
+    grid = FaceGrid.build(cu, cv, chart.reach, max_per_cell=10**9)
+    assert grid is not None
+    _check_against_brute(dataclasses.replace(chart, grid=grid if locator == "grid" else None), p)
 
 
 def test_locate_near_with_hint_columns_matches_brute_force() -> None:

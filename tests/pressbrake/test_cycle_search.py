@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from example_plans import bending_plan
 
 from workbench import Workbench
 from workbench.errors import InputError
@@ -48,7 +49,7 @@ def test_the_projects_own_plan_verifies_as_its_cycle(wb: Workbench) -> None:
     svc = wb.bending
     plan = _project_plan(wb)
     got = verify_plan(plan, svc.part, cycle_cell(svc), cycle_robot(svc))
-    cyc = svc.plan()
+    cyc = bending_plan("u_channel_cell.json")[1]  # the service's plan, shared
     assert isinstance(got, SequencePlan) and isinstance(cyc, BendingCycle)
     assert got.verified and not got.estimated
     assert got.cycle_time == cyc.cycle_time and got.regrips == cyc.regrips

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from example_plans import bending_plan
 
 from workbench import Workbench
 from workbench.pressbrake.bend_setup import press_poses
@@ -36,7 +37,7 @@ def plan_wb() -> Workbench:
 
 @pytest.fixture(scope="module")
 def cycle_wb() -> Workbench:
-    return Workbench.open(ROOT / "projects" / "u_channel_cell.json")
+    return bending_plan("u_channel_cell.json")[0]  # shared: the tests only read it
 
 
 @pytest.fixture(scope="module")
@@ -48,7 +49,7 @@ def plan(plan_wb: Workbench) -> BendingPlan:
 
 @pytest.fixture(scope="module")
 def cycle(cycle_wb: Workbench) -> BendingCycle:
-    c = cycle_wb.bending.plan()
+    c = bending_plan("u_channel_cell.json")[1]  # the service's plan, shared
     assert isinstance(c, BendingCycle)
     return c
 
