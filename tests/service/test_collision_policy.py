@@ -61,7 +61,7 @@ def test_the_mode_is_one_project_field_for_every_workflow(
     data = json.loads((PROJECTS / name).read_text())
     assert "collision" not in data  # the examples use the default
     default = Workbench.from_dict(data, base_dir=PROJECTS)
-    assert default.collision_policy == CollisionPolicy()
+    assert default.collision_policy == CollisionPolicy(margin=0.0005)  # the default 0.5 mm
     fast = plan(default)
     assert fast and all(r.mode == "spheres" and r.fallback is None for r in fast)
 

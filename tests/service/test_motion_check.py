@@ -35,7 +35,12 @@ def test_plan_uses_the_fast_mode_and_matches_the_dense_check(
     dense = wb.checker.check_path(plan.positions, distance=True)
     assert rep.colliding_indices == dense.colliding_indices
     assert rep.collision_free == dense.collision_free
-    assert "collision-free, including between samples, with clearance of at least" in rep.message
+    assert "collision-free, including between samples (" in rep.message
+    # The one clearance figure: fcl's least distance over the samples, with its pair.
+    near = rep.nearest
+    assert near is not None and near.pair is not None
+    assert near.distance == pytest.approx(dense.min_distance, abs=1e-9)
+    assert f"clearance {near.distance * 1e3:.1f} mm ({near.pair[0]} – {near.pair[1]}" in rep.message
     assert rep.message in plan.summary()
     # The certified clearance is a lower bound of fcl's distance at every sample.
     assert 0.0 < rep.clearance <= dense.min_distance + 1e-9

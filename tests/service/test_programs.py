@@ -12,7 +12,7 @@ import pytest
 from cli_run import run_cli
 
 from workbench import Workbench
-from workbench.errors import InputError, PlanningError
+from workbench.errors import InputError, PlanningError, WorkbenchError
 from workbench.motion.programs import EXPORT_FORMATS, PROGRAM_FORMATS
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -66,6 +66,41 @@ def test_a_colliding_plan_is_refused_unless_forced() -> None:
         wb.export_program("rapid", any_vendor=True)
     assert wb.last_plan is not None and not wb.last_plan.ok
     assert "MoveL" in wb.export_program("rapid", force=True, any_vendor=True).text
+
+
+def test_a_plan_closer_than_the_margin_is_refused_naming_the_pair(wb: Workbench) -> None:
+    """The example keeps the default margin; a margin above its clearance refuses the export,
+    naming the pair and the distance (the figure is python-fcl's over the plan's samples)."""
+    plan = wb.last_plan
+    assert plan is not None and plan.ok
+    near = plan.collision_report.nearest
+    assert near is not None and near.pair is not None and near.keeps_margin
+    assert near.margin == pytest.approx(0.0005)  # the default, 0.5 mm
+    data = json.loads(MZ07.read_text())
+    data["collision"] = {"margin": near.distance * 1e3 + 5.0}  # mm
+    tight = Workbench.from_dict(data, base_dir=MZ07.parent)
+    a, b = near.pair
+    with pytest.raises(PlanningError, match=f"{a} comes within .* mm of {b}.*force=True"):
+        tight.export_program("csv")
+    assert tight.last_plan is not None and not tight.last_plan.ok
+    assert tight.last_plan.collision_report.collision_free  # no contact: the margin only
+    assert tight.export_program("csv", force=True).files
+    # The margin set through the service is the one the next export uses.
+    tight.collision.set_margin(near.distance / 2)
+    assert tight.export_program("csv").files
+
+
+@pytest.mark.parametrize("bad", [float("nan"), -1.0, 1e6])
+def test_a_bad_margin_is_refused_naming_the_field(bad: float) -> None:
+    data = json.loads(MZ07.read_text())
+    data["collision"] = {"margin": 1.0}
+    w = Workbench.from_dict(data, base_dir=MZ07.parent)
+    with pytest.raises(InputError, match=r"collision\.margin"):
+        w.collision.set_margin(bad / 1e3)
+    assert w.collision.margin == pytest.approx(0.001)
+    data["collision"] = {"margin": bad}
+    with pytest.raises(WorkbenchError, match="margin"):
+        Workbench.from_dict(data, base_dir=MZ07.parent)
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess[str]:

@@ -98,8 +98,9 @@ class AssemblyPlan:
 
     @property
     def ok(self) -> bool:
-        """Return True when no sample collides."""
-        return not bool(self.colliding.any())
+        """Return True when no sample collides and every robot keeps the clearance margin."""
+        margins = all(r.keeps_margin for r in self.robot_reports.values())
+        return margins and not bool(self.colliding.any())
 
     def summary(self) -> str:
         """Return a one-line human summary."""

@@ -23,14 +23,15 @@ Engines are built once per checker and policy (`shared_engine`) and kept with th
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Literal, get_args
 
 import numpy as np
 from numpy.typing import NDArray
 
+from workbench.collision.clearance import check_margin, exempt_pairs, plan_clearance
 from workbench.collision.engine import CollisionEngine, EnginePathReport
 from workbench.collision.path_check import AccelerationBound
 from workbench.collision.robot_checker import RobotCollisionChecker
@@ -61,13 +62,18 @@ class CollisionPolicy:
     mode: ``"spheres"``, ``"exact"`` or ``"capsules"``. spheres_per_link, resolution (coarse
     SDF cells along the cell's largest extent): the spheres engine's parameters. cache_dir:
     where engines cache fits, fields and pair tables; None: `default_cache_dir()` when the
-    engine is built.
+    engine is built. margin [m]: the clearance a plan must keep (`clearance.plan_clearance`:
+    closer is a problem naming the pair; 0 here, the project's default is set in
+    `project/collision.py`); exempt: body-name pairs the margin does not apply to (the
+    contacts a process needs). Neither changes the engine (`key`).
     """
 
     mode: PolicyMode = "spheres"
     spheres_per_link: int = SPHERES_PER_LINK
     resolution: int = RESOLUTION
     cache_dir: Path | None = None
+    margin: float = 0.0
+    exempt: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         if self.mode not in POLICY_MODES:
@@ -78,6 +84,12 @@ class CollisionPolicy:
             )
         if int(self.resolution) < 2:
             raise InputError(f"resolution: {self.resolution} must be >= 2 coarse cells")
+        object.__setattr__(self, "margin", check_margin(self.margin))
+        object.__setattr__(self, "exempt", exempt_pairs(self.exempt))
+
+    def exempting(self, pairs: Iterable[Iterable[str]]) -> CollisionPolicy:
+        """Return this policy with `pairs` (body names) exempt from the margin as well."""
+        return replace(self, exempt=exempt_pairs((*self.exempt, *pairs)))
 
     def cache(self) -> Path:
         """Return the cache folder in use (`cache_dir`, else the default now)."""
@@ -193,20 +205,28 @@ def check_motion(
     acceleration (dof,) [rad/s^2] bounds |q''| over it, or bound(t0, t1) -> (M, dof) bounds it
     over each interval (the motion must be C1: the chord deviation bound
     ``acceleration * h**2 / 8`` needs a continuous velocity). Without a fast engine (exact
-    mode or a fallback) every sample is checked exactly and `fallback` says why.
+    mode or a fallback) every sample is checked exactly and `fallback` says why. A motion free
+    of contact is then measured against `policy.margin` (`EnginePathReport.nearest`: the least
+    fcl distance over the samples and its pair, `clearance.plan_clearance`).
     """
     report = progress or (lambda f, m: None)
     eng, why = shared_engine(checker, policy, progress=lambda f, m: report(0.2 * f, m))
     if eng is not None:
-        return eng.check_path(
+        rep = eng.check_path(
             q,
             times,
             sampler=sampler,
             acceleration=acceleration,
-            progress=lambda f, m: report(0.2 + 0.8 * f, m),
+            progress=lambda f, m: report(0.2 + 0.7 * f, m),
         )
-    assert why is not None
-    return dense_report(times, q, checker, why, progress=lambda f, m: report(0.2 + 0.8 * f, m))
+    else:
+        assert why is not None
+        rep = dense_report(times, q, checker, why, progress=lambda f, m: report(0.2 + 0.7 * f, m))
+    if not rep.collision_free:
+        return rep
+    report(0.9, "clearance against the margin")
+    near = plan_clearance(checker, times, q, margin=policy.margin, exempt=policy.exempt, engine=eng)
+    return replace(rep, nearest=near)
 
 
 def dense_report(

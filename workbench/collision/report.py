@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -17,6 +17,9 @@ from numpy.typing import NDArray
 from workbench.collision.fcl_checker import ContactReport
 from workbench.collision.path_oracle import PathOutcome
 from workbench.collision.robot_checker import PathReport
+
+if TYPE_CHECKING:
+    from workbench.collision.clearance import Clearance
 
 FloatArray = NDArray[np.float64]
 
@@ -53,6 +56,8 @@ class EnginePathReport(PathReport):
     subdivisions included; `flagged_samples`: samples the fast mode sent to the exact check;
     `exact_pairs`: exact pair tests (collide or distance) run. `fallback`: why the fast mode
     was not used (the samples were then checked densely and exactly, not between them).
+    `nearest`: a free motion's least fcl distance over the samples, its pair and the margin
+    asked (`plan_check.check_motion`; None where not measured, e.g. a collision).
     """
 
     mode: str = "spheres"
@@ -70,10 +75,27 @@ class EnginePathReport(PathReport):
     flagged_samples: int = 0
     exact_pairs: int = 0
     fallback: str | None = None
+    nearest: Clearance | None = field(default=None, repr=False)
+
+    @property
+    def keeps_margin(self) -> bool:
+        """Return False when a free motion comes closer than the margin (`margin_problem`)."""
+        return self.nearest is None or self.nearest.keeps_margin
+
+    @property
+    def margin_problem(self) -> str | None:
+        """Return the margin problem naming the pair and distance (mm), or None."""
+        return None if self.nearest is None else self.nearest.problem
 
     @property
     def message(self) -> str:
-        """Return the report as one sentence for a user (mm)."""
+        """Return the report as one sentence for a user (mm), the margin's verdict after it."""
+        text = self._contact_message()
+        if self.nearest is None:
+            return text
+        return f"{text}; {self.margin_problem or self.nearest.describe()}"
+
+    def _contact_message(self) -> str:
         if self.fallback is not None:
             if self.collision_free:
                 return (
@@ -86,9 +108,13 @@ class EnginePathReport(PathReport):
                 f" {self.fallback})"
             )
         if self.collision_free:
+            bound = (  # the one clearance figure is `nearest`'s where it was measured
+                f", with clearance of at least {self.clearance * 1e3:.1f} mm"
+                if self.nearest is None
+                else ""
+            )
             return (
-                f"collision-free, including between samples, with clearance of at least"
-                f" {self.clearance * 1e3:.1f} mm ({self.samples} samples,"
+                f"collision-free, including between samples{bound} ({self.samples} samples,"
                 f" {self.evaluated} configurations checked, {self.mode})"
             )
         if not self.certified and self.link is None:

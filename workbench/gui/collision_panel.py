@@ -65,6 +65,18 @@ class CollisionPanel:
                 hint="How every plan checks collisions: spheres + SDF confirmed by python-fcl"
                 " (default), exact python-fcl at every sample, or capsules",
             )
+            self.margin = NumberField(
+                app.server,
+                "Clearance margin [mm]",
+                get=lambda: app.wb.collision.margin * MM_PER_M,
+                put=lambda v: app.wb.collision.set_margin(v / MM_PER_M),
+                allowed=lambda: f"[0, {format_number(app.wb.collision.max_margin * MM_PER_M)}] mm",
+                changed=self._on_margin,
+                decimals=1,
+                hint="The clearance every plan keeps from the cell and between the robot's"
+                " links (the project's collision.margin); closer is a problem and the export"
+                " is refused unless forced. The gripper's contacts with the part are exempt",
+            )
             self.show_spheres = g.add_checkbox("Show spheres", initial_value=False)
             self.show_field = g.add_checkbox("Show distance field", initial_value=False)
             self._z_mm = SLICE_START_MM  # the slice height in use (the view's own state)
@@ -105,6 +117,12 @@ class CollisionPanel:
         except WorkbenchError as exc:
             self.mode.value = svc.mode  # type: ignore[misc]
             notify(self.app.server, getattr(event, "client", None), "Plan collision mode", str(exc))
+
+    def _on_margin(self) -> None:
+        """Show the clearance against the new margin (the jog status holds the one figure)."""
+        jog = getattr(self.app, "jog", None)
+        if jog is not None:
+            jog.refresh()
 
     def _set_height(self, z_mm: float) -> None:
         lo, hi = SLICE_RANGE_MM
@@ -182,8 +200,8 @@ class CollisionPanel:
                     f"**Collision**: {c.link} hits {c.obstacle},"
                     f" penetration {c.penetration * 1e3:.1f} mm"
                 )
-            else:
-                text = f"Collision-free, clearance at least {c.clearance * 1e3:.1f} mm"
+            else:  # the clearance figure is the status's one (`jog_panel.clearance_text`)
+                text = "Collision-free at these joints (spheres checked, flagged pairs confirmed)"
             self.report.content = text
             self.last = c
         finally:
@@ -198,6 +216,7 @@ class CollisionPanel:
                 node.remove()
         self.sphere_node = self.field_node = None
         self.height.remove()
+        self.margin.remove()
         for h in self.handles:
             h.remove()
         self.handles.clear()

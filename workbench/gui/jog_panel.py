@@ -160,8 +160,7 @@ class JogPanel:
             pairs = ", ".join(f"{a}–{b}" for a, b in report.colliding)
             coll = f"**Collision:** {pairs}"
         else:
-            pair = " – ".join(report.closest_pair) if report.closest_pair else "none"
-            coll = f"Collision-free, clearance **{report.min_distance * MM_PER_M:.1f} mm** ({pair})"
+            coll = "Collision-free; " + clearance_text(wb)
         lines = [
             f"TCP [mm]: {xyz[0]:.1f}, {xyz[1]:.1f}, {xyz[2]:.1f}",
             f"RPY [deg]: {rpy[0]:.1f}, {rpy[1]:.1f}, {rpy[2]:.1f}",
@@ -176,3 +175,18 @@ class JogPanel:
         except Exception:  # singularity analysis is advisory
             pass
         return "  \n".join(lines)
+
+
+def clearance_text(wb: Workbench) -> str:
+    """Return the Robot tab's one clearance figure (markdown): the least distance over the latest
+    Motion plan with its pair, else at the current joints, against the margin (mm)."""
+    c = wb.collision.clearance()
+    if c.pair is None:
+        return "clearance: no pair to measure"
+    where = "over the plan" if c.time is not None else "at these joints"
+    at = f", t = {c.time:.2f} s" if c.time is not None else ""
+    verdict = "" if c.keeps_margin else " — **closer than the margin**"
+    return (
+        f"clearance {where} **{c.distance * MM_PER_M:.1f} mm** ({c.pair[0]} – {c.pair[1]}{at}),"
+        f" margin {c.margin * MM_PER_M:.1f} mm{verdict}"
+    )

@@ -54,6 +54,7 @@ from workbench.pressbrake.cycle_path import (
 )
 from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
 from workbench.pressbrake.press_check import PartHit, check_states
+from workbench.pressbrake.process_contacts import HANDLING, gripper_contacts
 from workbench.pressbrake.transit import (
     Carried,
     TransitReport,
@@ -224,7 +225,7 @@ class BendingCycle:
             tail += f" Detours: {self.transits.describe()}."
         if self.first_problem is None:
             return head + " Collision-free." + tail
-        return head + f" First collision: {self.first_problem}." + tail
+        return head + f" First problem: {self.first_problem}." + tail
 
 
 def _segment_speeds(q: F64, path: CyclePath, vmax: F64, labels: list[str]) -> F64:
@@ -382,6 +383,9 @@ def check_cycle(
     report(0.05, "inverse kinematics")
     branch = home_branch(model, cell.q_home)
     q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
+    # The gripper's contacts where it handles the part are exempt from the clearance margin.
+    handling = [q_wp[i] for i, w in enumerate(path.waypoints) if w.action in HANDLING]
+    policy = policy.exempting(gripper_contacts(checker, handling))
     scene = _PressScene(part, path, cell, cell_obstacles(cell_bodies), PressObstacles(cell.press))
     report(0.1, "checking the moves between stations (detours where one is blocked)")
     spaces = _TransitSpaces(
@@ -831,6 +835,9 @@ def _first_problem(
             else "robot clearance unresolved"
         )
         cands.append((float(robot.first_time), f"t = {robot.first_time:.2f} s: {what}"))
+    near = robot.nearest
+    if near is not None and near.problem is not None and near.time is not None:
+        cands.append((near.time, f"t = {near.time:.2f} s: {near.problem}"))
     if not cands:
         return None
     return min(cands)

@@ -158,8 +158,10 @@ class BendingPlan:
 
     @property
     def ok(self) -> bool:
-        """Return True when every transfer frame is collision-free."""
-        return self.first_collision is None
+        """Return True when every transfer frame is collision-free and the robot keeps the
+        clearance margin (`EnginePathReport.keeps_margin`)."""
+        robot = self.robot_report
+        return self.first_collision is None and (robot is None or robot.keeps_margin)
 
     def nearest_frame(self, t: float) -> int:
         """Return the index of the checked frame nearest time `t` [s]."""
@@ -231,7 +233,8 @@ class BendingPlan:
         )
         robot = f" Robot: {self.robot_report.message}." if self.robot_report is not None else ""
         if self.first_collision is None:
-            return head + " Collision-free." + robot
+            ok = self.robot_report is None or self.robot_report.keeps_margin
+            return head + (" Collision-free." if ok else " Closer than the margin.") + robot
         return head + f" First collision: {self.first_collision.describe()}." + robot
 
 

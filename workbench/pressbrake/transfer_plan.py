@@ -24,6 +24,7 @@ from workbench.pressbrake.die import Die, DiePlacement, die_placements, die_targ
 from workbench.pressbrake.grasp import Grasp, T_part_grasp
 from workbench.pressbrake.obstacles import Obstacles
 from workbench.pressbrake.plan import BendingPlan, first_collision, robot_frames
+from workbench.pressbrake.process_contacts import gripper_contacts
 from workbench.pressbrake.transfer import (
     Transfer,
     base_flange_poses,
@@ -134,7 +135,10 @@ def plan_transfer(
     rep = check_part(tree, obstacles, T_world_grasp)
     report(0.7, "checking the robot against the cell")
     # The checker holds the robot's links and tool, not the part: the tool and the part it
-    # grips are never a pair, and the part's own checks are the tree's above.
+    # grips are never a pair, and the part's own checks are the tree's above. The gripper
+    # takes the part off the die and puts it on the pallet: those contacts are exempt from
+    # the clearance margin.
+    policy = policy.exempting(gripper_contacts(checker, [q_way[0], q_way[-1]]))
     path = check_trajectory(
         traj,
         times,

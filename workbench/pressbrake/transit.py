@@ -5,7 +5,8 @@ between two bends the cycle moves the robot straight in joint space. Turned end 
 in front of the die, a 300 mm part swings through the punch; swung home from the regrip
 station, an arm can fold into itself. Each such move (a waypoint marked `free`) is
 checked as the cycle's final check sees it: the robot (links and tool) against the cell,
-the press and itself under the collision policy, certified between samples; the part it
+the press and itself under the collision policy, certified between samples, and kept the
+policy's clearance margin away from them at every `TRANSIT_RESOLUTION`; the part it
 carries (its OBB tree, `press_check.frame_hits`) against the open press and the cell,
 every `TRANSIT_RESOLUTION` of its travel. A blocked move is planned again by RRT-Connect
 in joint space (`motion.joint_rrt`, seeded, bounded by `TRANSIT_NODES` tree nodes so the
@@ -119,10 +120,11 @@ class TransitSpace:
             sampler=lambda t: _lerp(q, t),
             acceleration=np.zeros(self.dof),
         )
-        return rep.collision_free
+        return rep.collision_free and rep.keeps_margin  # the search keeps the margin
 
     def valid(self, q: ArrayLike) -> bool:
-        """Return True if q (dof,) [rad] is within the limits and nothing touches."""
+        """Return True if q (dof,) [rad] is within the limits, nothing touches and the robot
+        keeps the policy's clearance margin."""
         qa = np.asarray(q, float)
         return self._in_limits(qa) and not self._part_hits(qa[None]) and self._robot_free(qa[None])
 
@@ -144,7 +146,8 @@ class TransitSpace:
         q = a + u * (b - a)
         if self._part_hits(q[1:]):
             return False
-        return self._robot_free(np.stack([a, b]))  # the engine certifies between them
+        # The engine certifies contact between the samples; the margin is kept at them.
+        return self._robot_free(q)
 
 
 def _lerp(q: F64, t: F64) -> F64:

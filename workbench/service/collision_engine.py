@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision import CollisionPolicy, plan_check
+from workbench.collision.clearance import MAX_MARGIN, Clearance, plan_clearance
 from workbench.collision.engine import CollisionEngine, ConfigCheck, EnginePathReport
 from workbench.collision.plan_check import POLICY_MODES
 from workbench.errors import InputError
@@ -81,6 +82,33 @@ class CollisionService:
             raise InputError(f"collision.mode: {mode!r} is not one of {', '.join(POLICY_MODES)}")
         current = self.wb.project.collision or CollisionSpec()
         self.wb.project.collision = current.model_copy(update={"mode": mode})
+
+    @property
+    def margin(self) -> float:
+        """Return the clearance margin [m] every plan keeps (the project's `collision.margin`)."""
+        return self.wb.collision_policy.margin
+
+    @property
+    def max_margin(self) -> float:
+        """Return the largest clearance margin [m] a project may ask for."""
+        return MAX_MARGIN
+
+    def set_margin(self, margin: float) -> None:
+        """Set the project's clearance margin [m]; the next plan and export use it. Refuses
+        (InputError naming `collision.margin`, nothing changed) NaN, negative, absurd values."""
+        current = self.wb.project.collision or CollisionSpec()
+        self.wb.project.collision = current.with_margin(float(margin))
+
+    def clearance(self) -> Clearance:
+        """Return the one clearance figure: the least distance over the latest Motion plan with
+        its pair (`EnginePathReport.nearest`), else at the current joints, against the margin."""
+        plan = self.wb.last_plan
+        near = None if plan is None else plan.collision_report.nearest
+        if near is not None:
+            return replace(near, margin=self.margin)
+        q = self.wb.joints
+        here = plan_clearance(self.wb.checker, np.zeros(1), q[None], margin=self.margin)
+        return replace(here, time=None, index=None)
 
     @property
     def spheres_per_link(self) -> int:

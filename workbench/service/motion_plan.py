@@ -99,8 +99,10 @@ class MotionPlan:
 
     @property
     def ok(self) -> bool:
-        """Return True when every sample is within limits and free of collisions."""
-        return self.limits_report.ok and self.collision_report.collision_free
+        """Return True when every sample is within limits and free of collisions, and the robot
+        keeps the clearance margin (`EnginePathReport.keeps_margin`)."""
+        rep = self.collision_report
+        return self.limits_report.ok and rep.collision_free and rep.keeps_margin
 
     def summary(self) -> str:
         """Return a one-paragraph human summary."""

@@ -40,16 +40,34 @@ def _check_workflow(workflow: str) -> str:
 
 
 def latest_plan(wb: Workbench, workflow: str) -> Any:
-    """Return the workflow's latest plan, planned now when there is none."""
+    """Return the workflow's latest plan, planned now when there is none, or when it was
+    checked against another clearance margin or fewer exemptions than the project's now."""
     if _check_workflow(workflow) == "motion":  # planned again after an edit of the program
-        plan = wb.last_plan
-        stale = plan is not None and program_edit.editor(wb).plan_is_stale(plan)
-        return wb.plan_motion() if plan is None or stale else plan
+        last = wb.last_plan
+        stale = last is not None and program_edit.editor(wb).plan_is_stale(last)
+        return wb.plan_motion() if last is None or stale or margin_changed(wb, last) else last
+    plan: Any
     if workflow == "bending":
-        return wb.bending.last_plan or wb.bending.plan()
-    if workflow == "assembly":
-        return wb.assembly.last_plan or wb.assembly.plan_sequence()
-    return wb.polishing.last_motion or wb.polishing.plan_motion()
+        plan = wb.bending.last_plan
+    elif workflow == "assembly":
+        plan = wb.assembly.last_plan
+    else:
+        plan = wb.polishing.last_motion
+    return plan_workflow(wb, workflow) if plan is None or margin_changed(wb, plan) else plan
+
+
+def margin_changed(wb: Workbench, plan: Any) -> bool:
+    """Return True when a robot report of `plan` measured another margin than the project's,
+    or left out fewer exempt pairs (the plan is then checked again before an export)."""
+    policy = wb.collision_policy
+    reports = [getattr(plan, "collision_report", None), getattr(plan, "robot_report", None)]
+    reports += list(getattr(plan, "robot_reports", {}).values())
+    return any(
+        r is not None
+        and r.nearest is not None
+        and (r.nearest.margin != policy.margin or not set(policy.exempt) <= set(r.nearest.exempt))
+        for r in reports
+    )
 
 
 def plan_workflow(wb: Workbench, workflow: str, *, progress: Any = None) -> Any:

@@ -26,6 +26,7 @@ from workbench.project import (
     project_from_dict,
     project_to_json,
 )
+from workbench.project.collision import CollisionSpec
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
 from workbench.service import program_import, programs, project_imports, project_save
@@ -220,9 +221,8 @@ class Workbench:
 
     @property
     def collision_policy(self) -> CollisionPolicy:
-        """Return how plans check collisions: the project's `collision` section (default spheres)."""
-        spec = self._project.collision
-        return spec.to_si() if spec is not None else CollisionPolicy()
+        """Return how plans check collisions: the project's `collision` section (or its defaults)."""
+        return (self._project.collision or CollisionSpec()).to_si()
 
     def collision_status(self, q: ArrayLike | None = None) -> ContactReport:
         """Return the collision report at `q` (default: current joints, cached)."""

@@ -1,0 +1,114 @@
+"""The plan's clearance against the margin: exact on the samples, its pair named, exemptions."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from block_cell import block_cell
+
+from workbench.collision import CollisionPolicy, check_motion
+from workbench.collision.clearance import Clearance, plan_clearance
+from workbench.collision.engine import CollisionEngine
+from workbench.errors import InputError
+from workbench.service import Workbench
+
+# Towards the block: the tool's face ends a few centimetres short of it (Q_HIT in
+# test_engine.py puts it 50 mm deep).
+Q0 = np.zeros(6)
+Q1 = np.array([0.3, -0.55, 0.55, 0.2, 0.1, 0.0])
+
+
+@pytest.fixture(scope="module")
+def wb() -> Workbench:
+    return Workbench.from_dict(block_cell())
+
+
+@pytest.fixture(scope="module")
+def spheres(wb: Workbench, engine_cache: Path) -> CollisionEngine:
+    """A fast engine on the checker (capsules: built in milliseconds, items like the spheres')."""
+    return CollisionEngine(wb.checker, "capsules", cache_dir=str(engine_cache))
+
+
+def _brute_force(wb: Workbench, qs: np.ndarray, skip: set[frozenset[str]]) -> tuple[float, tuple]:
+    """Twin: python-fcl's distance of every pair at every sample (0 where a pair collides)."""
+    scene = wb.checker.scene
+    best, pair = np.inf, None
+    for q in qs:
+        scene.place(wb.checker.world_poses(q))
+        for a, b in scene.pairs:
+            if frozenset((a, b)) in skip:
+                continue
+            d = 0.0 if scene.collides(a, b) else scene.distance(a, b)
+            if d < best:
+                best, pair = d, (a, b)
+    return best, pair
+
+
+@pytest.mark.parametrize("with_engine", [False, True])
+def test_least_distance_equals_fcl_over_every_pair_and_sample(
+    wb: Workbench, spheres: CollisionEngine, with_engine: bool
+) -> None:
+    """Twin: the brute force over every (sample, pair) gives the same distance and pair."""
+    qs = np.linspace(Q0, Q1, 9)
+    t = np.linspace(0.0, 0.8, 9)
+    got = plan_clearance(wb.checker, t, qs, engine=spheres if with_engine else None)
+    want, pair = _brute_force(wb, qs, set())
+    assert got.distance == pytest.approx(want, abs=1e-9)
+    assert got.pair == pair
+    assert got.time == pytest.approx(t[got.index])
+    assert 0.0 < got.distance < 0.3  # the tool approaches the block: a real figure
+
+
+def test_exempt_pair_is_left_out_and_listed(wb: Workbench) -> None:
+    """Twin: the brute force without the exempt pair; the description lists the exemption."""
+    qs = np.linspace(Q0, Q1, 5)
+    t = np.arange(5.0)
+    first = plan_clearance(wb.checker, t, qs)
+    assert first.pair is not None
+    ex = plan_clearance(wb.checker, t, qs, exempt=[first.pair[::-1]])
+    want, pair = _brute_force(wb, qs, {frozenset(first.pair)})
+    assert ex.distance == pytest.approx(want, abs=1e-9) and ex.pair == pair
+    assert ex.distance >= first.distance
+    assert ex.exempt == (tuple(sorted(first.pair)),)
+    assert f"exempt: {min(first.pair)} – {max(first.pair)}" in ex.describe()
+
+
+def test_margin_problem_names_pair_distance_and_time() -> None:
+    near = Clearance(0.0012, ("tool", "block"), 1.25, 3, margin=0.002)
+    assert not near.keeps_margin
+    assert near.problem == (
+        "tool comes within 1.2 mm of block at t = 1.25 s, closer than the clearance margin 2.0 mm"
+    )
+    far = Clearance(0.0025, ("tool", "block"), 1.25, 3, margin=0.002)
+    assert far.keeps_margin and far.problem is None
+
+
+@pytest.mark.parametrize("bad", [float("nan"), -0.001, 0.6, float("inf")])
+def test_bad_margin_is_refused_naming_the_field(bad: float) -> None:
+    with pytest.raises(InputError, match="margin"):
+        CollisionPolicy(margin=bad)
+
+
+def test_check_motion_reports_the_margin(wb: Workbench, spheres: CollisionEngine) -> None:
+    """A free motion closer than the margin keeps `collision_free` but not `keeps_margin`."""
+    qs = np.linspace(Q0, Q1, 9)
+    t = np.linspace(0.0, 0.8, 9)
+    near = plan_clearance(wb.checker, t, qs)
+    for margin, keeps in ((near.distance * 0.5, True), (near.distance + 0.001, False)):
+        policy = CollisionPolicy(mode="exact", margin=margin, exempt=(("link1", "link5"),))
+        rep = check_motion(
+            t,
+            qs,
+            wb.checker,
+            policy,
+            # the motion is the straight joint segment between samples (no deviation)
+            sampler=lambda tt: np.array([np.interp(tt, t, qs[:, j]) for j in range(6)]).T,
+            acceleration=np.zeros(6),
+        )
+        assert rep.collision_free
+        assert rep.keeps_margin is keeps
+        assert rep.nearest is not None and rep.nearest.pair == near.pair
+        if not keeps:
+            assert near.pair[0] in rep.message and "closer than the clearance margin" in rep.message
