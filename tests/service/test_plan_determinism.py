@@ -20,6 +20,7 @@ from workbench.kinematics.arm_configuration import every_solution
 from workbench.kinematics.pinocchio_dh import build_dh_model
 from workbench.motion.programs import EXPORT_FORMATS
 from workbench.project import project_from_dict
+from workbench.service.programs import plan_workflow
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "projects" / "mz07_cell.json"
@@ -162,3 +163,31 @@ def test_a_linear_target_reached_in_another_configuration_is_refused_naming_it()
     with pytest.raises(PlanningError, match="elbow down") as exc:
         wb.plan_motion()
     assert exc.value.field == "program.moves[2].configuration"
+
+
+@pytest.mark.parametrize(
+    ("project", "workflow"),
+    [
+        ("assembly_cell.json", "assembly"),
+        ("polishing_cell.json", "polishing"),
+        ("bending_cell.json", "bending"),
+    ],
+)
+def test_every_workflow_exports_the_same_programs_whatever_the_jog(
+    project: str, workflow: str
+) -> None:
+    """Assembly, polishing and bending plan from the robot's joints as the project stores them
+    (`RobotSetup.q0`), not from the jogged ones."""
+    wb = Workbench.open(ROOT / "projects" / project)
+    rng = np.random.default_rng(5)
+    lim = wb.robot.limits
+    seen = []
+    for _ in range(2):
+        wb.set_joints(rng.uniform(lim[:, 0], lim[:, 1]))
+        plan_workflow(wb, workflow)
+        files = {}
+        for fmt in EXPORT_FORMATS:
+            out = wb.export_program(fmt, workflow, force=True, any_vendor=True)
+            files |= {f"{fmt}/{name}": text for name, text in out.files.items()}
+        seen.append(files)
+    assert seen[0] == seen[1]
