@@ -63,7 +63,9 @@ def test_a_file_without_configurations_loads_and_its_targets_have_none() -> None
         ("mz07", CONF | {"flip": True}, "flip", "unknown field"),
     ],
 )
-def test_bad_configurations_name_their_field(preset: str, conf: dict, field: str, says: str) -> None:
+def test_bad_configurations_name_their_field(
+    preset: str, conf: dict, field: str, says: str
+) -> None:
     problems = _problems(_project(preset, {"type": "joint", "pose": POSE, "configuration": conf}))
     path = next(p for p in problems if p.endswith(field))
     assert path.startswith("program.moves[0]")
