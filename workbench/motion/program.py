@@ -200,17 +200,24 @@ def program_start(
     model: RobotModel,
     T_world_base: FloatArray,
     T_flange_tcp: FloatArray,
+    q_reference: FloatArray,
     *,
     field: str = "program.moves",
 ) -> FloatArray:
     """Return where a program without start joints starts (dof,) [rad]: its first move's target,
     the joints of a joint target or the IK solution of a pose in its stored configuration;
-    a pose without one takes the solution nearest the middle of the joint limits (a fixed
-    reference: never the robot's current joints). The first move then plans as a zero-length
-    move."""
+    a pose without one takes the solution nearest `q_reference` [rad] (a fixed posture, e.g.
+    the joints the project file stores: never the robot's current, jogged joints). The first
+    move then plans as a zero-length move."""
     moves_in = program_moves(items)
     if not moves_in:
         raise InputError(f"{field}: the program has no moves; add at least one")
+    if len(moves_in) == 1:
+        raise InputError(
+            "a program of one move without start joints starts at its target and does not move;"
+            " give 'program.start' [deg] (where the robot starts) or add a move",
+            field="program.start",
+        )
     i, mv = moves_in[0]
     if mv.joints is not None:
         return np.asarray(mv.joints, float)
@@ -220,8 +227,8 @@ def program_start(
         @ mv.T_world_tcp
         @ invert_transform(np.asarray(T_flange_tcp, float))
     )
-    middle = np.asarray(model.limits, float).mean(axis=1)
-    return pose_joints(model, mv, T_base_flange, middle, _where(i, mv, field))
+    q_ref = np.asarray(q_reference, float)
+    return pose_joints(model, mv, T_base_flange, q_ref, _where(i, mv, field))
 
 
 def motion_program(

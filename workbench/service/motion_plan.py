@@ -137,8 +137,8 @@ def plan_project(
     progress: Progress | None = None,
 ) -> MotionPlan:
     """Return the `MotionPlan` of the project's program (its moves and actions) from its start
-    joints (`program.start`; absent: its first move's target, `program_start`), never from the
-    robot's current joints; InputError when there is no program or `dt` [s] is bad."""
+    joints (`program.start`; absent: its first move's target, `program_start`, a pose solved
+    near the robot's joints as the file stores them), never from the robot's current joints; InputError when there is no program or `dt` [s] is bad."""
     section = project.program
     if section is None:
         raise InputError("program: the project has no program; add a 'program' with moves")
@@ -148,7 +148,7 @@ def plan_project(
         raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
     items = program_items(project, convention)
     q_start = (
-        program_start(items, setup.model, setup.T_world_base, setup.T_flange_tcp)
+        program_start(items, setup.model, setup.T_world_base, setup.T_flange_tcp, setup.q0)
         if spec.start is None
         else joint_vector(spec.start, setup.model.dof, "program.start")
     )
