@@ -35,6 +35,11 @@ def test_teach_edit_undo_plan_and_export(page, app: WorkbenchApp) -> None:  # ty
     assert taught.type == "linear" and taught.name == "target1"
     assert np.allclose(pose_to_matrix(taught.pose), wb.tcp_pose(), atol=1e-8)
     page.get_by_text("target1").first.wait_for()  # in the table and the item list
+    # its arm configuration, the robot's, in the table and under the selected item
+    assert taught.configuration is not None
+    label = taught.configuration.label()
+    page.get_by_text(f"linear move to its TCP pose in {label}").first.wait_for()
+    page.get_by_role("cell", name=label).first.wait_for()
 
     # Its speed, typed: the server's program takes it, and the table shows it.
     type_number(page, "Move speed", "250")

@@ -243,3 +243,23 @@ def test_bad_index_types_are_refused(wb: Workbench) -> None:
         ed.delete_item(True)  # type: ignore[arg-type]
     with pytest.raises(InputError, match="insert at"):
         ed.add_target("joints", at=-1)
+
+
+def test_a_taught_pose_target_stores_the_configuration_of_the_current_joints(
+    wb: Workbench,
+) -> None:
+    ed = editor(wb)
+    # the jog panel's "no flip" solution with J6 a turn down: not the nearest one
+    sols = wb.ik_solutions(wb.tcp_pose())
+    chosen = next(s for s in sols if s.label == "front/elbow up/no flip, J6 -1 turn")
+    wb.move_tcp(wb.tcp_pose(), configuration=chosen.label)
+    k = ed.add_target("joint")
+    conf = ed.item(k).configuration
+    assert conf.label() == chosen.label  # the Robot tab's label of the joints taught
+    assert _moves(wb)[k]["configuration"] == {
+        "front": True,
+        "elbow_up": True,
+        "wrist_flip": False,
+        "turns": {"J6": -1},
+    }
+    assert ed.item(ed.add_target("joints")).configuration is None  # joints need none

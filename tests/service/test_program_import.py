@@ -27,9 +27,15 @@ def planned() -> Workbench:
 def test_an_exported_program_imports_back_to_the_same_targets(planned: Workbench, fmt: str) -> None:
     out = planned.export_program(fmt, any_vendor=True)  # the MZ07 is NACHI: every post
     wb = Workbench.open(PROJECT)
-    wb.replace_project(wb.project.model_copy(update={"program": None}))
+    start_only = wb.project.program.model_copy(update={"moves": []})  # the cell's start stays
+    wb.replace_project(wb.project.model_copy(update={"program": start_only}))
     notes = wb.import_program(out.files)
     assert not [n for n in notes if "not understood" in n], notes
+    # the linear targets carry the configuration the program's data selected, before any plan
+    planned_confs = [m.configuration for m in planned.project.program.moves if m.type == "linear"]
+    imported = [m for m in wb.project.program.moves if m.type == "linear"]
+    assert [m.configuration for m in imported] == planned_confs
+    assert wb.project.program.start == planned.project.program.start
     # the imported program reaches the planned joints at every target, in order
     a = planned.robot_programs()[0]
     plan = wb.plan_motion()

@@ -85,6 +85,7 @@ def test_a_joint_move_outside_the_new_robots_limits_is_refused_by_the_plan_namin
     # J2 = 160 deg: inside the MZ07's -45..170, outside the ABB IRB 1200's -100..135
     data["program"] = {
         "name": "p",
+        "start": [0, 90, 0, 0, -90, 0],  # a one-move program moves from its start
         "moves": [{"name": "j", "type": "joint", "joints": [0, 160, 0, 0, -90, 0]}],
     }
     wb.replace_from_json(json.dumps(data))

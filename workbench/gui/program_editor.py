@@ -74,6 +74,15 @@ def action_text(item: Any) -> str:
     return f"{item.signal} = {item.value}{timeout}"
 
 
+def configuration(item: Any) -> str:
+    """Return a move's arm configuration as shown ("front/elbow up/no flip, J6 +1 turn"): a
+    pose target's stored one, "set by the next plan" before it has one, "-" for joints."""
+    if item.joints is not None:
+        return "-"
+    conf = item.configuration
+    return "set by the next plan" if conf is None else conf.label()
+
+
 def table_markdown(wb: Workbench, selected: int | None) -> str:
     """Return the program as a markdown table with the last plan's durations and cycle time."""
     ed = editor(wb)
@@ -96,11 +105,11 @@ def table_markdown(wb: Workbench, selected: int | None) -> str:
             zone = "fine" if it.zone == 0 else f"{format_number(it.zone)} mm"
             target = "joints" if it.joints is not None else "pose"
             rows.append(
-                f"| {mark}{i + 1} | {it.name or '-'} | {it.type} ({target}) |"
+                f"| {mark}{i + 1} | {it.name or '-'} | {it.type} ({target}) | {configuration(it)} |"
                 f" {format_number(it.speed)} {unit} | {zone} | {it.wobj or 'base'} | {dur} |"
             )
         else:
-            rows.append(f"| {mark}{i + 1} | | {it.type} | {action_text(it)} | | | |")
+            rows.append(f"| {mark}{i + 1} | | {it.type} | | {action_text(it)} | | | |")
     if times is None:
         plan_line = "Not planned yet: **Plan** to see each move's duration and the cycle time."
     elif times.stale:
@@ -112,8 +121,8 @@ def table_markdown(wb: Workbench, selected: int | None) -> str:
         plan_line = f"Cycle time **{times.cycle_time:.3f} s** (last plan)."
     return (
         f"**Program `{spec.name}`**, tool `{wb.project.tool.name}`\n\n"
-        "| # | name | type | speed | zone | wobj | planned [s] |\n"
-        f"|---|---|---|---|---|---|---|\n" + "\n".join(rows) + f"\n\n{plan_line}{note}"
+        "| # | name | type | configuration | speed | zone | wobj | planned [s] |\n"
+        f"|---|---|---|---|---|---|---|---|\n" + "\n".join(rows) + f"\n\n{plan_line}{note}"
     )
 
 
@@ -231,6 +240,8 @@ class ProgramEditorPanel:
             self.speed.refresh()
             self.zone.refresh()
             kind = "" if it is None or not is_move else f" · {it.type} move to its {_target(it)}"
+            if is_move and it.joints is None:
+                kind += f" in **{configuration(it)}**"
             self.tool.content = f"Tool: **{self.wb.project.tool.name}**{kind}"
 
     def _changed(self) -> None:

@@ -29,6 +29,12 @@ def joint_turn_numbers(model: RobotModel, q_model: ArrayLike) -> NDArray[np.int6
     return np.ceil((qc - _HALF_TURN) / (2.0 * math.pi)).astype(np.int64)
 
 
+def wide_joints(model: RobotModel) -> NDArray[np.int64]:
+    """Return the indices of the joints whose controller limits span more than +-180 deg."""
+    lim = np.asarray(model.convention.limits_to_controller(model.limits), float)
+    return np.flatnonzero((lim[:, 0] < -_HALF_TURN) | (lim[:, 1] > _HALF_TURN))
+
+
 def branch_names(model: RobotModel, q_model: ArrayLike) -> list[str]:
     """Return the configuration label of each joint vector q (..., dof) [rad, model convention].
 
@@ -40,8 +46,7 @@ def branch_names(model: RobotModel, q_model: ArrayLike) -> list[str]:
     q = np.asarray(q_model, float).reshape(-1, model.dof)
     if len(q) == 0:
         return []
-    lim = np.asarray(model.convention.limits_to_controller(model.limits), float)
-    wide = np.flatnonzero((lim[:, 0] < -_HALF_TURN) | (lim[:, 1] > _HALF_TURN))
+    wide = wide_joints(model)
     turns = joint_turn_numbers(model, q)
     names = []
     for conf, k in zip(arm_configurations(model, q), turns, strict=True):

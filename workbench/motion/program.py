@@ -7,7 +7,10 @@ or a linear move to a pose, with its work object) or an action of the controller
 (`SetOutput`, `Gripper`, `WaitTime`, ...). The planner sees only the moves; a move followed by
 an action (other than a comment) ends in an exact stop (`stop_zones`): the action happens at
 the target, as a controller runs it (a robot in a blend has not arrived). A pose joint move goes
-to the IK solution nearest the previous joint target (`nearest_ik`, the planner's one rule).
+to the IK solution in its stored configuration (`solve_configuration`: branch and turns), or,
+where it stores none, the one nearest the previous joint target (`nearest_ik`). The program
+starts from its own start joints or, without them, from its first move's target
+(`program_start`): never from wherever the robot was jogged, so a program plans the same.
 """
 
 from __future__ import annotations
@@ -19,10 +22,15 @@ from typing import TYPE_CHECKING, Protocol, TypeAlias
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.errors import InputError, UnreachableError
+from workbench.errors import InputError, PlanningError, UnreachableError
 from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.model import RobotModel
+from workbench.kinematics.target_configuration import (
+    TargetConfiguration,
+    solve_configuration,
+    target_configuration,
+)
 
 if TYPE_CHECKING:  # the actions are the controller program's; motion.programs imports this module
     from workbench.motion.programs.controller_program import Action
@@ -123,6 +131,7 @@ class ProgramMove(Protocol):
     speed: float
     zone: float
     wobj: str
+    configuration: TargetConfiguration | None
 
 
 Item: TypeAlias = "ProgramMove | Action"
@@ -172,6 +181,56 @@ def _where(index: int, mv: ProgramMove, prefix: str) -> str:
     return f"{prefix}[{index}]" + (f" ({mv.name})" if mv.name else "")
 
 
+def pose_joints(
+    model: RobotModel, mv: ProgramMove, T_base_flange: FloatArray, q_near: FloatArray, where: str
+) -> FloatArray:
+    """Return the joints (dof,) [rad] of a pose target: the IK solution in its stored
+    configuration (a tie at a singular wrist broken towards `q_near`), or without one the
+    solution nearest `q_near` (`nearest_ik`); UnreachableError names `where`."""
+    conf = getattr(mv, "configuration", None)
+    if conf is None:
+        return nearest_ik(model, T_base_flange, q_near, f"{where}.pose")
+    return solve_configuration(
+        model, T_base_flange, conf, q_near=q_near, where=f"{where}.configuration"
+    )
+
+
+def program_start(
+    items: Sequence[Item],
+    model: RobotModel,
+    T_world_base: FloatArray,
+    T_flange_tcp: FloatArray,
+    q_reference: FloatArray,
+    *,
+    field: str = "program.moves",
+) -> FloatArray:
+    """Return where a program without start joints starts (dof,) [rad]: its first move's target,
+    the joints of a joint target or the IK solution of a pose in its stored configuration;
+    a pose without one takes the solution nearest `q_reference` [rad] (a fixed posture, e.g.
+    the joints the project file stores: never the robot's current, jogged joints). The first
+    move then plans as a zero-length move."""
+    moves_in = program_moves(items)
+    if not moves_in:
+        raise InputError(f"{field}: the program has no moves; add at least one")
+    if len(moves_in) == 1:
+        raise InputError(
+            "a program of one move without start joints starts at its target and does not move;"
+            " give 'program.start' [deg] (where the robot starts) or add a move",
+            field="program.start",
+        )
+    i, mv = moves_in[0]
+    if mv.joints is not None:
+        return np.asarray(mv.joints, float)
+    assert mv.T_world_tcp is not None
+    T_base_flange = (
+        invert_transform(np.asarray(T_world_base, float))
+        @ mv.T_world_tcp
+        @ invert_transform(np.asarray(T_flange_tcp, float))
+    )
+    q_ref = np.asarray(q_reference, float)
+    return pose_joints(model, mv, T_base_flange, q_ref, _where(i, mv, field))
+
+
 def motion_program(
     name: str,
     items: Sequence[Item],
@@ -183,8 +242,9 @@ def motion_program(
     field: str = "program.moves",
 ) -> Program:
     """Return the motion `Program` the planner runs for `items`: linear moves to the pose in the
-    base frame, joint moves to their joints or to the pose's IK solution nearest the previous
-    joint target (`nearest_ik`), zones from `stop_zones`.
+    base frame, joint moves to their joints or to the pose's IK solution in its stored
+    configuration, else nearest the previous joint target (`pose_joints`), zones from
+    `stop_zones`.
 
     InputError names the item (`field`[i]) whose joints are of the wrong length or outside the
     limits [deg]; UnreachableError the pose without an IK solution.
@@ -220,6 +280,39 @@ def motion_program(
         if mv.type == "linear":
             moves.append(Move.linear(T_base_tcp, speed=mv.speed, zone=zone, name=mv.name))
             continue
-        q_prev = nearest_ik(model, T_base_tcp @ T_tcp_flange, q_prev, f"{where}.pose")
+        q_prev = pose_joints(model, mv, T_base_tcp @ T_tcp_flange, q_prev, where)
         moves.append(Move.joint(q_prev, speed=mv.speed, zone=zone, name=mv.name))
     return Program(name, tuple(moves))
+
+
+def planned_configurations(
+    items: Sequence[Item],
+    target_joints: Sequence[FloatArray],
+    model: RobotModel,
+    *,
+    field: str = "program.moves",
+) -> list[tuple[int, TargetConfiguration]]:
+    """Return (item index, configuration) of every pose target as planned: `target_joints` are
+    the planned joints (dof,) [rad] at each move's target, in order (`RobotProgram.moves`).
+
+    A linear move runs on from where the arm is, so it cannot choose its target's configuration;
+    where it arrives in another configuration than the one its target stores, a controller
+    would stop (ABB's ConfL), so PlanningError names the target's field and the fix."""
+    out = []
+    for (i, mv), q in zip(program_moves(items), target_joints, strict=True):
+        if mv.T_world_tcp is None:
+            continue
+        got = target_configuration(model, q)
+        stored = getattr(mv, "configuration", None)
+        if (
+            stored is not None
+            and mv.type == LINEAR
+            and (stored.arm != got.arm or stored.turns[: model.dof] != got.turns)
+        ):
+            raise PlanningError(
+                f"the line arrives at its target in {got.label()}, but the target stores"
+                f" {stored.label()}: reach it with a joint move, or clear its configuration",
+                field=f"{field}[{i}].configuration",
+            )
+        out.append((i, got))
+    return out

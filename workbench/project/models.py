@@ -20,6 +20,7 @@ from pydantic import Field, model_validator
 from workbench.errors import InputError
 from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.robot_library import LIBRARY, ROBOT_NAMES
+from workbench.kinematics.target_configuration import TargetConfiguration
 from workbench.project import bounds as B
 from workbench.project import program_io as io_
 from workbench.project.assembly import AssemblySpec
@@ -40,6 +41,7 @@ from workbench.project.common import (
     ToolSize3mm,
 )
 from workbench.project.polishing import PolishingSpec
+from workbench.project.target_configuration import ConfigurationSpec, check_turns
 from workbench.project.units import DEG, MM, pose_to_matrix
 
 FloatArray = NDArray[np.float64]
@@ -307,7 +309,8 @@ class Cell(StrictModel):
 @dataclass(frozen=True, eq=False)
 class MoveSI:
     """A move in SI: joint target (dof,) [rad] or TCP target in the world (4, 4) [m]; speed
-    as a fraction of the max joint speeds (joint moves) or [m/s] (linear); zone [m]."""
+    as a fraction of the max joint speeds (joint moves) or [m/s] (linear); zone [m]; a pose
+    target's stored arm `configuration` (None: the plan chooses one)."""
 
     name: str
     type: str
@@ -316,11 +319,12 @@ class MoveSI:
     speed: float
     zone: float
     wobj: str = "base"
+    configuration: TargetConfiguration | None = None
 
 
 @dataclass(frozen=True, eq=False)
 class ProgramSI:
-    """A program in SI: name, start joints [rad] (None: the robot's stored joints), moves."""
+    """A program in SI: name, start joints [rad] (None: the first move's target), moves."""
 
     name: str
     start: FloatArray | None
@@ -337,6 +341,7 @@ class MoveSpec(StrictModel):
     speed: Annotated[float, Field(gt=0)] = 100.0  # joint: % of max joint speed; linear: mm/s
     zone: Annotated[float, B.span(B.ZONE_MM, "mm")] = 0.0  # blend radius [mm]; 0 = exact stop
     wobj: io_.Name | None = None  # the work object the program states the target in (default base)
+    configuration: ConfigurationSpec | None = None  # a pose target's IK branch and turns
 
     @model_validator(mode="after")
     def _target(self) -> MoveSpec:
@@ -344,6 +349,12 @@ class MoveSpec(StrictModel):
             raise ValueError("give exactly one target: 'joints' [deg] or 'pose' {xyz mm, rpy deg}")
         if self.type == "linear" and self.pose is None:
             raise ValueError("a linear move needs a 'pose' target")
+        if self.configuration is not None and self.pose is None:
+            raise InputError(
+                "only a pose target has an arm configuration; a joint target's joints are exact:"
+                " remove 'configuration'",
+                field="configuration",
+            )
         speed = (
             B.span(B.JOINT_MOVE_PERCENT_OPEN, "%", lo_open=True)
             if self.type == "joint"
@@ -369,6 +380,9 @@ class MoveSpec(StrictModel):
             speed=self.speed / 100.0 if self.type == "joint" else self.speed * MM,
             zone=self.zone * MM,
             wobj=self.wobj or io_.BASE_WOBJ,
+            configuration=None
+            if self.configuration is None
+            else self.configuration.to_si(B.MAX_DOF if convention is None else convention.dof),
         )
 
 
@@ -382,7 +396,7 @@ class ProgramSpec(StrictModel):
     """A robot program: start joints and moves; planned into a jerk-limited trajectory."""
 
     name: str = "main"
-    start: Joints | None = None  # deg; default: the robot's stored joints
+    start: Joints | None = None  # deg; default: the first move's target (never the jog)
     moves: Annotated[list[ProgramItem], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
     # moves and actions (program_io: gripper, set_output, pulse_output, wait_input, wait, comment)
 
@@ -424,6 +438,7 @@ class Project(StrictModel):
     @model_validator(mode="after")
     def _references(self) -> Project:
         io_.check_references(self)
+        check_turns(self)
         return self
 
     def workflows(self) -> list[str]:

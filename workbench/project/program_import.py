@@ -29,10 +29,12 @@ from workbench.motion.programs.controller_program import (
 )
 from workbench.project.common import Pose
 from workbench.project.program_io import BASE_WOBJ
+from workbench.project.target_configuration import ConfigurationSpec
 from workbench.project.units import matrix_to_pose, pose_to_matrix, to_deg, to_mm
 
 if TYPE_CHECKING:
     from workbench.kinematics.joint_convention import JointConvention
+    from workbench.kinematics.target_configuration import TargetConfiguration
     from workbench.project.models import Project
 
 FloatArray = NDArray[np.float64]
@@ -93,6 +95,7 @@ def _move_items(
     convention: JointConvention,
     T_world_wobj: FloatArray,
     notes: list[str],
+    configuration: TargetConfiguration | None = None,
 ) -> list[dict[str, Any]]:
     where = f"line {mv.line} ({mv.name})"
     zone = float(to_mm(mv.zone))
@@ -123,6 +126,8 @@ def _move_items(
             raise InputError(f"a {mv.kind} move needs a Cartesian target", field=where)
         item = {"name": tgt.name, "type": "linear", "pose": _pose(T_world_wobj @ tgt.T_wobj_tcp)}
         item.update(speed=float(to_mm(mv.speed)), zone=zone)
+        if configuration is not None and tgt is mv.target:  # the via's is chosen by the plan
+            item["configuration"] = ConfigurationSpec.of(configuration).model_dump(mode="json")
         if wobj:
             item["wobj"] = wobj
         out.append(item)
@@ -136,12 +141,16 @@ def imported_project(
     convention: JointConvention,
     *,
     source: str,
+    configurations: list[TargetConfiguration] | None = None,
 ) -> ImportResult:
     """Return the project with `read` as its program (replacing the old one).
 
     `joints` (dof,) [rad, model] per move: the targets as the controller reaches them
     (`motion.programs.readback.solve_moves`), written as controller degrees for joint moves.
-    Linear targets keep their pose (world, via their work object). The program's main tool
+    The program's `start` stays (a program file states none). Linear targets keep their pose
+    (world, via their work object) and, from `configurations`
+    (the `TargetConfiguration` of each move's `joints`: what the program's confdata, Status/Turn
+    or CONFIG selected), their arm configuration. The program's main tool
     (the one most moves use) becomes the project's tool when it differs, with a note.
     """
     notes = [
@@ -194,9 +203,11 @@ def imported_project(
     signals = _Signals(data.setdefault("io", {}), notes)
     items: list[dict[str, Any]] = []
     q_iter = iter(joints)
+    c_iter = iter(configurations if configurations is not None else [None] * len(joints))
     for ins in read.instructions:
         if isinstance(ins, ReadMove):
-            items += _move_items(ins, next(q_iter), convention, T_wobj[ins.wobj], notes)
+            conf = next(c_iter)
+            items += _move_items(ins, next(q_iter), convention, T_wobj[ins.wobj], notes, conf)
         elif isinstance(ins, SetOutput):
             name = signals.name("outputs", ins.signal.name, ins.signal.number)
             items.append({"type": "set_output", "signal": name, "value": ins.value})
@@ -220,6 +231,8 @@ def imported_project(
             )
             items.append({"type": "comment", "text": f"sync {ins.name}"})
     program = {"name": _program_name(read.name), "moves": items}
+    if (data.get("program") or {}).get("start") is not None:  # the cell's start stays
+        program["start"] = data["program"]["start"]
     data["program"] = program
     return ImportResult(data, tuple(notes))
 

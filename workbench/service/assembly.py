@@ -131,7 +131,7 @@ class AssemblyService(SectionService[AssemblySpec]):
                 main = wb.project.robot.name
                 arms = {
                     main: AssemblyArm(
-                        main, wb.setup, wb.checker, wb.joints, (235, 235, 240), main=True
+                        main, wb.setup, wb.checker, wb.setup.q0, (235, 235, 240), main=True
                     )
                 }
                 for i, r in enumerate(self.si.robots):

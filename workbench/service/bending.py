@@ -177,7 +177,7 @@ class BendingService(SectionService[BendingSpec]):
 
         Raises UnreachableError naming the bend the robot cannot hold on the die.
         """
-        return placements(self.wb.setup, self.part, self.si().die, self.grasp, self.wb.joints)
+        return placements(self.wb.setup, self.part, self.si().die, self.grasp, self.wb.setup.q0)
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
         """Return TCP poses (N, 4, 4) [m] of the transfer: retract, via poses, pallet; with names."""
@@ -206,7 +206,7 @@ class BendingService(SectionService[BendingSpec]):
                 die=si.die,
                 transfer=si.transfer,
                 frames=si.frames,
-                q_start=self.wb.joints,
+                q_start=self.wb.setup.q0,
                 obstacles=self.obstacles(),
                 checker=self.wb.checker,
                 policy=self.wb.collision_policy,
@@ -270,7 +270,7 @@ class BendingService(SectionService[BendingSpec]):
     def robot_programs(self, plan: BendingResult | None = None) -> list[RobotProgram]:
         """Return the plan (default: the last) as a robot program (`BendingResult.robot_program`)."""
         plan, s = plan or self.last_plan or self.plan(), program_settings(self.wb.project)
-        return [plan.robot_program(self.wb.setup, self.si(), s, self.wb.joints)]
+        return [plan.robot_program(self.wb.setup, self.si(), s, self.wb.setup.q0)]
 
     def check_cost(self, plan: BendingResult, repeat: int = 3) -> CheckCost | None:
         """Return OBB tests and check times per frame, tree vs flat loop (Fig. 12), on request;

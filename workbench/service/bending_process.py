@@ -62,7 +62,7 @@ def sweep_context(svc: BendingService) -> SweepContext:
         svc.part,
         press,
         cycle_robot(svc),
-        wb.joints,
+        wb.setup.q0,
         wb.setup.tool_mesh,
         wb.setup.link_meshes,
         si.grasp_grid,
@@ -87,7 +87,7 @@ def cycle_cell(svc: BendingService) -> CycleCell:
         si.approach,
         si.lift,
         si.follow,
-        svc.wb.joints,
+        svc.wb.setup.q0,
         settle=svc.settle_time(close=True),
         release=svc.settle_time(close=False),
     )

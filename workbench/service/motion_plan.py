@@ -23,7 +23,7 @@ from workbench.motion import (
     time_program,
     validate_trajectory,
 )
-from workbench.motion.program import motion_program
+from workbench.motion.program import motion_program, program_start
 from workbench.motion.programs.controller_program import (
     MotionLimits,
     RobotProgram,
@@ -133,14 +133,14 @@ def plan_project(
     project: Project,
     setup: RobotSetup,
     checker: RobotCollisionChecker,
-    q_current: NDArray[np.float64],
     *,
     policy: CollisionPolicy,
     dt: float = 0.01,
     progress: Progress | None = None,
 ) -> MotionPlan:
     """Return the `MotionPlan` of the project's program (its moves and actions) from its start
-    joints (default `q_current` [rad]); InputError when there is no program or `dt` [s] is bad."""
+    joints (`program.start`; absent: its first move's target, `program_start`, a pose solved
+    near the robot's joints as the file stores them), never from the robot's current joints; InputError when there is no program or `dt` [s] is bad."""
     section = project.program
     if section is None:
         raise InputError("program: the project has no program; add a 'program' with moves")
@@ -148,12 +148,12 @@ def plan_project(
     spec = section.to_si(convention)
     if not (np.isfinite(dt) and 0 < dt <= 0.1):
         raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
+    items = program_items(project, convention)
     q_start = (
-        q_current
+        program_start(items, setup.model, setup.T_world_base, setup.T_flange_tcp, setup.q0)
         if spec.start is None
         else joint_vector(spec.start, setup.model.dof, "program.start")
     )
-    items = program_items(project, convention)
     return plan_motion(
         spec, setup, checker, q_start, policy=policy, dt=dt, progress=progress, items=items
     )

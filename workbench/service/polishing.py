@@ -250,7 +250,7 @@ class PolishingService(SectionService[PolishingSpec]):
             self.tcp_poses(pp),
             setup.T_world_base,
             setup.T_flange_tcp,
-            self.wb.joints,
+            self.wb.setup.q0,
             self.si.feed,
             n_lead=int(pp.path.is_lead_in.sum()),
             labels=point_labels(pp.path),
@@ -276,7 +276,7 @@ class PolishingService(SectionService[PolishingSpec]):
         plan, wb = plan or self.last_motion or self.plan_motion(), self.wb
         robot = wb.project.robot
         where = (wb.setup.T_world_base, self.T_world_workpiece, self._path().path.is_process)
-        args = (plan.trajectory, wb.robot, tool_data(wb.project.tool), *where, self.si, wb.joints)
+        args = (plan.trajectory, wb.robot, tool_data(wb.project.tool), *where, self.si, wb.setup.q0)
         return [polishing_program(*args, robot=robot.name, limits=motion_limits(robot))]
 
     # -- force control ---------------------------------------------------------------------

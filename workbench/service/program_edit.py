@@ -18,9 +18,12 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from workbench.errors import InputError, ProjectError
+from workbench.kinematics.target_configuration import target_configuration
+from workbench.motion.program import planned_configurations
 from workbench.project import bounds as B
 from workbench.project.io import project_from_dict
-from workbench.project.program_io import ACTION_ITEMS, wobj_names
+from workbench.project.program_io import ACTION_ITEMS, program_items, wobj_names
+from workbench.project.target_configuration import ConfigurationSpec
 from workbench.project.units import matrix_to_pose
 
 if TYPE_CHECKING:
@@ -50,6 +53,21 @@ class PlannedTimes:
     durations: tuple[float | None, ...]
     cycle_time: float
     stale: bool
+
+
+def store_configurations(wb: Workbench, plan: MotionPlan) -> None:
+    """Store in each pose target of the program that has none the arm configuration it was
+    planned in (`planned_configurations`), so that the next plan solves it the same; a linear
+    target reached in another configuration than it stores raises PlanningError naming it."""
+    project = wb._project  # not `wb.project`: the jog joints stay out of the file here
+    if project.program is None:
+        return
+    items = program_items(project, wb.robot.convention)
+    joints = [mv.target.q for mv in wb.robot_programs("motion", plan)[0].moves]
+    for i, conf in planned_configurations(items, joints, wb.robot):
+        move = project.program.moves[i]
+        if move.configuration is None:
+            move.configuration = ConfigurationSpec.of(conf)
 
 
 def editor(wb: Workbench) -> ProgramEditor:
@@ -142,7 +160,9 @@ class ProgramEditor:
             pose = pose.model_copy(
                 update={"xyz": [_tidy(v) for v in pose.xyz], "rpy": [_tidy(v) for v in pose.rpy]}
             )
+            conf = ConfigurationSpec.of(target_configuration(self.wb.robot, self.wb.joints))
             move |= {"type": kind, "pose": pose.model_dump(mode="json")}
+            move["configuration"] = conf.model_dump(mode="json")
         moves = self._dumps()
         k = len(moves) if at is None else self._slot(at, len(moves))
         moves.insert(k, move)

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import library_robot
+from workbench.kinematics.target_configuration import target_configuration
 from workbench.motion.programs.controller_base import in_model_base
 from workbench.motion.programs.formats import format_of, reader
 from workbench.motion.programs.readback import solve_moves
@@ -43,7 +44,10 @@ def import_program(wb: Workbench, files: dict[str, str], fmt: str | None = None)
     if preset is not None:  # work objects as the controller states them: into the model's base
         read = in_model_base(read, library_robot(preset).T_base_controller)
     joints = solve_moves(read, wb.robot)
-    result = imported_project(wb.project, read, joints, wb.robot.convention, source=source)
+    configurations = [target_configuration(wb.robot, q) for q in joints]
+    result = imported_project(
+        wb.project, read, joints, wb.robot.convention, source=source, configurations=configurations
+    )
     wb.replace_project(project_from_dict(result.data, source=source))
     return result.notes
 

@@ -29,7 +29,7 @@ from workbench.project import (
 from workbench.project.collision import CollisionSpec
 from workbench.project.paths import PathArg, ProjectFolders
 from workbench.project.units import to_deg
-from workbench.service import program_import, programs, project_imports, project_save
+from workbench.service import program_edit, program_import, programs, project_imports, project_save
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell, press_cell
@@ -262,12 +262,11 @@ class Workbench:
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
-        """Return the plan of the project's program (IK, jerk-limited trajectory, checks), kept as
-        `last_plan`; `progress(fraction, message)` is called as the work advances."""
-        plan = plan_project(
-            self._project, self._setup, self._checker, self._q,
-            policy=self.collision_policy, dt=dt, progress=progress,
-        )  # fmt: skip
+        """Return the plan of the project's program from its start (not the current joints; IK in
+        each target's stored configuration, stored where missing), kept as `last_plan`."""
+        args = (self._project, self._setup, self._checker)
+        plan = plan_project(*args, policy=self.collision_policy, dt=dt, progress=progress)
+        program_edit.store_configurations(self, plan)  # pose targets keep their configuration
         with self._lock:
             self._plan = plan
         return plan
