@@ -36,9 +36,12 @@ from workbench.motion.programs import (
     load_json,
     post,
     reader,
+    to_robot_program,
 )
+from workbench.motion.programs.nachi import unit_name, write_nachi
+from workbench.motion.programs.urscript import blend_radii
 from workbench.project import load_project
-from workbench.service.programs import latest_plan
+from workbench.service.programs import latest_plan, robot_models
 
 ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = sorted((ROOT / "projects").glob("*.json"))
@@ -125,6 +128,14 @@ def test_example_exports_and_reads_back(
     write, read_fn = post(fmt), reader(fmt)
     assert write is not None and read_fn is not None
     names: set[str] = set()
+    if fmt == "nachi":  # named <model>-<unit>-A.001: the unit is the robot's place in the cell
+        models = robot_models(wb, list(programs))
+        units = {
+            p.name: unit_name(m, k)
+            for k, (p, m) in enumerate(zip(programs, models, strict=True), 1)
+        }
+        write = lambda p: write_nachi(p, unit=units[p.name], number=1)  # noqa: E731
+        assert all(n.endswith("-A.001") and n.startswith("MZ07-0") for n in out.files), out.files
     for program in programs:
         own = write(program).files
         for name, text in own.items():
@@ -137,9 +148,33 @@ def test_example_exports_and_reads_back(
             _model(wb, workflow, program),
             signals_by="name" if fmt == "rapid" else "number",
             zone_tol=1e-3 if fmt == "ls" else 1e-4,
+            joint_zones=fmt != "ls",
+            zones=blend_radii(program) if fmt == "urscript" else None,
         )
+        if fmt == "urscript":
+            _check_ur_blends(read, _model(wb, workflow, program))
         assert not read.unknown, read.unknown[:3]
     assert names == set(out.files), "the export holds files no program wrote (or misses some)"
+
+
+def _check_ur_blends(read, model) -> None:  # noqa: ANN001
+    """Brute force over a UR program as read back: every waypoint's TCP from FK of its joints
+    (the planned joints the reader returns), and for every pair of neighbouring blends
+    r_i + r_(i+1) <= the distance between waypoints i and i+1, each r at most half of either
+    segment it touches (UR's rule: blends never overlap)."""
+    rp = to_robot_program(read, model)
+    pts = []
+    for mv in rp.moves:
+        tool = rp.tool(mv.tool).T_flange_tcp
+        pts.append((model.fk(mv.target.q) @ tool)[:3, 3])
+        if mv.kind == "circular":
+            raise AssertionError("no circular moves in the examples' UR programs")
+    r = [m.zone for m in rp.moves]
+    for i in range(len(pts) - 1):
+        seg = float(np.linalg.norm(pts[i + 1] - pts[i]))
+        assert r[i] + r[i + 1] <= seg + 1e-9, (i, r[i], r[i + 1], seg)
+        assert r[i] <= 0.5 * seg + 1e-9 and r[i + 1] <= 0.5 * seg + 1e-9, (i, r[i], r[i + 1], seg)
+    assert r[-1] == 0.0
 
 
 @pytest.mark.parametrize(

@@ -41,12 +41,15 @@ from workbench.motion.programs import (
     to_robot_program,
 )
 from workbench.motion.programs.controller_program import ReadProgram
+from workbench.motion.programs.urscript import blend_radii
 from workbench.project import load_project
 
 ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = sorted((ROOT / "projects").glob("*.json"))
 SIGNALS_BY = {"rapid": "name"}  # RAPID names its signals; the others number them
-CHECK_ARGS = {"ls": {"zone_tol": 1e-3}}  # FANUC's CNT has 1 mm steps (CNT1 is the least blend)
+# FANUC's CR has 1 mm steps (CR1 is the least blend); a blended joint move is CNT100, a speed
+# percentage with no radius: the replan gives those moves the plan's zones
+CHECK_ARGS = {"ls": {"zone_tol": 1e-3, "joint_zones": False}}
 
 
 def _workflows(path: Path) -> list[str]:
@@ -108,10 +111,11 @@ def _waits(actions: tuple) -> float:
 
 
 def _motion_program(
-    read: ReadProgram, model, fractions: dict[int, float]
+    read: ReadProgram, model, fractions: dict[int, float], zones: dict[int, float]
 ) -> tuple[Program, np.ndarray]:  # noqa: ANN001
     """Return the read program as the planner's moves (joint: re-solved joints, linear: the
-    pose in the base frame) and its tool's TCP."""
+    pose in the base frame) and its tool's TCP; `zones` replaces the read zones of moves whose
+    program states none (FANUC's CNT100 on a joint move)."""
     rp = to_robot_program(read, model)
     tools = {t.name for t in (rp.tool(m.tool) for m in rp.moves)}
     assert len(tools) == 1, f"one tool per program, got {tools}"
@@ -119,7 +123,8 @@ def _motion_program(
     for k, (mv, rm) in enumerate(zip(rp.moves, read.moves, strict=True)):
         if mv.kind == "joint":
             speed = rm.speed if rm.speed is not None else fractions[k]
-            moves.append(Move.joint(mv.target.q, speed=speed, zone=mv.zone, name=mv.name))
+            zone = zones.get(k, mv.zone)
+            moves.append(Move.joint(mv.target.q, speed=speed, zone=zone, name=mv.name))
         else:
             assert mv.kind == "linear", f"{mv.kind} moves are not planned by this test"
             T = rp.work_object(mv.wobj).T_base_wobj @ mv.target.T_wobj_tcp
@@ -127,7 +132,12 @@ def _motion_program(
     return Program(rp.name, tuple(moves)), rp.tool(rp.moves[0].tool).T_flange_tcp
 
 
-def _replan(read: ReadProgram, model, q_start: np.ndarray) -> float:  # noqa: ANN001
+def _replan(
+    read: ReadProgram,
+    model,  # noqa: ANN001
+    q_start: np.ndarray,
+    zones: dict[int, float] | None = None,
+) -> float:
     """Return the duration [s] of the read program planned again. A joint move stated only by
     a time (RAPID's \\T, URScript's t) runs, as the controller runs it, at the slowest speed
     fraction at which the planner takes that time (a short move limited by acceleration takes
@@ -135,7 +145,9 @@ def _replan(read: ReadProgram, model, q_start: np.ndarray) -> float:  # noqa: AN
     path (IK along the moves) does not depend on the fractions: it is planned once, and only
     the timed moves' speed limits change between the timings."""
     timed = {k: m.duration for k, m in enumerate(read.moves) if m.speed is None and m.duration}
-    program, T_flange_tcp = _motion_program(read, model, dict.fromkeys(range(len(read.moves)), 1.0))
+    program, T_flange_tcp = _motion_program(
+        read, model, dict.fromkeys(range(len(read.moves)), 1.0), zones or {}
+    )
     path = plan_program(model, program, q_start, model.max_velocity, T_flange_tcp=T_flange_tcp)
     vmax = np.asarray(model.max_velocity, float)
     seg_move = path.move_index[1:]  # the move each segment (waypoint k -> k + 1) belongs to
@@ -181,10 +193,16 @@ def test_exported_program_reads_back_and_replans(project: str, workflow: str, fm
             read,
             model,
             signals_by=SIGNALS_BY.get(fmt, "number"),
+            zones=blend_radii(program) if fmt == "urscript" else None,
             **CHECK_ARGS.get(fmt, {}),
         )
         planned = program.cycle_time
-        replanned = _replan(read, model, starts[program.name]) + _waits(read.actions())
+        unstated = (
+            {k: m.zone for k, m in enumerate(program.moves) if m.kind == "joint"}
+            if fmt == "ls"
+            else {}
+        )
+        replanned = _replan(read, model, starts[program.name], unstated) + _waits(read.actions())
         assert abs(replanned - planned) <= 0.01 * planned, (program.name, replanned, planned)
         pulses = [a for a in program.actions() if isinstance(a, PulseOutput)]
         assert len(pulses) == len([a for a in read.actions() if isinstance(a, PulseOutput)])

@@ -22,6 +22,7 @@ from workbench.motion.programs.formats import (
     write_programs,
     write_samples,
 )
+from workbench.motion.programs.names import controller_model
 from workbench.project.program_io import motion_limits, tool_data, work_objects
 from workbench.service import program_edit
 from workbench.service.motion_plan import MotionPlan, robot_program
@@ -151,7 +152,22 @@ def export(
     if fmt in SAMPLE_FORMATS:
         return write_samples(fmt, _samples(workflow, plan))
     written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
-    return write_programs(fmt, written)
+    return write_programs(fmt, written, models=robot_models(wb, written))
+
+
+def robot_models(wb: Workbench, programs: list[RobotProgram]) -> list[str]:
+    """Return each program's robot model as its controller names it (`controller_model` of the
+    library title, e.g. 'MZ07'; a DH or URDF robot: its name): the assembly's further arms by
+    their preset, every other program by the project robot's."""
+    project = wb.project
+    presets = {project.robot.name: project.robot.preset}
+    if project.assembly is not None:
+        presets.update({r.name: r.preset for r in project.assembly.robots})
+    out = []
+    for p in programs:
+        preset = presets.get(p.robot, project.robot.preset)
+        out.append(controller_model(library_robot(preset).title if preset else p.robot))
+    return out
 
 
 def controller_programs(

@@ -41,7 +41,8 @@ def test_sample_program_reads_back() -> None:
 
 def test_program_number_and_unit() -> None:
     prog, _ = sample_program(name="cell_12")
-    assert list(write_nachi(prog).files) == ["r1-01-A.012"]
+    # program 001 whatever the program's name (the name's digits are not a program number)
+    assert list(write_nachi(prog).files) == ["r1-01-A.001"]
     assert list(write_nachi(prog, unit="MZ07L-01-A", number=5).files) == ["MZ07L-01-A.005"]
     with pytest.raises(InputError, match="unit"):
         write_nachi(prog, unit="MZ 07")
