@@ -30,6 +30,7 @@ from workbench.motion.programs.controller_program import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.first_move import FIRST_MOVE_SPEED, safe_start
 from workbench.motion.programs.readback import solve_moves
 
 DEG = np.pi / 180.0
@@ -157,6 +158,8 @@ def check_read_back(
       cut so that they never overlap, `urscript.blend_radii`).
     """
     assert not read.unknown, f"the reader did not understand: {read.unknown}"
+    # every post writes the first move safe (untimed, bounded speed, exact stop): compare with that
+    program = safe_start(program)
     planned, got = program.moves, read.moves
     assert [m.kind for m in got] == [m.kind for m in planned]
     joints = solve_moves(read, model)
@@ -184,7 +187,10 @@ def check_read_back(
             assert abs(rm.zone - zone) < zone_tol, (where, rm.zone, zone)
         else:
             assert rm.zone == 0.0, (where, rm.zone)
-        if check_durations and rm.duration is not None:
+        if k == 0:  # reached from anywhere: no stated time; a stated speed is the bounded one
+            assert rm.duration is None, (where, rm.duration)
+            assert rm.speed is None or rm.speed <= FIRST_MOVE_SPEED + 1e-9, (where, rm.speed)
+        elif check_durations and rm.duration is not None:
             assert abs(rm.duration - mv.duration) <= 0.01 * mv.duration + 1e-3, where
         elif check_speeds:
             assert rm.speed is not None, where

@@ -38,10 +38,12 @@ from workbench.motion.programs import (
     reader,
     to_robot_program,
 )
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.nachi import unit_name, write_nachi
+from workbench.motion.programs.readback import in_robot_base
 from workbench.motion.programs.urscript import blend_radii
 from workbench.project import load_project
-from workbench.service.programs import latest_plan, robot_models
+from workbench.service.programs import convention_of, latest_plan, robot_models
 
 ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = sorted((ROOT / "projects").glob("*.json"))
@@ -73,12 +75,16 @@ def _model(wb: Workbench, workflow: str, program: RobotProgram):  # noqa: ANN202
     return wb.assembly.arms[program.robot].setup.model if workflow == "assembly" else wb.robot
 
 
-def _sample_sets(workflow: str, plan) -> list[tuple[np.ndarray, np.ndarray]]:  # noqa: ANN001
-    """Return the plan's (times [s], joints [rad]) sample sets: one per robot."""
+def _sample_sets(wb: Workbench, workflow: str, plan) -> list[tuple[np.ndarray, np.ndarray]]:  # noqa: ANN001
+    """Return the plan's (times [s], joints [rad]) sample sets, one per robot, in the robot's
+    controller convention (what the samples state, as the pendant shows joints)."""
     if workflow == "assembly":
-        return [(np.asarray(m.times), np.asarray(m.joints)) for m in plan.motions.values()]
+        return [
+            (np.asarray(m.times), convention_of(wb, name).to_controller(np.asarray(m.joints)))
+            for name, m in plan.motions.items()
+        ]
     q = plan.positions if hasattr(plan, "positions") else plan.joints  # a MotionPlan: positions
-    return [(np.asarray(plan.times), np.asarray(q))]
+    return [(np.asarray(plan.times), wb.robot.convention.to_controller(np.asarray(q)))]
 
 
 def _signal_names(program: RobotProgram) -> set[str]:
@@ -114,10 +120,16 @@ def test_example_exports_and_reads_back(
         written = out.write_to(tmp_path)
         assert len(written) == len(out.files)
         load = load_csv if fmt == "csv" else load_json
-        expected = _sample_sets(workflow, plan)
+        expected = _sample_sets(wb, workflow, plan)
         assert len(written) == len(expected)
         for path in written:
             t, q = load(path)
+            head = path.read_text().splitlines()[0] if fmt == "csv" else path.read_text()
+            assert (
+                ("J1 controller [rad]" in head)
+                if fmt == "csv"
+                else ('"joints": "controller"' in head)
+            )
             assert any(
                 t.shape == t0.shape
                 and np.allclose(t, t0, atol=1e-6)
@@ -142,6 +154,8 @@ def test_example_exports_and_reads_back(
             assert out.files.get(name) == text, f"{name}: the export differs from the post's"
         names |= set(own)
         read = read_fn(own)
+        if fmt == "rapid":  # MultiMove: the tasks' work objects are in the shared world
+            read = in_robot_base(read, program.T_world_base)
         check_read_back(
             program,
             read,
@@ -149,7 +163,7 @@ def test_example_exports_and_reads_back(
             signals_by="name" if fmt == "rapid" else "number",
             zone_tol=1e-3 if fmt == "ls" else 1e-4,
             joint_zones=fmt != "ls",
-            zones=blend_radii(program) if fmt == "urscript" else None,
+            zones=blend_radii(safe_start(program)) if fmt == "urscript" else None,
         )
         if fmt == "urscript":
             _check_ur_blends(read, _model(wb, workflow, program))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from workbench.errors import InputError, PlanningError
+from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.robot_library import LibraryRobot, library_robot
 from workbench.motion.programs.controller_base import in_controller_base
 from workbench.motion.programs.controller_program import RobotProgram
@@ -101,6 +102,17 @@ def _samples(workflow: str, plan: Any) -> list[tuple[str, Any, Any]]:
     return [(workflow, plan.times, plan.joints)]
 
 
+def convention_of(wb: Workbench, robot: str) -> JointConvention:
+    """Return the joint convention of the robot named `robot` (an assembly cell's further arm
+    by its preset; any other name: the project's robot), for samples in the controller's
+    values."""
+    assembly = wb.project.assembly
+    for r in assembly.robots if assembly is not None else ():
+        if r.name == robot and r.name != wb.project.robot.name:
+            return library_robot(r.preset).convention
+    return wb.robot.convention
+
+
 def library_entry(wb: Workbench) -> LibraryRobot | None:
     """Return the robot library's record of the project's robot (None: a DH or URDF robot)."""
     preset = wb.project.robot.preset
@@ -150,7 +162,8 @@ def export(
             " force=True (--force) to write it anyway"
         )
     if fmt in SAMPLE_FORMATS:
-        return write_samples(fmt, _samples(workflow, plan))
+        samples = _samples(workflow, plan)
+        return write_samples(fmt, samples, [convention_of(wb, name) for name, _, _ in samples])
     written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
     return write_programs(fmt, written, models=robot_models(wb, written))
 

@@ -62,7 +62,7 @@ def test_written_program_reads_as_a_fanuc_programmer_expects() -> None:
     assert body[first_move - 2 : first_move + 1] == [
         "  UTOOL_NUM=1 ;",
         "  UFRAME_NUM=1 ;",
-        "J P[1] 60% FINE ;",
+        "J P[1] 10% FINE ;",  # the first move: at most 10 %, untimed
     ]
     assert "J P[2] 50% CNT100 ;" in body and "L P[3] 250mm/sec FINE ;" in body
     # circular: via on the numbered line, end on FANUC's continuation line

@@ -65,13 +65,14 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
         "LOAD_DATA[1] = {M 2.5, CM {X 10.0000, Y 0.0000, Z 80.0000, A 0.0, B 0.0, C 0.0}, J {X 0.0, Y 0.0, Z 0.0}} ; tool gripper"
         in lines
     )
-    # tool, load and base selected before the first move; 60 % on every axis; PTP to E6AXIS
+    # tool, load and base selected before the first move; the first move (the BCO run) at
+    # 10 % on every axis (its plan said 60 %); PTP to E6AXIS
     i = lines.index("PTP Xhome_1")
     assert lines[i - 9 : i] == [
         "$TOOL = TOOL_DATA[1]",
         "$LOAD = LOAD_DATA[1]",
         "$BASE = BASE_DATA[1]",
-        *[f"$VEL_AXIS[{k}] = 60" for k in range(1, 7)],
+        *[f"$VEL_AXIS[{k}] = 10" for k in range(1, 7)],
     ]
     # the zone is a distance: $APO.CDIS [mm] with C_DIS on PTP too; $APO.CPTP (a % of the
     # machine datum $APO_DIS_PTP) is never written
@@ -317,7 +318,7 @@ def test_an_unknown_instruction_is_listed_by_line(written) -> None:  # noqa: ANN
 
 def test_whole_percents_and_a_note_when_rounding_changes_the_speed(sample) -> None:  # noqa: ANN001
     prog, _ = sample
-    out = write_krl(_with(prog, 1, speed=0.123))
+    out = write_krl(_with(prog, 2, speed=0.123))  # p_pick (the first move is made 10 %)
     assert "  $VEL_AXIS[1] = 12" in out.files["demo.src"]
     assert any("joint speed 12.3 % written as $VEL_AXIS 12 %" in n for n in out.notes)
 

@@ -59,7 +59,8 @@ def test_written_program_reads_as_a_ur_programmer_expects() -> None:
     assert lines[k + 1] == "set_payload(2.5, [0.01, 0.0, 0.08])"
     assert lines[k + 2 : k + 4] == [
         "# home, work object fixture",
-        "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], t=1.25, r=0.0)",
+        # the first move: no t= (reached from anywhere), 10 % of 180 deg/s
+        "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=0.314159265, r=0.0)",
     ]
     # a Cartesian joint move: the controller's IK nearest the planned (controller) joints
     pick = next(ln for ln in lines if ln.startswith("movej(get_inverse_kin("))
@@ -136,11 +137,14 @@ hand()
 
 def test_joint_move_without_a_planned_time_writes_its_speed() -> None:
     prog, model = sample_program()
-    prog = _with(prog, _first(prog, "joint"), duration=0.0)
+    last = max(
+        i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == "joint"
+    )
+    prog = _with(prog, last, duration=0.0)
     out = write_urscript(prog)
-    assert "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=1.884955592, r=0.0)" in out.text
+    assert "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=3.141592654, r=0.0)" in out.text
     read = read_urscript(out.files)
-    assert read.moves[0].speed == pytest.approx(0.6) and read.moves[0].duration is None
+    assert read.moves[-1].speed == pytest.approx(1.0) and read.moves[-1].duration is None
     check_read_back(prog, read, model, signals_by="number")
 
 

@@ -100,6 +100,7 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
 
 #: Words of FANUC's TP language (instructions, registers, operators) no name may take.
@@ -445,6 +446,7 @@ def write_ls(
     a zone over CNT100, a speed under 1 mm/sec), and for more tools or work objects than
     UTOOL 1..10 / UFRAME 1..9.
     """
+    program = safe_start(program)  # the first move: untimed, bounded speed
     check_program(program)
     if len(program.tools) > MAX_UTOOL or len(program.work_objects) > MAX_UFRAME:
         raise InputError(

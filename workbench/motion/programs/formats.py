@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
+from workbench.kinematics.joint_convention import JointConvention
 from workbench.motion.programs.controller_program import ReadProgram, RobotProgram
 from workbench.motion.programs.exported import ExportedProgram, merge_exports
 from workbench.motion.programs.fanuc import write_ls
@@ -102,14 +103,21 @@ def write_programs(
 
 
 def write_samples(
-    fmt: str, samples: Sequence[tuple[str, FloatArray, FloatArray]]
+    fmt: str,
+    samples: Sequence[tuple[str, FloatArray, FloatArray]],
+    conventions: Sequence[JointConvention] | None = None,
 ) -> ExportedProgram:
     """Return joint samples as `fmt` (csv, json): one file `<name>.<fmt>` per (name, times (N,)
-    [s], joints (N, dof) [rad]) triple."""
+    [s], model joints (N, dof) [rad]) triple, written in the controller's convention of the
+    same position in `conventions` (None: as given)."""
     check_format(fmt, SAMPLE_FORMATS)
     text = csv_text if fmt == "csv" else json_text
+    convs = list(conventions) if conventions is not None else [None] * len(samples)
     return merge_exports(
-        [ExportedProgram({name + SAMPLE_FORMATS[fmt]: text(t, q)}) for name, t, q in samples]
+        [
+            ExportedProgram({name + SAMPLE_FORMATS[fmt]: text(t, q, convention=c)})
+            for (name, t, q), c in zip(samples, convs, strict=True)
+        ]
     )
 
 

@@ -91,6 +91,7 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
 
 #: KRL keywords, data types and names of the controller's global data (compared
@@ -293,6 +294,11 @@ class _Writer:
 
     def _move(self, mv: MoveInstr, k: int, tool_no, base_no, state) -> list[str]:  # noqa: ANN001
         out: list[str] = []
+        if not state.get("moved"):  # `safe_start` made the first move a slow, untimed PTP
+            out.append(
+                "  ; BCO run: the first move, PTP at reduced velocity from where the robot stands"
+            )
+            state["moved"] = True
         tool = self.p.tool(mv.tool)
         if state.get("tool") != mv.tool:
             out.append(f"  $TOOL = TOOL_DATA[{tool_no[mv.tool]}]")
@@ -420,4 +426,4 @@ def write_krl(program: RobotProgram) -> ExportedProgram:
     docstring for the frames, Status/Turn, speeds, zones and I/O). Refuses (InputError naming
     the move) what `check_program` refuses; renamed identifiers are in `notes` and commented
     at the top of the .src."""
-    return _Writer(program).write()
+    return _Writer(safe_start(program)).write()

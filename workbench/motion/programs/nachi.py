@@ -79,6 +79,7 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable, controller_model, nachi_file_name
 
 RESERVED = (
@@ -307,6 +308,7 @@ def write_nachi(
     Raises InputError (naming the move) for what check_program refuses, for more than 7
     distinct blend zones, and for a sync point without its handshake signals.
     """
+    program = safe_start(program)  # the first move: untimed, bounded speed
     check_program(program)
     if program.dof != 6:
         raise InputError(

@@ -71,6 +71,7 @@ from workbench.motion.programs.controller_program import (
     check_program,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
 
 #: URScript keywords and the built-in functions and names a program must not shadow.
@@ -322,6 +323,7 @@ def write_urscript(program: RobotProgram) -> ExportedProgram:
     Raises InputError naming the move for what the controller should not be told
     (check_program), and naming the signal for an I/O number UR does not have.
     """
+    program = safe_start(program)  # the first move: untimed, bounded speed
     check_program(program)
     w = _Writer(program)
     w.frames()
