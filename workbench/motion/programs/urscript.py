@@ -26,7 +26,7 @@ Moves.
   planned joints the move ends in, for people and for the reader.
 - Blend radii ``r`` never overlap (`blend_radii`, UR's rule for blends: each r at most half
   of either segment it touches, so r_i + r_(i+1) <= the segment between the two waypoints);
-  a cut radius is noted (5 mm blends on the bending programs' 9.4 mm steps become 4.7 mm).
+  cut radii are noted (the bending programs' 5 mm blends on ~9.4 mm steps become ~4.7 mm).
 - Each move is preceded by ``# name`` (its target's name; a joint target adds ``, work
   object w``: the frame the plan moved in, which a joint target does not need).
 
