@@ -30,6 +30,7 @@ from workbench.motion.programs.controller_program import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.first_move import FIRST_MOVE_SPEED, safe_start
 from workbench.motion.programs.readback import solve_moves
 
 DEG = np.pi / 180.0
@@ -139,6 +140,8 @@ def check_read_back(
     check_durations: bool = True,
     check_speeds: bool = True,
     zone_tol: float = 1e-4,
+    joint_zones: bool = True,
+    zones: list[float] | None = None,
 ) -> None:
     """Assert that `read` (a reader's result on a post's output of `program`) is `program`:
 
@@ -148,9 +151,15 @@ def check_read_back(
       read target in its work object (0.01 mm, 0.01 deg);
     - the low-level actions equal the plan's, in order (signals compared by `signals_by`);
     - each move's duration (where the program states one) or speed equals the plan's;
-    - each zone equals the plan's within `zone_tol` [m] (FANUC's CNT has 1 mm steps: 1e-3).
+    - each zone equals the plan's within `zone_tol` [m] (FANUC's CR has 1 mm steps: 1e-3);
+      with `joint_zones` False (FANUC: a blended joint move is CNT100, a speed percentage
+      with no radius) a joint move reads as blended-of-no-size (0) exactly where it is blended;
+      `zones` [m] replaces the plan's zones where the post must write others (URScript's blends
+      cut so that they never overlap, `urscript.blend_radii`).
     """
     assert not read.unknown, f"the reader did not understand: {read.unknown}"
+    # every post writes the first move safe (untimed, bounded speed, exact stop): compare with that
+    program = safe_start(program)
     planned, got = program.moves, read.moves
     assert [m.kind for m in got] == [m.kind for m in planned]
     joints = solve_moves(read, model)
@@ -173,8 +182,15 @@ def check_read_back(
             assert T_read is not None, where
             assert np.linalg.norm(T_read[:3, 3] - T_planned[:3, 3]) < 1e-5, where
             assert _angle(T_read[:3, :3], T_planned[:3, :3]) < 0.01, where
-        assert abs(rm.zone - mv.zone) < zone_tol, (where, rm.zone, mv.zone)
-        if check_durations and rm.duration is not None:
+        zone = mv.zone if zones is None else zones[k]
+        if joint_zones or mv.kind != "joint":
+            assert abs(rm.zone - zone) < zone_tol, (where, rm.zone, zone)
+        else:
+            assert rm.zone == 0.0, (where, rm.zone)
+        if k == 0:  # reached from anywhere: no stated time; a stated speed is the bounded one
+            assert rm.duration is None, (where, rm.duration)
+            assert rm.speed is None or rm.speed <= FIRST_MOVE_SPEED + 1e-9, (where, rm.speed)
+        elif check_durations and rm.duration is not None:
             assert abs(rm.duration - mv.duration) <= 0.01 * mv.duration + 1e-3, where
         elif check_speeds:
             assert rm.speed is not None, where

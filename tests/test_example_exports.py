@@ -36,9 +36,14 @@ from workbench.motion.programs import (
     load_json,
     post,
     reader,
+    to_robot_program,
 )
+from workbench.motion.programs.first_move import safe_start
+from workbench.motion.programs.nachi import unit_name, write_nachi
+from workbench.motion.programs.readback import in_robot_base
+from workbench.motion.programs.urscript import blend_radii
 from workbench.project import load_project
-from workbench.service.programs import latest_plan
+from workbench.service.programs import convention_of, latest_plan, robot_models
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -63,12 +68,16 @@ def _model(wb: Workbench, workflow: str, program: RobotProgram):  # noqa: ANN202
     return wb.assembly.arms[program.robot].setup.model if workflow == "assembly" else wb.robot
 
 
-def _sample_sets(workflow: str, plan) -> list[tuple[np.ndarray, np.ndarray]]:  # noqa: ANN001
-    """Return the plan's (times [s], joints [rad]) sample sets: one per robot."""
+def _sample_sets(wb: Workbench, workflow: str, plan) -> list[tuple[np.ndarray, np.ndarray]]:  # noqa: ANN001
+    """Return the plan's (times [s], joints [rad]) sample sets, one per robot, in the robot's
+    controller convention (what the samples state, as the pendant shows joints)."""
     if workflow == "assembly":
-        return [(np.asarray(m.times), np.asarray(m.joints)) for m in plan.motions.values()]
+        return [
+            (np.asarray(m.times), convention_of(wb, name).to_controller(np.asarray(m.joints)))
+            for name, m in plan.motions.items()
+        ]
     q = plan.positions if hasattr(plan, "positions") else plan.joints  # a MotionPlan: positions
-    return [(np.asarray(plan.times), np.asarray(q))]
+    return [(np.asarray(plan.times), wb.robot.convention.to_controller(np.asarray(q)))]
 
 
 def _signal_names(program: RobotProgram) -> set[str]:
@@ -104,10 +113,16 @@ def test_example_exports_and_reads_back(
         written = out.write_to(tmp_path)
         assert len(written) == len(out.files)
         load = load_csv if fmt == "csv" else load_json
-        expected = _sample_sets(workflow, plan)
+        expected = _sample_sets(wb, workflow, plan)
         assert len(written) == len(expected)
         for path in written:
             t, q = load(path)
+            head = path.read_text().splitlines()[0] if fmt == "csv" else path.read_text()
+            assert (
+                ("J1 controller [rad]" in head)
+                if fmt == "csv"
+                else ('"joints": "controller"' in head)
+            )
             assert any(
                 t.shape == t0.shape
                 and np.allclose(t, t0, atol=1e-6)
@@ -118,21 +133,55 @@ def test_example_exports_and_reads_back(
     write, read_fn = post(fmt), reader(fmt)
     assert write is not None and read_fn is not None
     names: set[str] = set()
+    if fmt == "nachi":  # named <model>-<unit>-A.001: the unit is the robot's place in the cell
+        models = robot_models(wb, list(programs))
+        units = {
+            p.name: unit_name(m, k)
+            for k, (p, m) in enumerate(zip(programs, models, strict=True), 1)
+        }
+        write = lambda p: write_nachi(p, unit=units[p.name], number=1)  # noqa: E731
+        assert all(n.endswith("-A.001") and n.startswith("MZ07-0") for n in out.files), out.files
     for program in programs:
         own = write(program).files
         for name, text in own.items():
             assert out.files.get(name) == text, f"{name}: the export differs from the post's"
         names |= set(own)
         read = read_fn(own)
+        if fmt == "rapid":  # MultiMove: the tasks' work objects are in the shared world
+            read = in_robot_base(read, program.T_world_base)
         check_read_back(
             program,
             read,
             _model(wb, workflow, program),
             signals_by="name" if fmt == "rapid" else "number",
             zone_tol=1e-3 if fmt == "ls" else 1e-4,
+            joint_zones=fmt != "ls",
+            zones=blend_radii(safe_start(program)) if fmt == "urscript" else None,
         )
+        if fmt == "urscript":
+            _check_ur_blends(read, _model(wb, workflow, program))
         assert not read.unknown, read.unknown[:3]
     assert names == set(out.files), "the export holds files no program wrote (or misses some)"
+
+
+def _check_ur_blends(read, model) -> None:  # noqa: ANN001
+    """Brute force over a UR program as read back: every waypoint's TCP from FK of its joints
+    (the planned joints the reader returns), and for every pair of neighbouring blends
+    r_i + r_(i+1) <= the distance between waypoints i and i+1, each r at most half of either
+    segment it touches (UR's rule: blends never overlap)."""
+    rp = to_robot_program(read, model)
+    pts = []
+    for mv in rp.moves:
+        tool = rp.tool(mv.tool).T_flange_tcp
+        pts.append((model.fk(mv.target.q) @ tool)[:3, 3])
+        if mv.kind == "circular":
+            raise AssertionError("no circular moves in the examples' UR programs")
+    r = [m.zone for m in rp.moves]
+    for i in range(len(pts) - 1):
+        seg = float(np.linalg.norm(pts[i + 1] - pts[i]))
+        assert r[i] + r[i + 1] <= seg + 1e-9, (i, r[i], r[i + 1], seg)
+        assert r[i] <= 0.5 * seg + 1e-9 and r[i + 1] <= 0.5 * seg + 1e-9, (i, r[i], r[i + 1], seg)
+    assert r[-1] == 0.0
 
 
 @pytest.mark.parametrize(

@@ -80,7 +80,7 @@ def check_02_plan_and_export(capsys: pytest.CaptureFixture[str], tmp_path: Path)
     assert "MoveL" in (tmp_path / "pick_place.mod").read_text()
     assert (tmp_path / "pick_place.src").read_text().startswith("DEF pick_place")
     rows = (tmp_path / "pick_place.csv").read_text().splitlines()
-    assert rows[0].startswith("t [s],q1 [rad]") and len(rows) > 100
+    assert rows[0].startswith("t [s],J1 controller [rad]") and len(rows) > 100
     samples = json.loads((tmp_path / "pick_place.json").read_text())
     assert len(samples["t_s"]) == len(rows) - 1 == len(samples["q_rad"])
     for path in written:  # type: ignore[attr-defined]

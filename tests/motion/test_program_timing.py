@@ -4,19 +4,23 @@ straight move, polishing's blend radii, a near-zero first move, NACHI's file nam
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
+from program_round_trip import sample_program
 
 from workbench.kinematics import DHRobot
 from workbench.kinematics.robot_library import preset_robot
 from workbench.motion import Move, Program, plan_program, time_program
-from workbench.motion.programs.exported import ExportedProgram, merge_exports
+from workbench.motion.programs.formats import write_programs
 from workbench.motion.programs.from_plan import (
     FIT_TOLERANCE,
     fit_linear_speed,
     planner_durations,
 )
 from workbench.motion.programs.nachi import unit_name
+from workbench.motion.programs.names import controller_model, nachi_file_name
 from workbench.motion.trajectory import DUPLICATE_TOL
 from workbench.polishing.program import BLEND_LEVELS, BLEND_ZONE, corner_zones
 
@@ -88,10 +92,15 @@ def test_a_first_move_shorter_than_the_tolerance_is_no_move() -> None:
     assert near[0] == 0.0 and near[1] == pytest.approx(twin[0], rel=1e-6)
 
 
-def test_nachi_files_are_named_per_robot() -> None:
-    assert unit_name("MZ07") == "MZ07-01-A"
-    assert unit_name("MZ07_B") == "MZ07_B-01-A"
-    assert unit_name("robot 2") == "robot_2-01-A"
-    a = ExportedProgram({f"{unit_name('MZ07')}.001": "END\n"}, ())
-    b = ExportedProgram({f"{unit_name('MZ07_B')}.001": "END\n"}, ())
-    assert sorted(merge_exports([a, b]).files) == ["MZ07-01-A.001", "MZ07_B-01-A.001"]
+def test_nachi_files_are_named_model_unit_a_number() -> None:
+    """An FD controller lists programs as <model>-<unit>-A.<nnn>: the model, not the robot's
+    or the library's title (NACHI MZ07 and MZ07 are both MZ07); a cell's robots are units 01,
+    02, ... of one export, program 001 in every workflow."""
+    assert unit_name("MZ07") == "MZ07-01-A" == unit_name("NACHI MZ07")
+    assert unit_name("MZ07", 2) == "MZ07-02-A"
+    assert unit_name("robot 2") == "robot2-01-A"
+    assert nachi_file_name(controller_model("NACHI MZ07"), 1, 1) == "MZ07-01-A.001"
+    prog, _ = sample_program(name="assembly_MZ07")
+    other = dataclasses.replace(prog, name="assembly_MZ07_B", robot="MZ07_B")
+    files = write_programs("nachi", [prog, other], models=["MZ07", "MZ07"]).files
+    assert sorted(files) == ["MZ07-01-A.001", "MZ07-02-A.001"]

@@ -38,7 +38,8 @@ EXPECTED_FORMAT = {
     "ur5e": "urscript",
     "mz07": "nachi",
 }
-CHECK_ARGS = {"ls": {"zone_tol": 1e-3}}  # FANUC's CNT has 1 mm steps
+# FANUC: CR in 1 mm steps; a blended joint move is CNT100 (no radius stated)
+CHECK_ARGS = {"ls": {"zone_tol": 1e-3, "joint_zones": False}}
 
 
 def project(preset: str) -> dict:

@@ -35,7 +35,7 @@ from workbench.assembly.arm import AssemblyArm
 from workbench.assembly.part_moves import PartPlan
 from workbench.assembly.tasks import TaskPlan
 from workbench.errors import InputError
-from workbench.geometry.transforms import matrix_to_rpy
+from workbench.geometry.transforms import invert_transform, matrix_to_rpy
 from workbench.motion.programs.controller_program import (
     Comment,
     Instruction,
@@ -135,6 +135,7 @@ def assembly_programs(
         else given.get(n) or ToolData(f"{n}_tool", arms[n].setup.T_flange_tcp)
         for n in used
     }
+    world = next((a.setup.T_world_base for a in arms.values() if a.main), np.eye(4))
     ins: dict[str, list[Instruction]] = {n: [] for n in used}
     n_sync = 0
     for k, task in enumerate(tasks):
@@ -156,6 +157,9 @@ def assembly_programs(
             arms[n].setup.model.dof,
             n,
             settings.limits,
+            # MultiMove's shared world is the main arm's base (its wobj0)
+            invert_transform(np.asarray(world, float))
+            @ np.asarray(arms[n].setup.T_world_base, float),
         )
         for n in used
     ]

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from workbench.errors import InputError, PlanningError
+from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.robot_library import LibraryRobot, library_robot
 from workbench.motion.programs.controller_base import in_controller_base
 from workbench.motion.programs.controller_program import RobotProgram
@@ -22,6 +23,7 @@ from workbench.motion.programs.formats import (
     write_programs,
     write_samples,
 )
+from workbench.motion.programs.names import controller_model
 from workbench.project.program_io import motion_limits, tool_data, work_objects
 from workbench.service import program_edit
 from workbench.service.motion_plan import MotionPlan, robot_program
@@ -118,6 +120,17 @@ def _samples(workflow: str, plan: Any) -> list[tuple[str, Any, Any]]:
     return [(workflow, plan.times, plan.joints)]
 
 
+def convention_of(wb: Workbench, robot: str) -> JointConvention:
+    """Return the joint convention of the robot named `robot` (an assembly cell's further arm
+    by its preset; any other name: the project's robot), for samples in the controller's
+    values."""
+    assembly = wb.project.assembly
+    for r in assembly.robots if assembly is not None else ():
+        if r.name == robot and r.name != wb.project.robot.name:
+            return library_robot(r.preset).convention
+    return wb.robot.convention
+
+
 def library_entry(wb: Workbench) -> LibraryRobot | None:
     """Return the robot library's record of the project's robot (None: a DH or URDF robot)."""
     preset = wb.project.robot.preset
@@ -167,9 +180,25 @@ def export(
             " force=True (--force) to write it anyway"
         )
     if fmt in SAMPLE_FORMATS:
-        return write_samples(fmt, _samples(workflow, plan))
+        samples = _samples(workflow, plan)
+        return write_samples(fmt, samples, [convention_of(wb, name) for name, _, _ in samples])
     written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
-    return write_programs(fmt, written)
+    return write_programs(fmt, written, models=robot_models(wb, written))
+
+
+def robot_models(wb: Workbench, programs: list[RobotProgram]) -> list[str]:
+    """Return each program's robot model as its controller names it (`controller_model` of the
+    library title, e.g. 'MZ07'; a DH or URDF robot: its name): the assembly's further arms by
+    their preset, every other program by the project robot's."""
+    project = wb.project
+    presets = {project.robot.name: project.robot.preset}
+    if project.assembly is not None:
+        presets.update({r.name: r.preset for r in project.assembly.robots})
+    out = []
+    for p in programs:
+        preset = presets.get(p.robot, project.robot.preset)
+        out.append(controller_model(library_robot(preset).title if preset else p.robot))
+    return out
 
 
 def controller_programs(

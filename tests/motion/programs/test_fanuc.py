@@ -15,12 +15,12 @@ from workbench.kinematics.arm_configuration import ArmConfiguration
 from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.controller_program import MoveInstr, RobotProgram, WaitInput
 from workbench.motion.programs.fanuc import (
-    cnt_of_zone,
     config_text,
+    termination,
     turn_number,
     turn_range_deg,
     write_ls,
-    zone_of_cnt,
+    zone_of_termination,
 )
 from workbench.motion.programs.fanuc_read import controller_ranges, parse_config, read_ls
 
@@ -38,7 +38,7 @@ def test_sample_program_reads_back() -> None:
     assert list(out.files) == ["DEMO.ls"]
     read = read_ls(out.files)
     assert read.name == "DEMO"
-    check_read_back(prog, read, model, signals_by="number")
+    check_read_back(prog, read, model, signals_by="number", joint_zones=False)
     # the signal names travel in the I/O comments too
     assert [a.signal.name for a in read.actions() if hasattr(a, "signal")][:2] == [
         "do_grip",
@@ -62,9 +62,9 @@ def test_written_program_reads_as_a_fanuc_programmer_expects() -> None:
     assert body[first_move - 2 : first_move + 1] == [
         "  UTOOL_NUM=1 ;",
         "  UFRAME_NUM=1 ;",
-        "J P[1] 60% FINE ;",
+        "J P[1] 10% FINE ;",  # the first move: at most 10 %, untimed
     ]
-    assert "J P[2] 50% CNT20 ;" in body and "L P[3] 250mm/sec FINE ;" in body
+    assert "J P[2] 50% CNT100 ;" in body and "L P[3] 250mm/sec FINE ;" in body
     # circular: via on the numbered line, end on FANUC's continuation line
     k = body.index("C P[4]")
     assert body[k + 1] == "    :  P[5] 100mm/sec FINE ;"
@@ -132,16 +132,38 @@ def test_configuration_letters_hand_checked() -> None:
         parse_config("X U T, 0, 0, 0", "line 9")
 
 
-def test_cnt_maps_a_radius_in_mm_and_back() -> None:
-    assert cnt_of_zone(0.0, "m") == ("FINE", 0.0)
-    assert cnt_of_zone(0.02, "m") == ("CNT20", 0.02)
-    assert cnt_of_zone(0.0004, "m") == ("CNT1", 0.001)  # a blend stays a blend
-    for n in range(0, 101):
-        assert zone_of_cnt(f"CNT{n}") == pytest.approx(n / 1000)
+def test_blends_are_cr_in_mm_on_cartesian_moves_and_cnt100_on_joint_moves() -> None:
+    """FANUC operator's manual, "Motion options": CRy is the corner region in mm (0..1000),
+    LINEAR and CIRCULAR only; CNTn is the percentage of speed kept, not a distance."""
+    assert termination("linear", 0.0, "m") == ("FINE", 0.0)
+    assert termination("joint", 0.0, "m") == ("FINE", 0.0)
+    assert termination("linear", 0.02, "m") == ("CR20", 0.02)
+    assert termination("circular", 0.0004, "m") == ("CR1", 0.001)  # a blend stays a blend
+    # a joint move keeps its speed through a blended point: CNT100, whatever the zone
+    assert termination("joint", 0.002, "m") == ("CNT100", 0.002)
+    assert termination("joint", 0.2, "m") == ("CNT100", 0.2)
+    for n in range(0, 1001, 7):
+        assert zone_of_termination(f"CR{n}") == pytest.approx(n / 1000)
         if n:
-            assert cnt_of_zone(n / 1000, "m")[0] == f"CNT{n}"
-    with pytest.raises(InputError, match="move 3.*100 mm"):
-        cnt_of_zone(0.15, "move 3")
+            assert termination("linear", n / 1000, "m")[0] == f"CR{n}"
+    assert zone_of_termination("CNT0") == 0.0 and zone_of_termination("FINE") == 0.0
+    assert all(zone_of_termination(f"CNT{n}") is None for n in range(1, 101))
+    with pytest.raises(InputError, match="1000"):
+        termination("linear", 1.5, "move 3")
+    with pytest.raises(InputError, match="CR0..CR1000"):
+        zone_of_termination("CR1001")
+
+
+def test_polishing_like_blends_never_write_a_small_cnt() -> None:
+    """The old post wrote CNTn with n = the blend in mm (CNT2: the robot nearly stops at every
+    point); every blended point is now CR (mm) or CNT100."""
+    prog, _ = sample_program()
+    text = write_ls(prog).files
+    body = "\n".join(text.values())
+
+    for m in re.finditer(r"\bCNT(\d+)", body):
+        assert m.group(1) == "100", m.group(0)
+    assert re.search(r"\bCR\d+", body) or "CNT100" in body
 
 
 def test_rounded_zone_and_speed_are_noted() -> None:
@@ -169,7 +191,7 @@ def test_slow_speeds_use_cm_per_min_where_mm_per_sec_is_too_coarse() -> None:
     assert "L P[3] 226cm/min FINE ;" in out.text
     read = read_ls(out.files)
     assert read.moves[2].speed == pytest.approx(2.26 / 60)
-    check_read_back(prog, read, model, signals_by="number")
+    check_read_back(prog, read, model, signals_by="number", joint_zones=False)
 
 
 def test_manual_wait_example_and_hand_written_lines() -> None:
@@ -195,7 +217,9 @@ P[1:"HOME"]{
 """
     read = read_ls({"hand.ls": text})
     (mv,) = read.moves
-    assert mv.name == "HOME" and mv.speed == 1.0 and mv.zone == pytest.approx(0.05)
+    # CNT50 is a speed percentage, not a radius: no zone stated (0), noted
+    assert mv.name == "HOME" and mv.speed == 1.0 and mv.zone == 0.0
+    assert any("CNT50" in n and "not a radius" in n for n in read.notes)
     assert np.degrees(mv.target.joints) == pytest.approx([0, -30, 0, 0, -60, 0])
     assert (mv.tool, mv.wobj) == ("UTOOL0", "UFRAME0")
     waits = [a for a in read.actions() if isinstance(a, WaitInput)]

@@ -65,21 +65,23 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
         "LOAD_DATA[1] = {M 2.5, CM {X 10.0000, Y 0.0000, Z 80.0000, A 0.0, B 0.0, C 0.0}, J {X 0.0, Y 0.0, Z 0.0}} ; tool gripper"
         in lines
     )
-    # tool, load and base selected before the first move; 60 % on every axis; PTP to E6AXIS
+    # tool, load and base selected before the first move; the first move (the BCO run) at
+    # 10 % on every axis (its plan said 60 %); PTP to E6AXIS
     i = lines.index("PTP Xhome_1")
     assert lines[i - 9 : i] == [
         "$TOOL = TOOL_DATA[1]",
         "$LOAD = LOAD_DATA[1]",
         "$BASE = BASE_DATA[1]",
-        *[f"$VEL_AXIS[{k}] = 60" for k in range(1, 7)],
+        *[f"$VEL_AXIS[{k}] = 10" for k in range(1, 7)],
     ]
-    assert (
-        "$APO.CDIS = 20.0" in lines and "$APO.CPTP = 20" in lines and "PTP Xp_pick C_PTP" in lines
-    )
+    # the zone is a distance: $APO.CDIS [mm] with C_DIS on PTP too; $APO.CPTP (a % of the
+    # machine datum $APO_DIS_PTP) is never written
+    assert "$APO.CDIS = 20.0" in lines and "PTP Xp_pick C_DIS" in lines
+    assert not any("CPTP" in ln or "C_PTP" in ln for ln in lines)
     assert "$VEL.CP = 0.25" in lines and "LIN Xp_place" in lines
     assert "CIRC Xp_via, Xp_far" in lines and "LIN Xp_flip C_DIS" in lines
     g = lines.index("; gripper close")
-    assert lines[g + 1 : g + 10] == [
+    assert lines[g + 1 : g + 11] == [
         "$OUT[3] = TRUE ; do_grip",
         "$TIMER[1] = -2000 ; timeout 2.0 s",
         "$TIMER_STOP[1] = FALSE",
@@ -87,6 +89,7 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
         "$TIMER_STOP[1] = TRUE",
         "IF $TIMER_FLAG[1] THEN",
         "HALT ; $IN[4] (di_closed) not TRUE within 2.0 s",
+        "WAIT FOR $IN[4] ; di_closed: Start waits for it again",
         "ENDIF",
         "WAIT SEC 0.2",
     ]
@@ -235,10 +238,9 @@ ENDDAT
     assert np.allclose(
         lin.target.T_wobj_tcp[:3, :3], [[0, 0, 1], [0, 1, 0], [-1, 0, 0]], atol=1e-12
     )  # Ry(90)
-    assert (
-        lin.target.controller_ranges[4, 0] == pytest.approx(-2 * np.pi)
-        and lin.target.controller_ranges[0, 0] == 0.0
-    )
+    assert lin.target.controller_ranges[4, 0] == pytest.approx(
+        -2 * np.pi
+    ) and lin.target.controller_ranges[0, 0] == pytest.approx(-np.radians(1e-6), abs=1e-15)
     assert mv[3].target.name == "P1" and np.allclose(
         mv[3].target.T_wobj_tcp[:3, 3], [0.45, 0.01, 0.6]
     )
@@ -316,7 +318,7 @@ def test_an_unknown_instruction_is_listed_by_line(written) -> None:  # noqa: ANN
 
 def test_whole_percents_and_a_note_when_rounding_changes_the_speed(sample) -> None:  # noqa: ANN001
     prog, _ = sample
-    out = write_krl(_with(prog, 1, speed=0.123))
+    out = write_krl(_with(prog, 2, speed=0.123))  # p_pick (the first move is made 10 %)
     assert "  $VEL_AXIS[1] = 12" in out.files["demo.src"]
     assert any("joint speed 12.3 % written as $VEL_AXIS 12 %" in n for n in out.notes)
 
@@ -348,3 +350,47 @@ def test_two_targets_of_one_name_get_distinct_declarations(sample) -> None:  # n
     assert "DECL E6POS Xp_place" in decls and "DECL E6POS Xp_place_2" in decls
     assert any("two targets are named 'p_place'" in n for n in out.notes)
     check_read_back(bad, read_krl(out.files), model, signals_by="number")
+
+
+def _turn_twin(q_ctrl_deg: np.ndarray) -> int:
+    """Brute force: T bit i set when axis i+1, as the pendant shows it (rounded to the file's
+    6 decimals of a degree), is below 0."""
+    return sum(1 << i for i, x in enumerate(q_ctrl_deg) if float(f"{x:.6f}") < 0.0)
+
+
+def test_status_turn_counts_an_axis_within_1e_6_deg_of_zero_as_zero() -> None:
+    cfg = ArmConfiguration(True, True, False)
+    eps = np.radians(1e-9)
+    for q5 in (0.0, eps, -eps, np.radians(-1e-7)):
+        # exactly 0 and +-1e-9 deg (and -1e-7 deg) count as 0: no "< 0" bit anywhere
+        assert status_turn(cfg, np.full(6, q5)) == (2, 0), q5
+    # -1e-5 deg is below 0: A5 sets S bit 2, every axis its T bit
+    assert status_turn(cfg, np.full(6, np.radians(-1e-5))) == (6, 63)
+    rng = np.random.default_rng(5)
+    for _ in range(2000):
+        deg = rng.choice([0.0, 1e-9, -1e-9, 1e-7, -1e-7, -2e-6, 3e-6], 6) * rng.choice([1, 100], 6)
+        deg += rng.choice([0.0, 1.0], 6) * rng.uniform(-200, 200, 6)
+        s, t = status_turn(cfg, np.radians(deg))
+        assert t == _turn_twin(deg), deg
+        assert bool(s & 4) == (float(f"{deg[4]:.6f}") < 0.0), deg
+
+
+def test_a_timed_out_wait_waits_again_and_never_runs_on() -> None:
+    """After the timeout's HALT, Start resumes at the next statement: the post's next
+    statement waits for the same input again (no timer), so the program cannot go on with
+    the signal unconfirmed; the reader takes the block as the one timed wait."""
+    src = write_krl(sample_program()[0]).files["demo.src"]
+    lines = [ln.strip() for ln in src.splitlines()]
+    for i, ln in enumerate(lines):
+        if ln.startswith("IF $TIMER_FLAG"):
+            block = lines[i + 1 : lines.index("ENDIF", i)]
+            assert block[0].startswith("HALT") and block[1].startswith("WAIT FOR $IN[")
+            assert "TIMER" not in block[1]
+            # the re-wait is the same condition as the timed wait above it
+            cond = lines[i - 2].split(" OR ")[0]
+            assert block[1].split(" ;")[0] == cond
+    read = read_krl(write_krl(sample_program()[0]).files)
+    waits = [a for a in read.actions() if isinstance(a, WaitInput)]
+    timed = [a for a in sample_program()[0].actions() if isinstance(a, WaitInput)]
+    assert [w.timeout for w in waits] == [w.timeout for w in timed] and len(waits) == 2
+    assert not read.unknown

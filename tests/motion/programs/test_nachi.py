@@ -41,7 +41,8 @@ def test_sample_program_reads_back() -> None:
 
 def test_program_number_and_unit() -> None:
     prog, _ = sample_program(name="cell_12")
-    assert list(write_nachi(prog).files) == ["r1-01-A.012"]
+    # program 001 whatever the program's name (the name's digits are not a program number)
+    assert list(write_nachi(prog).files) == ["r1-01-A.001"]
     assert list(write_nachi(prog, unit="MZ07L-01-A", number=5).files) == ["MZ07L-01-A.005"]
     with pytest.raises(InputError, match="unit"):
         write_nachi(prog, unit="MZ 07")
@@ -65,7 +66,9 @@ def test_written_text_reads_like_a_nachi_program() -> None:
     for ln in lines:
         assert any(re.fullmatch(f, ln) for f in forms), ln
     # home: model (0, 0, 0, 0, -90, 0) deg is the pendant's upright (0, 90, 0, 0, 0, 0)
-    assert "M1J,P,(0.000000,90.000000,0.000000,0.000000,0.000000,0.000000),R=60.000,H=1" in text
+    assert (
+        "M1J,P,(0.000000,90.000000,0.000000,0.000000,0.000000,0.000000),R=10.000,H=1" in text
+    )  # the first move: at most 10 %
     # joint moves in % of the maximum, linear ones in mm/s; exact stop A=1P, blends by level
     assert "M1J,L,(-30.000000,100.000000" in text and "S=250.000,H=1" in text
     assert "' ACCURACY A=2 10.0000 mm" in text and "' ACCURACY A=3 20.0000 mm" in text

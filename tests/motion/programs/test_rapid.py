@@ -42,8 +42,10 @@ def test_sample_program_reads_back():
     check_read_back(prog, read, model, signals_by="name")
     assert read.name == "demo"
     # joint moves carry the planned time (\T), linear/circular moves the TCP speed
-    for mv, rm in zip(prog.moves, read.moves, strict=True):
-        if mv.kind == "joint":
+    for k, (mv, rm) in enumerate(zip(prog.moves, read.moves, strict=True)):
+        if k == 0:  # the first move: reached from anywhere, no \T
+            assert rm.duration is None and rm.speed is None
+        elif mv.kind == "joint":
             assert rm.duration == pytest.approx(mv.duration, abs=1e-9)
             assert rm.speed is None
         else:
@@ -82,7 +84,8 @@ def test_written_module_reads_as_an_abb_programmer_expects():
     assert 'PERS tasks task_list1{2}:=[["T_DEMO"],["T_OTHER"]];' in text
     assert "WaitSyncTask sync_1, task_list1;" in text
     # joint moves in the planned time, linear moves with a speeddata literal, zones
-    assert "MoveAbsJ home, v1000\\T:=1.25, fine, gripper\\WObj:=fixture;" in text
+    # the first move: no \T, 250 mm/s and 45 deg/s (reached from wherever the robot stands)
+    assert "MoveAbsJ home, [250,45,5000,1000], fine, gripper\\WObj:=fixture;" in text
     assert "MoveJ p_pick, v1000\\T:=0.9, z20, gripper\\WObj:=fixture;" in text
     assert "MoveL p_place, [250,500,5000,1000], fine, gripper\\WObj:=fixture;" in text
     assert "MoveC p_via, p_far, [100,500,5000,1000], fine, gripper\\WObj:=fixture;" in text

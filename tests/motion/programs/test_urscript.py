@@ -11,14 +11,19 @@ from program_round_trip import check_read_back, sample_program
 from scipy.spatial.transform import Rotation
 
 from workbench.errors import InputError
+from workbench.kinematics.arm_configuration import arm_configuration
+from workbench.kinematics.robot_library import preset_robot
 from workbench.motion.programs.controller_program import (
     MoveInstr,
     RobotProgram,
     SetOutput,
     Signal,
+    Target,
+    ToolData,
     WaitInput,
+    WorkObject,
 )
-from workbench.motion.programs.urscript import pose_text, write_urscript
+from workbench.motion.programs.urscript import blend_radii, pose_text, write_urscript
 from workbench.motion.programs.urscript_read import read_urscript, rotvec_matrix
 
 
@@ -54,7 +59,8 @@ def test_written_program_reads_as_a_ur_programmer_expects() -> None:
     assert lines[k + 1] == "set_payload(2.5, [0.01, 0.0, 0.08])"
     assert lines[k + 2 : k + 4] == [
         "# home, work object fixture",
-        "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], t=1.25, r=0.0)",
+        # the first move: no t= (reached from anywhere), 10 % of 180 deg/s
+        "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=0.314159265, r=0.0)",
     ]
     # a Cartesian joint move: the controller's IK nearest the planned (controller) joints
     pick = next(ln for ln in lines if ln.startswith("movej(get_inverse_kin("))
@@ -131,11 +137,14 @@ hand()
 
 def test_joint_move_without_a_planned_time_writes_its_speed() -> None:
     prog, model = sample_program()
-    prog = _with(prog, _first(prog, "joint"), duration=0.0)
+    last = max(
+        i for i, x in enumerate(prog.instructions) if isinstance(x, MoveInstr) and x.kind == "joint"
+    )
+    prog = _with(prog, last, duration=0.0)
     out = write_urscript(prog)
-    assert "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=1.884955592, r=0.0)" in out.text
+    assert "movej([0.0, 1.570796327, 0.0, 0.0, 0.0, 0.0], a=1.4, v=3.141592654, r=0.0)" in out.text
     read = read_urscript(out.files)
-    assert read.moves[0].speed == pytest.approx(0.6) and read.moves[0].duration is None
+    assert read.moves[-1].speed == pytest.approx(1.0) and read.moves[-1].duration is None
     check_read_back(prog, read, model, signals_by="number")
 
 
@@ -204,3 +213,70 @@ def test_malformed_files_name_the_line() -> None:
         read_urscript({"x.script": "movej([0,0,0,0,0,0])\n"})
     with pytest.raises(InputError, match="exactly one .script"):
         read_urscript({"x.ls": text})
+
+
+def _line_program(steps_mm: list[float], zones_mm: list[float]) -> RobotProgram:
+    """Linear moves along x through points `steps_mm` apart (Cartesian targets, base frame)."""
+    model = preset_robot("mz07")
+    q = np.radians([0, 90, 0, 0, -90, 0])
+    tool = ToolData("t", np.eye(4))
+    x = np.cumsum([0.0, *steps_mm]) / 1000.0
+    moves = []
+    for k, (xi, z) in enumerate(zip(x, [0.0, *zones_mm], strict=True)):
+        T = np.eye(4)
+        T[:3, 3] = [0.4 + xi, 0.0, 0.3]
+        moves.append(
+            MoveInstr(
+                "linear",
+                Target(f"p{k}", q, T, arm_configuration(model, q)),
+                0.1,
+                z / 1000.0,
+                "t",
+                "base",
+            )
+        )
+    return RobotProgram(
+        "line", (tool,), (WorkObject("base", np.eye(4)),), tuple(moves), model.convention
+    )
+
+
+def _radii_twin(steps_mm: list[float], zones_mm: list[float]) -> list[float]:
+    """Brute force: for each waypoint, the largest r (0.001 mm grid) up to its zone that is at
+    most half of each segment it touches; the last waypoint and exact stops 0."""
+    zones = [0.0, *zones_mm]
+    out = []
+    for k, z in enumerate(zones):
+        if z <= 0 or k == len(zones) - 1:
+            out.append(0.0)
+            continue
+        segs = [steps_mm[k - 1]] if k > 0 else []
+        segs.append(steps_mm[k])
+        grid = np.arange(0.0, z + 1e-9, 0.001)
+        out.append(
+            float(
+                grid[np.all(grid[:, None] <= 0.5 * np.array(segs)[None, :] + 1e-12, axis=1)].max()
+            )
+        )
+    return out
+
+
+def test_blend_radii_never_overlap_against_a_brute_force_twin() -> None:
+    """UR: a blend may not overlap the next one (r_i + r_(i+1) <= the segment) nor reach past
+    half of a segment. 5 mm blends on 9.4 mm segments (the bending programs) become 4.7 mm."""
+    steps = [9.4] * 6
+    r = blend_radii(_line_program(steps, [5.0] * 6))
+    assert np.allclose(np.array(r) * 1000, [0, 4.7, 4.7, 4.7, 4.7, 4.7, 0])
+    rng = np.random.default_rng(3)
+    for _ in range(40):
+        n = int(rng.integers(2, 8))
+        steps = list(np.round(rng.uniform(0.5, 30.0, n), 3))
+        zones = list(np.round(rng.choice([0.0, 1.0, 5.0, 20.0], n) * rng.uniform(0.5, 1.5, n), 3))
+        got = np.array(blend_radii(_line_program(steps, zones))) * 1000
+        assert np.allclose(got, _radii_twin(steps, zones), atol=2e-3), (steps, zones)
+        for i in range(n):
+            assert got[i] + got[i + 1] <= steps[i] + 1e-6
+    # the script writes the cut radii and says so
+    out = write_urscript(_line_program([9.4] * 3, [5.0] * 3))
+    text = out.files["line.script"]
+    assert text.count("r=0.0047)") == 2 and "r=0.005)" not in text
+    assert any("no two blends overlap" in n for n in out.notes)

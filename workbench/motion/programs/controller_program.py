@@ -219,6 +219,10 @@ class RobotProgram:
     dof: int = 6
     robot: str = "robot"
     limits: MotionLimits = field(default_factory=MotionLimits)
+    T_world_base: FloatArray | None = None
+    """The robot's base (4, 4) [m] in the world its controller shares with other robots (an
+    assembly cell: the main robot's base, RAPID MultiMove's wobj0; each robot's work objects
+    are written in it); None: the program stands alone and its base is its controller's world."""
 
     @property
     def moves(self) -> tuple[MoveInstr, ...]:

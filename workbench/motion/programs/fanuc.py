@@ -39,14 +39,22 @@ and, for the letters and the turn-number boundaries, RoboDK's open FANUC post
 ``add_target_cartesian``: F from RoboDK's flip bit, D from its lower-elbow bit, B from its
 rear bit, ``angle_2_turn``). Our own code follows that rule; tests check hand-computed cases.
 
-Moves. ``J P[i] pct% FINE|CNTn`` (pct = the move's fraction of the joints' maximum speed, a
-whole percent 1..100), ``L P[i] v mm/sec FINE|CNTn`` (v a whole mm/sec, or whole cm/min where that is nearer),
-``C P[via]`` + ``:  P[end] v mm/sec FINE|CNTn`` (FANUC's circular move through P[via]). Zones: FANUC's CNT
-is not a radius (0..100 says how much of the corner the path may cut); this post states
-"CNTn = a blend radius of n mm": zone 0 -> FINE, a zone of z mm -> CNT round(z) (at least
-CNT1, at most CNT100: a zone over 100 mm is refused), and the reader inverts it (CNTn -> n
-mm), so whole-millimetre zones round-trip exactly; other zones are rounded to the mm, with a
-note. Speeds and pulse/wait times are rounded to the controller's steps (1 %; 1 mm/sec, or
+Moves. ``J P[i] pct% FINE|CNT100`` (pct = the move's fraction of the joints' maximum speed, a
+whole percent 1..100), ``L P[i] v mm/sec FINE|CRy`` (v a whole mm/sec, or whole cm/min where that is nearer),
+``C P[via]`` + ``:  P[end] v mm/sec FINE|CRy`` (FANUC's circular move through P[via]). Zones
+(FANUC operator's manual, "Motion options": CNT0..100 is the percentage of the speed kept
+through the point, not a distance; "Corner Region Termination Type (CRy)": y the corner
+region in mm, 0..1000, for LINEAR and CIRCULAR motion only, part of the Advanced Constant
+Path option with Corner Distance switched off, ``$czcdcfg.$cd_enable = FALSE``): zone 0 ->
+FINE; a linear or circular blend of z mm -> ``CR round(z)`` (at least CR1; over 1000 mm
+refused), which states the planned corner in mm whatever the speed; a joint move's blend ->
+``CNT100`` (CR has no joint form; the plan keeps the speed through a blended point). The
+Advanced Constant Path option is assumed: a controller without it refuses the program when
+it loads (loudly), where a CNT guessed from the zone would round every corner differently
+from the plan (CNTn with n = the zone in mm, as this post wrote before, made the polishing
+program nearly stop at each of its points). The reader reads CRy as y mm (whole-millimetre
+zones round-trip exactly, others are rounded with a note) and CNT1..100 as a blend of no
+stated radius (0, noted). Speeds and pulse/wait times are rounded to the controller's steps (1 %; 1 mm/sec, or
 1 cm/min = 1/6 mm/s where mm/sec is off by more than 0.5 % and cm/min is nearer; 0.1 s pulses, 0.01 s waits) with a note when that
 changes them (one note per kind with the largest change when there are more than three).
 
@@ -92,6 +100,7 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
 
 #: Words of FANUC's TP language (instructions, registers, operators) no name may take.
@@ -139,28 +148,44 @@ def config_text(configuration: ArmConfiguration, q_controller: np.ndarray) -> st
     return f"{' '.join(letters)}, {turns}"
 
 
-def cnt_of_zone(zone_m: float, where: str) -> tuple[str, float]:
-    """Return (FANUC termination, the zone it means [m]) for a blend radius [m]: FINE for 0,
-    else CNTn with n = the radius in whole mm (1..100; over 100 mm is refused naming `where`)."""
+CR_MAX_MM = 1000
+"""FANUC's corner region CRy takes y = 0..1000 mm (operator's manual, "Motion options",
+Corner Region Termination Type)."""
+
+
+def termination(kind: str, zone_m: float, where: str) -> tuple[str, float]:
+    """Return (FANUC termination, the zone it means [m]) of a move of `kind` with a blend
+    radius [m]: FINE for 0. A linear or circular move's blend is ``CRy``, the corner region in
+    whole mm (at least CR1, so a blend stays a blend; over 1000 mm refused naming `where`).
+    A joint move's blend is ``CNT100``: CR supports only Cartesian motion, and CNT is the
+    percentage of the speed kept through the point, not a distance; the plan keeps its speed
+    through a blended point, so 100 (the rounding is then the controller's; the zone it means
+    is the plan's)."""
     if zone_m <= 0.0:
         return "FINE", 0.0
+    if kind == "joint":
+        return "CNT100", zone_m
     mm = zone_m * 1000.0
-    if mm > 100.0 + 1e-9:
+    if mm > CR_MAX_MM + 1e-9:
         raise InputError(
-            f"{where}: zone {mm:g} mm is over FANUC's CNT100 (= 100 mm here); lower the zone"
+            f"zone {mm:g} mm is over FANUC's largest corner region CR{CR_MAX_MM}; lower the zone",
+            field=where,
         )
-    n = max(1, min(100, int(math.floor(mm + 0.5))))
-    return f"CNT{n}", n / 1000.0
+    n = max(1, min(CR_MAX_MM, int(math.floor(mm + 0.5))))
+    return f"CR{n}", n / 1000.0
 
 
-def zone_of_cnt(term: str) -> float:
-    """Return the blend radius [m] of a FANUC termination FINE or CNTn (the inverse of `cnt_of_zone`)."""
-    t = term.strip().upper()
+def zone_of_termination(term: str) -> float | None:
+    """Return the blend radius [m] of a FANUC termination: FINE 0, CRy y mm (the inverse of
+    `termination`), CNT0 0; None for CNT1..CNT100 (a percentage of speed: no radius)."""
+    t = term.strip().upper().replace(" ", "")
     if t == "FINE":
         return 0.0
+    if t.startswith("CR") and t[2:].isdigit() and 0 <= int(t[2:]) <= CR_MAX_MM:
+        return int(t[2:]) / 1000.0
     if t.startswith("CNT") and t[3:].isdigit() and 0 <= int(t[3:]) <= 100:
-        return int(t[3:]) / 1000.0
-    raise InputError(f"termination {term!r} is not FINE or CNT0..CNT100")
+        return 0.0 if int(t[3:]) == 0 else None
+    raise InputError(f"termination {term!r} is not FINE, CNT0..CNT100 or CR0..CR{CR_MAX_MM}")
 
 
 def _n(x: float, nd: int) -> str:
@@ -310,7 +335,7 @@ class _Writer:
     def move(self, k: int, mv: MoveInstr) -> None:
         where = move_label(self.p, k, mv)
         ut, uf = self.select(mv)
-        term, z = cnt_of_zone(mv.zone, where)
+        term, z = termination(mv.kind, mv.zone, where)
         self.rounded(where, "zone", mv.zone * 1000.0, z * 1000.0, "mm")
         if mv.kind == "joint":
             pct = max(1, min(100, int(math.floor(mv.speed * 100.0 + 0.5))))
@@ -421,6 +446,7 @@ def write_ls(
     a zone over CNT100, a speed under 1 mm/sec), and for more tools or work objects than
     UTOOL 1..10 / UFRAME 1..9.
     """
+    program = safe_start(program)  # the first move: untimed, bounded speed
     check_program(program)
     if len(program.tools) > MAX_UTOOL or len(program.work_objects) > MAX_UFRAME:
         raise InputError(

@@ -4,7 +4,7 @@ into a `ReadProgram`.
 Read: /PROG name; in /MN the frame lines (``PR[k]=LPOS-LPOS``, ``PR[k,j]=v``,
 ``UTOOL[n]=PR[k]``, ``UFRAME[m]=PR[k]``, named by the comments ``!UTOOL[n]: name`` /
 ``!UFRAME[m]: name``, mass and cog from ``!UTn mass ... kg`` / ``!UTn cog x,y,z mm``),
-``UTOOL_NUM`` / ``UFRAME_NUM``, ``J P[i] pct% FINE|CNTn``, ``L P[i] v mm/sec|cm/min FINE|CNTn``,
+``UTOOL_NUM`` / ``UFRAME_NUM``, ``J P[i] pct% FINE|CNTn``, ``L P[i] v mm/sec|cm/min FINE|CRy|CNTn``,
 ``C P[via]`` + ``: P[end] v mm/sec ...``, ``DO[n]=ON|OFF``, ``DO[n]=PULSE,t sec``,
 ``$WAITTMOUT=k`` + ``WAIT DI[n]=ON|OFF TIMEOUT,LBL[j]`` (timeout k/100 s; FANUC's default
 3000 = 30 s when the program does not set it), ``WAIT DI[n]=ON|OFF``, ``WAIT t(sec)``,
@@ -17,7 +17,8 @@ frame the program sets or uses (a number the program uses but does not set is re
 identity, with a note: its value lives in the controller); Cartesian targets with their
 `ArmConfiguration` (F/N, U/D, T/B) and controller joint ranges from the turn numbers of J1,
 J4, J6 (`fanuc.turn_range_deg`; `select_solution` takes them half-open, so a joint on a
-boundary is found in one turn only); zones CNTn -> n mm (`fanuc.zone_of_cnt`). Lines it does not understand are in
+boundary is found in one turn only); zones CRy -> y mm, CNT1..100 -> a blend of no stated radius, read as 0 with a note
+(`fanuc.zone_of_termination`). Lines it does not understand are in
 `unknown`; a malformed line raises InputError naming it.
 """
 
@@ -45,13 +46,13 @@ from workbench.motion.programs.controller_program import (
     WaitTime,
     WorkObject,
 )
-from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_cnt
+from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_termination
 
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 DEFAULT_WAITTMOUT = 3000  # 1/100 s, FANUC's default $WAITTMOUT
 
 _IO = r"\[\s*(\d+)\s*(?::([^\]]*))?\]"
-_TERM = r"(FINE|CNT\s*\d+)"
+_TERM = r"(FINE|CNT\s*\d+|CR\s*\d+)"
 _PATTERNS = {
     "utool_num": re.compile(r"UTOOL_NUM\s*=\s*(\d+)$", re.I),
     "uframe_num": re.compile(r"UFRAME_NUM\s*=\s*(\d+)$", re.I),
@@ -308,7 +309,13 @@ class _LsReader:
         """Read a move to P[i]; text after its termination goes to `unknown`."""
         tgt = self.target(i, no)
         p = self.positions[int(i)]
-        zone = zone_of_cnt(term.replace(" ", ""))
+        zone = zone_of_termination(term)
+        if zone is None:
+            self.notes.append(
+                f"line {no}: {term.replace(' ', '')} is a percentage of the speed kept through"
+                " P[" + i + "], not a radius: read as a blend of no stated size (zone 0)"
+            )
+            zone = 0.0
         mv = ReadMove(kind, tgt, speed, zone, f"UTOOL{p.ut}", f"UFRAME{p.uf}", None, via, no)  # type: ignore[arg-type]
         self.items.append((no, mv))
         if rest:

@@ -15,13 +15,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from workbench.errors import InputError
+from workbench.kinematics.joint_convention import JointConvention
 from workbench.motion.programs.controller_program import ReadProgram, RobotProgram
 from workbench.motion.programs.exported import ExportedProgram, merge_exports
 from workbench.motion.programs.fanuc import write_ls
 from workbench.motion.programs.fanuc_read import read_ls
 from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
-from workbench.motion.programs.nachi import write_nachi
+from workbench.motion.programs.nachi import unit_name, write_nachi
 from workbench.motion.programs.nachi_read import read_nachi
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
@@ -77,26 +78,46 @@ def reader(fmt: str) -> Callable[[dict[str, str]], ReadProgram]:
     return _READERS[check_format(fmt, PROGRAM_FORMATS)]
 
 
-def write_programs(fmt: str, programs: Sequence[RobotProgram]) -> ExportedProgram:
+def write_programs(
+    fmt: str, programs: Sequence[RobotProgram], *, models: Sequence[str] | None = None
+) -> ExportedProgram:
     """Return the robot programs (one per robot) written as `fmt` (rapid, krl, ls, urscript,
     nachi): every program's files, and the posts' notes. Posts refuse (InputError naming the
-    move) what the robot cannot be told."""
+    move) what the robot cannot be told. NACHI files are named as the controller lists them,
+    ``<model>-<unit>-A.001`` (`names.nachi_file_name`): `models` the robots' model names
+    (default: `names.controller_model` of each program's robot), units 01, 02, ... in the
+    programs' order, program number 001 in every workflow."""
     check_format(fmt, PROGRAM_FORMATS)
     if not programs:
         raise InputError("there is no robot program to write")
+    if fmt == "nachi":
+        names = list(models) if models is not None else [p.robot for p in programs]
+        return merge_exports(
+            [
+                write_nachi(p, unit=unit_name(m, k), number=1)
+                for k, (p, m) in enumerate(zip(programs, names, strict=True), 1)
+            ]
+        )
     write = post(fmt)
     return merge_exports([write(p) for p in programs])
 
 
 def write_samples(
-    fmt: str, samples: Sequence[tuple[str, FloatArray, FloatArray]]
+    fmt: str,
+    samples: Sequence[tuple[str, FloatArray, FloatArray]],
+    conventions: Sequence[JointConvention] | None = None,
 ) -> ExportedProgram:
     """Return joint samples as `fmt` (csv, json): one file `<name>.<fmt>` per (name, times (N,)
-    [s], joints (N, dof) [rad]) triple."""
+    [s], model joints (N, dof) [rad]) triple, written in the controller's convention of the
+    same position in `conventions` (None: as given)."""
     check_format(fmt, SAMPLE_FORMATS)
     text = csv_text if fmt == "csv" else json_text
+    convs = list(conventions) if conventions is not None else [None] * len(samples)
     return merge_exports(
-        [ExportedProgram({name + SAMPLE_FORMATS[fmt]: text(t, q)}) for name, t, q in samples]
+        [
+            ExportedProgram({name + SAMPLE_FORMATS[fmt]: text(t, q, convention=c)})
+            for (name, t, q), c in zip(samples, convs, strict=True)
+        ]
     )
 
 

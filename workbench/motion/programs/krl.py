@@ -22,15 +22,16 @@ with no INI fold and no BAS/ILF calls, every setting explicit:
   percent (at least 1); where that changes it by more than 1 % (fractions under 50 % that
   are not whole percents) the export says so in its notes. Linear and circular moves set
   `$VEL.CP` [m/s] (6 decimals).
-- Zones: `$APO.CDIS` [mm] with `C_DIS` on LIN/CIRC; a PTP sets `$APO.CDIS` (used when a CP
-  move follows) and `$APO.CPTP` [%, of the machine datum $APO_DIS_PTP, which the program does
-  not know: 1 % per mm of the zone, 1..100] with `C_PTP`. 0 = exact stop (no flag).
+- Zones: `$APO.CDIS` [mm] with `C_DIS`, on LIN, CIRC and PTP alike (the zone is a distance;
+  `$APO.CPTP` is a percentage of the machine datum $APO_DIS_PTP, an axis angle the program
+  does not know, so it is never written). 0 = exact stop (no flag).
 - I/O: `$OUT[n] = TRUE/FALSE` (an advance-run stop: it switches when the robot is at the
   point), `PULSE($OUT[n], TRUE, t)`, `WAIT FOR $IN[n]` / `WAIT FOR NOT $IN[n]`, `WAIT SEC t`.
   A wait with a timeout uses KUKA's timer pattern: `$TIMER[1] = -ms`, `$TIMER_STOP[1] =
   FALSE`, `WAIT FOR $IN[n] OR $TIMER_FLAG[1]` ($TIMER_FLAG[1] turns TRUE when the timer
-  reaches 0), `$TIMER_STOP[1] = TRUE`, `IF $TIMER_FLAG[1] THEN HALT ENDIF` (timer 1 is used;
-  its resolution is 1 ms). A gripper action is its expanded actions under a `; gripper
+  reaches 0), `$TIMER_STOP[1] = TRUE`, `IF $TIMER_FLAG[1] THEN HALT, WAIT FOR $IN[n] ENDIF`
+  (timer 1 is used; its resolution is 1 ms): a timed-out wait stops the robot with a message,
+  and Start resumes at the re-wait, so the program never runs on with the signal unconfirmed. A gripper action is its expanded actions under a `; gripper
   close`/`; gripper open` comment; a sync point is an I/O handshake under `; sync point NAME:
   robots A, B`: `$OUT[out] = TRUE`, `WAIT FOR $IN[in]`, `$OUT[out] = FALSE`.
 
@@ -55,6 +56,8 @@ isg-stuttgart.de/fileadmin/kernel/kernel-html/en-GB/814171275.html):
 - S bit 2 = 1: A5 < 0 (wrist flipped); 0: A5 >= 0. This is `configuration.wrist_flip`, the
   sign of the controller's J5 (A5 within +-180 deg).
 - T bit i (i = 0..5) = 1 when the controller's axis i+1 is < 0 deg, 0 when >= 0.
+- "< 0" for S bit 2 and T: below -1e-6 deg (`ZERO_TOL`); an axis within 1e-6 deg of 0 is 0,
+  as the 6-decimal file and the pendant show it (a planned -1e-12 deg is "0.000000").
 
 Numbers: mm and deg with 6 decimals (KUKA's own .dat files carry about 9 significant
 digits): re-solving a target gives the planned joints within 1e-6 rad even near a singularity
@@ -88,6 +91,7 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
 
 #: KRL keywords, data types and names of the controller's global data (compared
@@ -115,13 +119,28 @@ TIMEOUT_TIMER = 1
 _MAX_TOOLS, _MAX_BASES = 16, 32  # TOOL_DATA[1..16], BASE_DATA[1..32] (KSS 8)
 
 
+ZERO_TOL = np.radians(1e-6)
+"""An axis within 1e-6 deg of 0 counts as 0 (>= 0) for the Status and Turn bits: the file
+writes 6 decimals of a degree, so a planned -1e-12 deg is 0.000000 on the pendant, and a
+"< 0" bit from floating-point noise would send the controller to another turn or wrist."""
+
+
+def is_negative(angle_rad: float) -> bool:
+    """Return True when a controller axis counts as < 0 for KUKA's Status/Turn bits: below
+    -`ZERO_TOL` (1e-6 deg); values within 1e-6 deg of 0 count as 0, which is >= 0."""
+    return bool(float(angle_rad) < -ZERO_TOL)
+
+
 def status_turn(configuration, q_ctrl) -> tuple[int, int]:  # noqa: ANN001
-    """Return KUKA's (Status, Turn) of a Cartesian target: S from its `ArmConfiguration`
-    (bit 0 overhead = not front, bit 1 = elbow up, bit 2 = wrist flip), T from the controller
-    joints `q_ctrl` (6,) [rad] (bit i set when axis i+1 < 0). See the module docstring."""
+    """Return KUKA's (Status, Turn) of a Cartesian target: S bits 0 and 1 from its
+    `ArmConfiguration` (bit 0 overhead = not front, bit 1 = elbow up), bit 2 (A5 < 0) and T
+    from the controller joints `q_ctrl` (6,) [rad] (T bit i set when axis i+1 < 0), an axis
+    within 1e-6 deg of 0 counted as 0 (`is_negative`). KUKA's definitions: KSS 8 expert
+    programming manual, "Status" and "Turn" (the module docstring quotes them)."""
+    q = np.asarray(q_ctrl, float)
     s = (0 if configuration.front else 1) | (2 if configuration.elbow_up else 0)
-    s |= 4 if configuration.wrist_flip else 0
-    t = sum(1 << i for i, x in enumerate(np.asarray(q_ctrl, float)) if x < 0.0)
+    s |= 4 if is_negative(q[4]) else 0
+    t = sum(1 << i for i, x in enumerate(q) if is_negative(x))
     return s, t
 
 
@@ -275,6 +294,11 @@ class _Writer:
 
     def _move(self, mv: MoveInstr, k: int, tool_no, base_no, state) -> list[str]:  # noqa: ANN001
         out: list[str] = []
+        if not state.get("moved"):  # `safe_start` made the first move a slow, untimed PTP
+            out.append(
+                "  ; BCO run: the first move, PTP at reduced velocity from where the robot stands"
+            )
+            state["moved"] = True
         tool = self.p.tool(mv.tool)
         if state.get("tool") != mv.tool:
             out.append(f"  $TOOL = TOOL_DATA[{tool_no[mv.tool]}]")
@@ -306,12 +330,12 @@ class _Writer:
             if state.get("cdis") != cdis:
                 out.append(f"  $APO.CDIS = {cdis}")
                 state["cdis"] = cdis
-            if mv.kind == "joint":
-                cptp = max(1, min(100, int(round(mm))))
-                if state.get("cptp") != cptp:
-                    out.append(f"  $APO.CPTP = {cptp}")
-                    state["cptp"] = cptp
-            flag = " C_PTP" if mv.kind == "joint" else " C_DIS"
+            # every blend is a distance [mm]: $APO.CDIS with C_DIS, on PTP too. $APO.CPTP is a
+            # percentage of the machine datum $APO_DIS_PTP (an axis angle), not a distance, so
+            # the post never writes it (KSS 8 expert programming manual, "Approximate
+            # positioning": C_PTP uses $APO.CPTP [%], C_DIS $APO.CDIS [mm]; KSS 8's inline
+            # forms write PTP ... C_DIS, robot-forum.com thread 14422)
+            flag = " C_DIS"
         if mv.kind == "circular":
             assert mv.via is not None
             via = self.target(mv.via, f"p{k}_via")
@@ -378,6 +402,9 @@ class _Writer:
             f"  $TIMER_STOP[{k}] = TRUE",
             f"  IF $TIMER_FLAG[{k}] THEN",
             f"    HALT ; $IN[{n}] ({a.signal.name}) not {_bool(a.value)} within {_compact(ms / 1000.0, 3)} s",
+            # HALT stops the program and Start resumes it at the next statement (KSS 8 expert
+            # programming manual, "HALT"): wait again there, never continue unconfirmed
+            f"    WAIT FOR {cond} ; {a.signal.name}: Start waits for it again",
             "  ENDIF",
         ]
 
@@ -399,4 +426,4 @@ def write_krl(program: RobotProgram) -> ExportedProgram:
     docstring for the frames, Status/Turn, speeds, zones and I/O). Refuses (InputError naming
     the move) what `check_program` refuses; renamed identifiers are in `notes` and commented
     at the top of the .src."""
-    return _Writer(program).write()
+    return _Writer(safe_start(program)).write()

@@ -10,13 +10,14 @@
   E6AXIS/AXIS aggregate keeps the previous joint target's other axes, as the controller does.
 - `PTP`, `LIN`, `CIRC aux, end` with `C_PTP`/`C_DIS` (`C_VEL`/`C_ORI` noted), speeds from
   `$VEL_AXIS[i]` [%] and `$VEL.CP` [m/s], zones from `$APO.CDIS` [mm] (a PTP zone given only
-  by `$APO.CPTP` is read at 1 mm per %, the post's own mapping, with a note);
+  by `$APO.CPTP`, a % of the machine datum $APO_DIS_PTP, has no distance: an exact stop, noted);
 - `$TOOL`/`$BASE`/`$LOAD` = `TOOL_DATA[n]`/`BASE_DATA[n]`/`LOAD_DATA[n]` (their values from
   `TOOL_DATA[n] = {...}` lines; a trailing "; tool NAME" / "; base NAME" comment names
   them), `{FRAME: ...}`/`{X ...}` literals, declared FRAME variables or `$NULLFRAME`;
 - `$OUT[n] = TRUE/FALSE`, `PULSE($OUT[n], TRUE, t)`, `WAIT SEC t`, `WAIT FOR [NOT] $IN[n]`
   (also `$IN[n] == TRUE`), and the timer pattern `write_krl` uses for a timeout
-  (`$TIMER[k] = -ms`, `WAIT FOR ... OR $TIMER_FLAG[k]`, `IF $TIMER_FLAG[k] THEN HALT ENDIF`);
+  (`$TIMER[k] = -ms`, `WAIT FOR ... OR $TIMER_FLAG[k]`, `IF $TIMER_FLAG[k] THEN HALT` and
+  the re-wait `WAIT FOR ...` `ENDIF`);
 - the `; sync point NAME: robots A, B` handshake back into a `SyncPoint`; comments, folds
   (`;FOLD`/`;ENDFOLD` are comments) and `&` header lines are skipped, and the motion settings
   `write_krl` states explicitly ($ADVANCE, $IPO_MODE = #BASE, $ORI_TYPE, $CIRC_TYPE,
@@ -24,8 +25,8 @@
 
 Cartesian targets come back with their `ArmConfiguration` from Status (bit 0 set: overhead,
 not front; bit 1: elbow up; bit 2: A5 < 0, wrist flip) and controller joint ranges from Turn
-(bit i set: axis i+1 in [-360, 0) deg, else [0, 360), half-open: an axis at exactly 0 is not
-also taken at 360, where its range allows both); see `krl.py` for the definitions and
+(bit i set: axis i+1 in [-360, 0) deg, else [-1e-6 deg, 360): the post counts an axis within
+1e-6 deg of 0 as 0; half-open, an axis at 0 is not also taken at 360, where its range allows both); see `krl.py` for the definitions and
 sources. Every other line (BAS/ILF calls, other declarations, relative moves, subroutines)
 is listed in `unknown` as (line, text), lines of the `.dat` as (line, "name.dat: text").
 A `.src` that uses a target its `.dat` would declare, without that `.dat`, is an InputError
@@ -55,6 +56,7 @@ from workbench.motion.programs.controller_program import (
     WaitTime,
     WorkObject,
 )
+from workbench.motion.programs.krl import ZERO_TOL
 from workbench.motion.programs.program_text import split_comment, split_top
 
 _I = re.IGNORECASE
@@ -308,7 +310,9 @@ class _Reader:
             if re.fullmatch(r"ENDIF", code, _I):
                 st.in_timeout_if = None
                 return True
-            return bool(re.fullmatch(r"HALT", code, _I))
+            # HALT, then the post's re-wait for the same input (no timer): part of the timed wait
+            w = _WAIT_FOR.match(code)
+            return bool(re.fullmatch(r"HALT", code, _I) or (w and w.group(4) is None))
         if _SETTING.match(code):
             return True
         m = _VEL_AXIS.match(code)
@@ -530,8 +534,9 @@ class _Reader:
             )
         if "T" in agg:
             t = int(_float(agg, "T", where))
+            # the post counts an axis within ZERO_TOL (1e-6 deg) of 0 as >= 0
             ranges = np.array(
-                [[-_TURN, 0.0] if t & (1 << i) else [0.0, _TURN] for i in range(6)],
+                [[-_TURN, 0.0] if t & (1 << i) else [-ZERO_TOL, _TURN] for i in range(6)],
                 float,
             )
             if cfg is not None and bool(t & 16) != cfg.wrist_flip:
@@ -569,9 +574,9 @@ class _Reader:
             if st.cdis is not None:
                 zone = st.cdis / 1000.0
             elif approx == "C_PTP" and st.cptp is not None:
-                zone = st.cptp / 1000.0
                 self.notes.append(
-                    f"{where}: PTP zone given only as $APO.CPTP {st.cptp:g} %; read as {st.cptp:g} mm"
+                    f"{where}: PTP zone given only as $APO.CPTP {st.cptp:g} % (of the machine"
+                    " datum $APO_DIS_PTP, not a distance); read as an exact stop"
                 )
             else:
                 self.notes.append(f"{where}: {approx} without $APO.CDIS; read as an exact stop")

@@ -1,9 +1,10 @@
 """NACHI FD post-processor: one program file `<unit>.<nnn>` of MOVEX lines and I/O instructions.
 
 The preset robot (NACHI MZ07) runs on an FD11/FD controller. A program is a numbered file, e.g.
-``MZ07-01-A.001`` (robot unit name, "-A", a three-digit program number; the stem is the robot's
-name and unit 01, `unit_name`, so each robot of a cell gets its own file), one instruction a
-line, ending with ``END``. What is written, and where each form comes from:
+``MZ07-01-A.001`` as the controller lists it: ``<model>-<unit>-A.<nnn>``, the robot model
+(`names.controller_model`), the unit number (01; `formats.write_programs` numbers a cell's
+robots 01, 02, ...) and the program number (001 in every workflow), one instruction a line,
+ending with ``END``. What is written, and where each form comes from:
 
 Confirmed by a public source (forms seen in two or more independent writers):
 
@@ -78,7 +79,8 @@ from workbench.motion.programs.controller_program import (
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
-from workbench.motion.programs.names import NameTable
+from workbench.motion.programs.first_move import safe_start
+from workbench.motion.programs.names import NameTable, controller_model, nachi_file_name
 
 RESERVED = (
     "MOVE",
@@ -183,8 +185,7 @@ def _joints_text(program: RobotProgram, target: Target) -> str:
 
 def _number(program: RobotProgram, number: int | None) -> int:
     if number is None:
-        m = re.search(r"(\d+)$", program.name)
-        number = int(m.group(1)) % 1000 if m else 1
+        number = 1  # the same for every workflow (not the program name's digits: MZ07 -> 007)
     if not 0 <= number <= 999:
         raise InputError(f"program {program.name}: NACHI program number {number} must be 0..999")
     return number
@@ -290,13 +291,11 @@ class _Writer:
         return head
 
 
-def unit_name(robot: str) -> str:
-    """Return the file-name stem ``<robot>-01-A`` of a robot's program: the robot's name (the
-    controller's robot model name, e.g. MZ07; characters other than letters, digits, '-' and '_'
-    become '_'), unit 01 (one arm per FD controller), "-A". Two robots of a cell, each on its
-    own controller, so get files of their own names (``MZ07-01-A.001``, ``MZ07_B-01-A.001``)."""
-    stem = re.sub(r"[^A-Za-z0-9_-]", "_", robot) or "MZ07"
-    return f"{stem if stem[0].isalnum() else 'R' + stem}-01-A"
+def unit_name(robot: str, unit: int = 1) -> str:
+    """Return the file-name stem ``<model>-<unit>-A`` of a robot's program as an FD controller
+    lists it: the robot's model (`names.controller_model`: 'NACHI MZ07' and 'MZ07' both give
+    MZ07), the unit number in two digits (01: the first mechanism), "A"."""
+    return nachi_file_name(controller_model(robot), unit, 0).rsplit(".", 1)[0]
 
 
 def write_nachi(
@@ -305,10 +304,11 @@ def write_nachi(
     """Return the NACHI FD program file ``<unit>.<nnn>`` of `program` (see the module docstring).
 
     `unit` is the file-name stem (default `unit_name(program.robot)`, e.g. ``MZ07-01-A``);
-    `number` is the program number (default: the program name's trailing digits, else 1).
+    `number` is the program number (default 1: every workflow's program is ``<unit>.001``).
     Raises InputError (naming the move) for what check_program refuses, for more than 7
     distinct blend zones, and for a sync point without its handshake signals.
     """
+    program = safe_start(program)  # the first move: untimed, bounded speed
     check_program(program)
     if program.dof != 6:
         raise InputError(

@@ -64,3 +64,33 @@ class NameTable:
         self._names[src] = ident
         self._used.add(self._key(ident))
         return ident
+
+
+_VENDOR_WORDS = ("NACHI", "ABB", "KUKA", "FANUC", "UNIVERSAL ROBOTS")
+
+
+def controller_model(title: str) -> str:
+    """Return a robot's model name as its controller lists it in file names: the robot's title
+    without the vendor's name ('NACHI MZ07' -> 'MZ07', 'MZ07' -> 'MZ07'), spaces dropped and
+    any other character that is not a letter, digit or '_' made '_' (so '-' only separates
+    the parts of a NACHI file name). An empty or odd name gives 'ROBOT'."""
+    text = " ".join(str(title).split())
+    for vendor in _VENDOR_WORDS:
+        if text.upper().startswith(vendor + " "):
+            text = text[len(vendor) + 1 :]
+            break
+    model = re.sub(r"[^A-Za-z0-9_]", "_", text.replace(" ", ""))
+    if not model or not model[0].isalnum():
+        model = "ROBOT" + model
+    return model
+
+
+def nachi_file_name(model: str, unit: int, number: int) -> str:
+    """Return a NACHI FD program's file name as the controller lists it,
+    ``<model>-<unit>-A.<nnn>``: the robot model, the unit (mechanism) number in two digits,
+    "A", and the three-digit program number (RoboDK's NACHI posts write ``MZ07L-01-A.001``)."""
+    if not 1 <= int(unit) <= 99:
+        raise ValueError(f"NACHI unit number {unit} must be 1..99")
+    if not 0 <= int(number) <= 999:
+        raise ValueError(f"NACHI program number {number} must be 0..999")
+    return f"{model}-{int(unit):02d}-A.{int(number):03d}"

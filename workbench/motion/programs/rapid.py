@@ -86,6 +86,11 @@ from workbench.motion.programs.controller_program import (
     check_program,
 )
 from workbench.motion.programs.exported import ExportedProgram
+from workbench.motion.programs.first_move import (
+    FIRST_MOVE_ORI_SPEED,
+    FIRST_MOVE_TCP_SPEED,
+    safe_start,
+)
 from workbench.motion.programs.names import NameTable
 
 # ABB's predefined zones (TCP path radius in mm); other radii become zonedata literals.
@@ -226,6 +231,7 @@ class _Writer:
         self.task_lists: dict[tuple[str, ...], str] = {}
         self.syncs: dict[str, str] = {}
         self.notes: list[str] = []
+        self.moved = self.first_move = False
 
     def _declare(self, name: str, fallback: str, text_of, group: str = "") -> str:  # noqa: ANN001
         """Return the identifier of a datum (`text_of(ident)` its declaration); a different
@@ -265,12 +271,22 @@ class _Writer:
     def wobj(self, name: str) -> str:
         if name not in self.wobjs:
             w = self.p.work_object(name)
-            if _is_identity(w.T_base_wobj):
+            T, label = w.T_base_wobj, w.name
+            world = self.p.T_world_base
+            if world is not None and not _is_identity(world):
+                # MultiMove: one world for every task (wobj0); this robot's base lies elsewhere
+                # in it, so its work objects are written in the world: uframe = the base in the
+                # world times the frame in the base (RAPID reference, wobjdata: uframe "in the
+                # world coordinate system"); its base itself is a declared work object
+                T = np.asarray(world, float) @ np.asarray(T, float)
+                if _is_identity(w.T_base_wobj):
+                    label = f"{self.p.robot}_base"
+            if _is_identity(T):
                 self.wobjs[name] = "wobj0"
             else:
-                frame = _pose(w.T_base_wobj)
+                frame = _pose(T)
                 self.wobjs[name] = self._declare(
-                    w.name,
+                    label,
                     "wobj",
                     lambda i: (
                         f'    {self.pers} wobjdata {i}:=[FALSE,TRUE,"",{frame},[[0,0,0],[1,0,0,0]]];'
@@ -301,6 +317,8 @@ class _Writer:
         return self._declare(name, "sig", lambda i: f"signal {name}")
 
     def move(self, mv: MoveInstr) -> None:
+        self.first_move = not self.moved
+        self.moved = True
         tool, wobj = self.tool(mv.tool), self.wobj(mv.wobj)
         zone = zonedata(mv.zone)
         tail = f"{zone}, {tool}\\WObj:={wobj};"
@@ -309,7 +327,15 @@ class _Writer:
         if mv.kind == "joint":
             instr = "MoveJ" if mv.target.cartesian else "MoveAbsJ"
             speed = _JOINT_SPEED
-            if mv.duration > 0.0:
+            if self.first_move:
+                # reached from wherever the robot stands: no \T (the RAPID reference, MoveJ
+                # and MoveAbsJ: \T "the total time ... the robot moves", whatever the
+                # distance), the TCP and reorientation speeds bounded instead
+                speed = (
+                    f"[{_num(FIRST_MOVE_TCP_SPEED * 1000.0, 1)},{_num(FIRST_MOVE_ORI_SPEED, 1)},"
+                    "5000,1000]"
+                )
+            elif mv.duration > 0.0:
                 speed += f"\\T:={_num(mv.duration, 4)}"
             else:
                 self.notes.append(
@@ -414,6 +440,7 @@ def write_rapid(program: RobotProgram) -> ExportedProgram:
         replace(t, mass=_TOOL0_LOAD[0], cog=_TOOL0_LOAD[1]) if _is_flange(t) else t
         for t in program.tools
     )
+    program = safe_start(program)  # the first move: no \T, a bounded speed
     check_program(replace(program, tools=loaded), needs_mass=True)
     w = _Writer(program)
     text, notes = w.text()

@@ -123,3 +123,15 @@ def to_robot_program(
         robot,
         limits or MotionLimits(),
     )
+
+
+def in_robot_base(read: ReadProgram, T_world_base: FloatArray | None) -> ReadProgram:
+    """Return `read` with its work objects moved from the controller's world into the robot's
+    base (`inv(T_world_base) @ uframe`): a MultiMove task's work objects are in the shared
+    world (RAPID's wobjdata uframe), the robot's model in its own base. None or the identity:
+    `read` itself."""
+    if T_world_base is None or np.allclose(T_world_base, np.eye(4), atol=1e-12, rtol=0.0):
+        return read
+    T_base_world = invert_transform(np.asarray(T_world_base, float))
+    wobjs = tuple(WorkObject(w.name, T_base_world @ w.T_base_wobj) for w in read.work_objects)
+    return ReadProgram(read.name, read.tools, wobjs, read.instructions, read.unknown, read.notes)

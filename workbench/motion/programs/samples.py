@@ -1,4 +1,10 @@
-"""Sampled joint trajectories as CSV and JSON (seconds, radians and degrees) that load back."""
+"""Sampled joint trajectories as CSV and JSON (seconds, radians and degrees) that load back.
+
+Exported samples are in the robot controller's joint convention (`JointConvention`: what the
+pendant, the project file and every program show): `csv_text(..., convention=c)` writes
+`c.to_controller(q)` and says so in the column headers (`J1 controller [rad]`) and in JSON's
+`"joints": "controller"`. Without a convention the values are written as given, headed
+`q1 [rad]` (`"joints": "as given"`). The loaders return the values as written."""
 
 from __future__ import annotations
 
@@ -12,6 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from workbench.atomic_file import atomic_write_text
 from workbench.errors import InputError
+from workbench.kinematics.joint_convention import JointConvention
 
 FORMAT = "workbench.joint_samples"
 
@@ -28,20 +35,32 @@ def _check(
     return t, q
 
 
-def _header(dof: int) -> list[str]:
+def _header(dof: int, controller: bool) -> list[str]:
+    col = (lambda k, u: f"J{k} controller [{u}]") if controller else (lambda k, u: f"q{k} [{u}]")
     return (
         ["t [s]"]
-        + [f"q{k} [rad]" for k in range(1, dof + 1)]
-        + [f"q{k} [deg]" for k in range(1, dof + 1)]
+        + [col(k, "rad") for k in range(1, dof + 1)]
+        + [col(k, "deg") for k in range(1, dof + 1)]
     )
 
 
-def csv_text(times: ArrayLike, positions: ArrayLike) -> str:
-    """Return samples as CSV text: t [s], q1..qn [rad], q1..qn [deg]; floats round-trip exactly."""
+def _controller(q: NDArray[np.float64], convention: JointConvention | None) -> NDArray[np.float64]:
+    if convention is None:
+        return q
+    return np.asarray(convention.to_controller(q), float).reshape(q.shape)
+
+
+def csv_text(
+    times: ArrayLike, positions: ArrayLike, *, convention: JointConvention | None = None
+) -> str:
+    """Return samples as CSV text: t [s], J1..Jn [rad], J1..Jn [deg]; floats round-trip
+    exactly. `positions` are model joints; with `convention` they are written as the
+    controller's (`J1 controller [rad]` ...), else as given (`q1 [rad]` ...)."""
     t, q = _check(times, positions)
+    q = _controller(q, convention)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(_header(q.shape[1]))
+    w.writerow(_header(q.shape[1], convention is not None))
     for ti, qi, di in zip(t, q, np.degrees(q), strict=True):
         w.writerow([repr(float(ti)), *(repr(float(x)) for x in qi), *(f"{x:.6f}" for x in di)])
     return buf.getvalue()
@@ -67,12 +86,17 @@ def load_csv(path: str | Path) -> tuple[NDArray[np.float64], NDArray[np.float64]
     return data[:, 0].copy(), data[:, 1:].reshape(len(rows) - 1, len(rad))
 
 
-def json_text(times: ArrayLike, positions: ArrayLike) -> str:
-    """Return samples as JSON text with keys t_s, q_rad and q_deg (lists of rows)."""
+def json_text(
+    times: ArrayLike, positions: ArrayLike, *, convention: JointConvention | None = None
+) -> str:
+    """Return samples as JSON text with keys t_s, q_rad and q_deg (lists of rows); with
+    `convention` the joints are the controller's (`"joints": "controller"`)."""
     t, q = _check(times, positions)
+    q = _controller(q, convention)
     doc = {
         "format": FORMAT,
         "version": 1,
+        "joints": "controller" if convention is not None else "as given",
         "units": {"t_s": "s", "q_rad": "rad", "q_deg": "deg"},
         "t_s": t.tolist(),
         "q_rad": q.tolist(),

@@ -179,7 +179,7 @@ MODULE assembly_MZ07
 
     PROC main()
         ! task 1: plate_a
-        MoveJ t1_approach, v1000\T:=0.4545, fine, gripper\WObj:=wobj0;
+        MoveJ t1_approach, [250,45,5000,1000], fine, gripper\WObj:=wobj0;
         MoveL t1_pick, [579.9643,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;

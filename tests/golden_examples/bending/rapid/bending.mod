@@ -36,7 +36,7 @@ MODULE bending
         WaitDI vacuum_ok, 1\MaxTime:=2;
         WaitTime 0.3;
         ! bend 'b23' (step 1)
-        MoveJ b1_approach, v1000\T:=0.4455, fine, suction_gripper\WObj:=wobj0;
+        MoveJ b1_approach, [250,45,5000,1000], fine, suction_gripper\WObj:=wobj0;
         MoveL b1_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         PulseDO \High\PLength:=0.2, press_start;
         WaitDI press_done, 1\MaxTime:=30;

@@ -15,7 +15,7 @@ MODULE pick_place
 
     PROC main()
         ! pick a part from the left fixture, place it on the right one
-        MoveJ above_left, v1000\T:=0.3449, z20, gripper\WObj:=wobj0;
+        MoveJ above_left, [250,45,5000,1000], fine, gripper\WObj:=wobj0;
         MoveL pick, [150,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;

@@ -385,7 +385,7 @@ MODULE polish
         ! polishing: contact force F = 20 N through the contact stiffness k = 5000 N/m: process targets offset D = F/k = 4.000 mm into the surface along the tool axis
         ! path: 1221 planned points as 373 linear moves within 0.05 mm (chord) and 0.5 deg (tool axis); feed 40 mm/s
         ! TCP speed 40.79 mm/s: the feed 40 mm/s, scaled so that the moves take the planned 95.23 s
-        MoveJ approach, v1000\T:=0.4503, fine, polishing_spindle\WObj:=workpiece;
+        MoveJ approach, [250,45,5000,1000], fine, polishing_spindle\WObj:=workpiece;
         ! process: press with F = 20 N (offset D = 4.000 mm)
         MoveL p3, [40.7905,500,5000,1000], fine, polishing_spindle\WObj:=workpiece;
         MoveL p9, [40.7905,500,5000,1000], [FALSE,2,3,3,0.3,3,0.3], polishing_spindle\WObj:=workpiece;
