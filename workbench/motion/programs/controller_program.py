@@ -183,14 +183,17 @@ class Comment:
 class SyncPoint:
     """Wait here until every robot in `robots` (program names) reaches the sync point `name`.
 
-    RAPID writes WaitSyncTask; languages without task sync use an I/O handshake: set `output`
-    high, wait for `input` high (the partner's output), then set `output` low.
+    RAPID writes WaitSyncTask; languages without task sync use the four-phase I/O handshake
+    of `sync_handshake` on `output` and `input` (the partner's output), which the robot whose
+    name sorts first leads; `lead` (set by the readers from the file) says whether this
+    program leads.
     """
 
     name: str
     robots: tuple[str, ...]
     output: Signal | None = None
     input: Signal | None = None
+    lead: bool | None = None
 
 
 Action = SetOutput | PulseOutput | WaitInput | WaitTime | Gripper | Comment | SyncPoint
