@@ -17,6 +17,7 @@ from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MoveInstr,
+    PressSignals,
     PulseOutput,
     Signal,
     WaitInput,
@@ -25,7 +26,7 @@ from workbench.motion.programs.krl import write_krl
 from workbench.motion.programs.krl_read import read_krl
 from workbench.motion.programs.rapid import write_rapid
 from workbench.motion.programs.rapid_read import read_rapid
-from workbench.pressbrake.program import PRESS_DONE, PRESS_START, bending_program
+from workbench.pressbrake.program import bending_program
 from workbench.project.program_io import program_settings
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -45,8 +46,9 @@ def planned() -> tuple:
         base,
         close=CLOSE,
         open=OPEN,
-        outputs={PRESS_START: Signal("do_bend_start", 5)},
-        inputs={PRESS_DONE: Signal("di_bend_done", 6)},
+        press=PressSignals(
+            Signal("do_bend_start", 5), Signal("di_clamped", 7), Signal("di_bend_done", 6), 20.0
+        ),
     )
     prog = bending_program(plan, wb.setup, wb.bending.si(), settings, wb.joints)
     return wb, plan, prog
@@ -89,9 +91,16 @@ def test_actions_in_order(planned: tuple) -> None:
         i = next(
             i for i, x in enumerate(ins) if isinstance(x, MoveInstr) and x.name == f"b{k + 1}_bend"
         )
-        assert isinstance(ins[i + 1], PulseOutput) and ins[i + 1].signal.name == "do_bend_start"
-        assert isinstance(ins[i + 2], WaitInput) and ins[i + 2].signal.name == "di_bend_done"
-        assert isinstance(ins[i + 3], MoveInstr) and ins[i + 3].name == f"b{k + 1}_retreat"
+        # start held until the press clamps, then the ram back at top dead centre: no pulse
+        got = [(type(x).__name__, x.signal.name, x.value) for x in ins[i + 1 : i + 5]]  # type: ignore[union-attr]
+        assert got == [
+            ("SetOutput", "do_bend_start", True),
+            ("WaitInput", "di_clamped", True),
+            ("SetOutput", "do_bend_start", False),
+            ("WaitInput", "di_bend_done", True),
+        ]
+        assert all(x.timeout == 20.0 for x in ins[i + 1 : i + 5] if isinstance(x, WaitInput))
+        assert isinstance(ins[i + 5], MoveInstr) and ins[i + 5].name == f"b{k + 1}_retreat"
     pallet = next(i for i, x in enumerate(ins) if isinstance(x, MoveInstr) and x.name == "pallet")
     assert ins[pallet + 2] is OPEN and ins[-1].name == "home"
 
@@ -100,12 +109,14 @@ def test_without_io_the_program_says_which_signals_are_missing(planned: tuple) -
     # the example's io has the gripper and the press signals: the service's program uses them
     (full,) = planned[0].bending.robot_programs(planned[1])
     used = {x.signal.name for x in full.actions() if hasattr(x, "signal")}
-    assert {"vacuum", "vacuum_ok", "press_start", "press_done"} <= used
+    assert {"vacuum", "vacuum_ok", "press_start", "press_clamped", "press_done"} <= used
     wb, plan, _ = planned
-    bare = replace(program_settings(wb.project), close=None, open=None, outputs={}, inputs={})
+    bare = replace(
+        program_settings(wb.project), close=None, open=None, outputs={}, inputs={}, press=None
+    )
     prog = bending_program(plan, wb.setup, wb.bending.si(), bare, wb.joints)
     texts = [x.text for x in prog.instructions if isinstance(x, Comment)]
-    assert any("no output 'press_start' and no input 'press_done'" in t for t in texts)
+    assert any("no press section" in t for t in texts)
     assert any("no io.gripper" in t for t in texts)
     assert not any(isinstance(x, (PulseOutput, WaitInput, Gripper)) for x in prog.instructions)
 

@@ -13,7 +13,13 @@ from workbench.errors import ProjectError
 from workbench.geometry.transforms import rpy_to_matrix
 from workbench.motion.programs import Comment, Gripper, MotionLimits, SetOutput, WaitInput, WaitTime
 from workbench.project import load_project, project_from_dict
-from workbench.project.program_io import motion_limits, program_items, tool_data, work_objects
+from workbench.project.program_io import (
+    motion_limits,
+    program_items,
+    program_settings,
+    tool_data,
+    work_objects,
+)
 
 ROOT = Path(__file__).resolve().parents[2]
 GRIPPER_IO = {
@@ -146,6 +152,14 @@ def test_bad_names_and_values_name_their_field(patch: dict, words: str) -> None:
             "outputs[1].name: 'a' is used twice",
         ),
         ({"inputs": [{"name": "grip", "number": 9}]}, "name both an output and an input"),
+        # the press's signals: the defaults name press_start / press_clamped / press_done
+        ({"press": {}}, "press.start: 'press_start' is not one of io.outputs"),
+        ({"press": {"start": "blow"}}, "press.clamped: 'press_clamped' is not one of io.inputs"),
+        (
+            {"press": {"start": "blow", "clamped": "closed", "top": "grip"}},
+            "press.top: 'grip' is not one of io.inputs",
+        ),
+        ({"press": {"start": "blow", "timeout": 0}}, "timeout"),
     ],
 )
 def test_io_references_are_checked(io_patch: dict, words: str) -> None:
@@ -153,6 +167,21 @@ def test_io_references_are_checked(io_patch: dict, words: str) -> None:
     io.update(io_patch)
     err = _error(_project(io=io))
     assert words in str(err), str(err)
+
+
+def test_the_press_signals_in_si_with_their_defaults() -> None:
+    io = copy.deepcopy(GRIPPER_IO)
+    io["outputs"].append({"name": "press_start", "number": 7})
+    io["inputs"] += [{"name": "press_clamped", "number": 8}, {"name": "press_done", "number": 9}]
+    assert program_settings(project_from_dict(_project(io=io))).press is None
+    io["press"] = {}
+    press = program_settings(project_from_dict(_project(io=io))).press
+    assert press is not None
+    assert (press.start.number, press.clamped.number, press.top.number) == (7, 8, 9)
+    assert press.timeout == 30.0
+    io["press"] = {"clamped": "opened", "timeout": 12.5}
+    press = program_settings(project_from_dict(_project(io=io))).press
+    assert press is not None and press.clamped.name == "opened" and press.timeout == 12.5
 
 
 def test_a_gripper_action_needs_the_gripper() -> None:

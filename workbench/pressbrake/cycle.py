@@ -54,6 +54,7 @@ from workbench.pressbrake.cycle_path import (
 )
 from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
 from workbench.pressbrake.press_check import PartHit, check_states
+from workbench.pressbrake.press_signals import PressEvent, press_events
 from workbench.pressbrake.process_contacts import HANDLING, gripper_contacts
 from workbench.pressbrake.transit import (
     Carried,
@@ -212,6 +213,11 @@ class BendingCycle:
     def waypoint_times(self) -> F64:
         """Return when the robot reaches each waypoint [s] (arrival, before its hold)."""
         return self.trajectory.waypoint_times  # type: ignore[no-any-return]
+
+    def press_events(self) -> list[PressEvent]:
+        """Return the plan's timeline of the press's signals: start, clamped, the following,
+        top dead centre (`press_signals.press_events`), the order the program waits in."""
+        return press_events(self)
 
     def summary(self) -> str:
         """Return a short human summary (markdown)."""

@@ -9,14 +9,16 @@ the program's actions, with the same times:
 
 - grip / release: the gripper's close / open action (its output, confirming input and
   settle time, `io.gripper`);
-- the ram closing before a followed bend: pulse `press_start`, then wait the ram's
-  approach time (the robot follows the flange from there, move by move at the ram's pace);
-- the ram opening after it: wait its return time, then wait for `press_done` (timeout);
-- a bend the press makes alone (follow off): pulse `press_start`, wait the ram's time,
-  wait for `press_done`.
+- the ram closing before a followed bend: set the press's start output, wait for its
+  clamping signal, reset start (`press_signals.press_actions`); the robot follows the flange
+  from there, move by move at the ram's planned pace;
+- the ram opening after it: wait for the ram at top dead centre;
+- a bend the press makes alone (follow off): start, clamping, top dead centre.
 
-Signals missing in the project's io leave a comment naming them. The waits are timed so
-the program, planned again, takes the plan's cycle time.
+Every press wait has the press's timeout (a fault stops the program), none is a timer: the
+press's own times (the plan's holds at those waypoints) are not in the program, so the
+program's `cycle_time` is the plan's without them. A project without `io.press` gets
+comments naming what is missing. The other holds (the gripper's) are waits of their time.
 """
 
 from __future__ import annotations
@@ -29,22 +31,13 @@ from workbench.motion.programs.controller_program import (
     Instruction,
     MoveInstr,
     ProgramSettings,
-    PulseOutput,
     RobotProgram,
     Target,
-    WaitInput,
     WaitTime,
 )
 from workbench.pressbrake.cycle import BendingCycle, following_fraction
-from workbench.pressbrake.program import (
-    PRESS_DONE,
-    PRESS_PULSE,
-    PRESS_START,
-    PRESS_TIMEOUT,
-    TRANSFER_ZONE,
-    RobotAt,
-    base_program,
-)
+from workbench.pressbrake.press_signals import PRESS_STEPS, press_actions
+from workbench.pressbrake.program import TRANSFER_ZONE, RobotAt, base_program
 
 F64 = NDArray[np.float64]
 
@@ -66,40 +59,22 @@ def cycle_program(
     q = np.asarray(cycle.q, float)
     arrive = np.asarray(cycle.trajectory.waypoint_times, float)
     leave = arrive + np.array([w.hold for w in wps])
-    start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
     ins: list[Instruction] = [
         Comment(
             f"bending cycle: {len(cycle.steps)} bends ({' '.join(s.bend for s in cycle.steps)}), "
             f"{cycle.regrips} regrip(s), {cycle.cycle_time:.2f} s planned ({cycle.configuration})"
         )
     ]
-    for signal, what in ((start, f"output {PRESS_START!r}"), (done, f"input {PRESS_DONE!r}")):
-        if signal is None:
-            ins.append(
-                Comment(
-                    f"note: the project's io has no {what}: the press handshake is comments only"
-                )
-            )
+    if settings.press is None:
+        ins.append(
+            Comment("note: the project's io has no press section: the press handshake is comments")
+        )
 
     def target(i: int) -> Target:
         # Every target Cartesian (the home joints too, as the TCP pose there with its
         # configuration): the readers re-solve a Cartesian move from the one before it.
         label = _name(wps[i].label, i)
         return Target.planned(label, q[i], model, model.fk(q[i]) @ tool.T_flange_tcp)
-
-    def pulse() -> Instruction:
-        return (
-            PulseOutput(start, PRESS_PULSE)
-            if start
-            else Comment(f"press: pulse output {PRESS_START!r}")
-        )
-
-    def wait_done() -> Instruction:
-        return (
-            WaitInput(done, True, PRESS_TIMEOUT)
-            if done
-            else Comment(f"press: wait for input {PRESS_DONE!r}")
-        )
 
     for i in range(1, len(wps)):
         w = wps[i]
@@ -124,17 +99,10 @@ def cycle_program(
             ins.append(
                 settings.open or Comment("gripper open: the project has no io.gripper; add one")
             )
-        elif w.action == "press_close":
-            ins += [pulse(), Comment("the ram closes onto the sheet"), WaitTime(w.hold)]
-        elif w.action == "press_open":
-            ins += [Comment("the ram opens"), WaitTime(w.hold), wait_done()]
-        elif w.action == "press_bend":
-            ins += [
-                pulse(),
-                Comment("the press bends the part alone"),
-                WaitTime(w.hold),
-                wait_done(),
-            ]
+        elif w.action in PRESS_STEPS:
+            if w.action == "press_bend":
+                ins.append(Comment("the press bends the part alone"))
+            ins += press_actions(w.action, settings.press)
         elif w.hold > 0.0:
             ins.append(WaitTime(w.hold))
     return base_program(name, model, settings, ins, robot)

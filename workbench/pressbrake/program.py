@@ -6,9 +6,11 @@ What today's `BendingPlan` holds and how the program uses it:
 - `placements`: per bend, the TCP pose and the joints holding the part on the die. Each bend
   is a joint move to its approach pose (the placement moved by the transfer's `retract` offset
   in the die frame, solved nearest the placement's joints and refused when that is another arm
-  configuration), a linear move onto the die, the press handshake (pulse output `PRESS_START`,
-  wait for input `PRESS_DONE`, from the project's io; where a signal is missing a comment
-  names it), and a linear retreat to the approach pose.
+  configuration), a linear move onto the die, the press's bend with the robot holding still
+  (`press_signals.press_actions("press_bend", ...)`: set the press's start output, wait for
+  clamping, reset start, wait for the ram at top dead centre, each wait with the press's
+  timeout; without the project's `io.press` a comment says so), and a linear retreat to the
+  approach pose.
 - `trajectory`: the checked transfer (retract, via poses, pallet). Its waypoints are the
   targets with their planned joints and their durations between waypoints; the first one is
   the last bend's retreat.
@@ -44,26 +46,19 @@ from workbench.motion.programs.controller_program import (
     Instruction,
     MoveInstr,
     ProgramSettings,
-    PulseOutput,
     RobotProgram,
     Target,
     ToolData,
-    WaitInput,
     WorkObject,
 )
 from workbench.motion.programs.from_plan import planner_durations
 from workbench.pressbrake.die import Die
 from workbench.pressbrake.plan import BendingPlan
+from workbench.pressbrake.press_signals import press_actions
 from workbench.pressbrake.transfer import Transfer
 
 F64 = NDArray[np.float64]
 
-#: The press brake's "start the bend" output (pulsed) and its "bend done" input, by name in io.
-PRESS_START = "press_start"
-PRESS_DONE = "press_done"
-#: The start pulse [s] and how long to wait for "bend done" [s].
-PRESS_PULSE = 0.2
-PRESS_TIMEOUT = 30.0
 #: Speed of the joint moves the plan does not time (fraction of the joints' maximum speed).
 MOVE_SPEED = 0.5
 #: TCP speed [m/s] of the linear moves onto the die and back.
@@ -190,18 +185,12 @@ def _target(
 
 def _load(plan: BendingPlan, settings: ProgramSettings) -> list[Instruction]:
     """Return the program's head: what it does, a note on missing press signals, the load."""
-    start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
-    missing = [f"output {PRESS_START!r}"] * (start is None) + [f"input {PRESS_DONE!r}"] * (
-        done is None
-    )
     ins: list[Instruction] = [
         Comment(f"bending: {len(plan.placements)} bends ({plan.configuration})")
     ]
-    if missing:
+    if settings.press is None:
         ins.append(
-            Comment(
-                f"note: the project's io has no {' and no '.join(missing)}: the press handshake is comments only"
-            )
+            Comment("note: the project's io has no press section: the press handshake is comments")
         )
     ins.append(
         Comment("load: the plan has no blank station; the blank is put into the gripper here")
@@ -220,7 +209,6 @@ def _bends(
 ) -> list[Instruction]:
     """Return every bend's moves: approach, onto the die, the press handshake, retreat."""
     tool = settings.tool
-    start, done = settings.outputs.get(PRESS_START), settings.inputs.get(PRESS_DONE)
     ins: list[Instruction] = []
     for i in range(1, len(q_arr)):
         label = labels[i]
@@ -251,16 +239,7 @@ def _bends(
             )
         )
         if label.endswith("_bend"):
-            ins.append(
-                PulseOutput(start, PRESS_PULSE)
-                if start
-                else Comment(f"press: pulse output {PRESS_START!r} (missing in io.outputs)")
-            )
-            ins.append(
-                WaitInput(done, True, PRESS_TIMEOUT)
-                if done
-                else Comment(f"press: wait for input {PRESS_DONE!r} (missing in io.inputs)")
-            )
+            ins += press_actions("press_bend", settings.press)
     return ins
 
 

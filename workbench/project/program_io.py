@@ -23,6 +23,7 @@ from workbench.motion.programs.controller_program import (
     Comment,
     Gripper,
     MotionLimits,
+    PressSignals,
     ProgramSettings,
     PulseOutput,
     SetOutput,
@@ -106,6 +107,19 @@ class SyncSignalsSpec(StrictModel):
     input: Name
 
 
+class PressIOSpec(StrictModel):
+    """The press brake's robot interface, by the names of io.outputs / io.inputs: the robot's
+    `start` output (held on until the press reports clamping), the press's `clamped` input
+    (the ram reached the clamping point: the sheet is held, the robot may follow the flange)
+    and `top` input (the ram is back at top dead centre: the bend is done, the part is free);
+    `timeout` [s] the longest wait for either, after which the program stops with a fault."""
+
+    start: Name = "press_start"
+    clamped: Name = "press_clamped"
+    top: Name = "press_done"
+    timeout: Timeout = 30.0
+
+
 def _unique(items: list[SignalSpec], field: str) -> None:
     # names only: numbers repeat across robots (each controller counts its own I/O from 1)
     for key in ("name",):
@@ -129,6 +143,7 @@ class IOSpec(StrictModel):
     inputs: Annotated[list[SignalSpec], Field(max_length=B.MAX_ITEMS)] = Field(default_factory=list)
     gripper: GripperSpec | None = None
     sync: dict[Name, SyncSignalsSpec] = Field(default_factory=dict)
+    press: PressIOSpec | None = None
 
     @model_validator(mode="after")
     def _names(self) -> IOSpec:
@@ -148,6 +163,10 @@ class IOSpec(StrictModel):
                 (f"sync.{robot}.output", s.output, "outputs"),
                 (f"sync.{robot}.input", s.input, "inputs"),
             ]
+        if self.press is not None:
+            p = self.press
+            refs += [("press.start", p.start, "outputs")]
+            refs += [("press.clamped", p.clamped, "inputs"), ("press.top", p.top, "inputs")]
         for field, name, kind in refs:
             if name is not None:
                 self.signal(name, kind, field)
@@ -179,6 +198,18 @@ class IOSpec(StrictModel):
             None if confirm is None else self.signal(confirm, "inputs", "io.gripper"),
             g.timeout,
             g.settle,
+        )
+
+    def press_signals(self) -> PressSignals | None:
+        """Return the press brake's signals (`io.press`), None when the project names none."""
+        p = self.press
+        if p is None:
+            return None
+        return PressSignals(
+            self.signal(p.start, "outputs", "io.press.start"),
+            self.signal(p.clamped, "inputs", "io.press.clamped"),
+            self.signal(p.top, "inputs", "io.press.top"),
+            p.timeout,
         )
 
     def sync_signals(self, robot: str) -> tuple[Signal, Signal] | None:
@@ -378,7 +409,8 @@ def motion_limits(robot: Robot) -> MotionLimits:
 
 def program_settings(project: Project) -> ProgramSettings:
     """Return what the workflows' program builders need (`ProgramSettings`): the tool, the
-    robot's motion limits, the gripper actions, the named signals, the sync signals."""
+    robot's motion limits, the gripper actions, the named signals, the sync signals, the press
+    brake's signals."""
     io = _io(project.io)
     grip = (
         [io.gripper_action(c, "io.gripper") for c in (True, False)] if io.gripper else [None, None]
@@ -392,4 +424,5 @@ def program_settings(project: Project) -> ProgramSettings:
         {s.name: s.to_si() for s in io.outputs},
         {s.name: s.to_si() for s in io.inputs},
         sync,
+        io.press_signals(),
     )

@@ -80,7 +80,9 @@ def test_written_program_reads_as_a_fanuc_programmer_expects() -> None:
     ]
     assert "  DO[5:do_blow]=PULSE,0.3sec ;" in body and "  WAIT 0.50(sec) ;" in body
     k = body.index("  !SYNC sync_1: demo,other ;")
-    assert body[k + 1 : k + 4] == [
+    # the four-phase handshake, led by demo (the first robot named)
+    assert body[k + 1 : k + 5] == [
+        "  WAIT DI[8:di_sync]=OFF ;",
         "  DO[7:do_sync]=ON ;",
         "  WAIT DI[8:di_sync]=ON ;",
         "  DO[7:do_sync]=OFF ;",

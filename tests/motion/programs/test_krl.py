@@ -95,7 +95,8 @@ def test_written_lines_a_kuka_programmer_reads(written) -> None:  # noqa: ANN001
     ]
     assert "PULSE($OUT[5], TRUE, 0.3) ; do_blow" in lines
     s = lines.index("; sync point sync_1: robots demo, other")
-    assert lines[s + 1 : s + 4] == [
+    assert lines[s + 1 : s + 5] == [  # the four-phase handshake, led by demo
+        "WAIT FOR NOT $IN[8] ; di_sync",
         "$OUT[7] = TRUE ; do_sync",
         "WAIT FOR $IN[8] ; di_sync",
         "$OUT[7] = FALSE ; do_sync",

@@ -83,7 +83,10 @@ def test_written_program_reads_as_a_ur_programmer_expects() -> None:
         "end",
     ]
     k = lines.index("# sync sync_1: demo, other")
-    assert lines[k + 1 : k + 6] == [
+    assert lines[k + 1 : k + 9] == [  # the four-phase handshake, led by demo
+        "while get_configurable_digital_in(0):",
+        "sync()",
+        "end",
         "set_standard_digital_out(7, True)",
         "while not get_configurable_digital_in(0):",
         "sync()",

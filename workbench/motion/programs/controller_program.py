@@ -183,14 +183,17 @@ class Comment:
 class SyncPoint:
     """Wait here until every robot in `robots` (program names) reaches the sync point `name`.
 
-    RAPID writes WaitSyncTask; languages without task sync use an I/O handshake: set `output`
-    high, wait for `input` high (the partner's output), then set `output` low.
+    RAPID writes WaitSyncTask; languages without task sync use the four-phase I/O handshake
+    of `sync_handshake` on `output` and `input` (the partner's output), which the robot whose
+    name sorts first leads; `lead` (set by the readers from the file) says whether this
+    program leads.
     """
 
     name: str
     robots: tuple[str, ...]
     output: Signal | None = None
     input: Signal | None = None
+    lead: bool | None = None
 
 
 Action = SetOutput | PulseOutput | WaitInput | WaitTime | Gripper | Comment | SyncPoint
@@ -341,11 +344,25 @@ class ReadProgram:
 
 
 @dataclass(frozen=True, eq=False)
+class PressSignals:
+    """A press brake's robot interface: the robot's `start` output (held on until the press
+    reports `clamped`), the press's `clamped` input (the ram reached the clamping point: the
+    sheet is held) and `top` input (the ram is back at top dead centre, open), and the longest
+    wait for either [s] (longer is a fault that stops the program)."""
+
+    start: Signal
+    clamped: Signal
+    top: Signal
+    timeout: float = 30.0
+
+
+@dataclass(frozen=True, eq=False)
 class ProgramSettings:
     """What a workflow's program builder needs of the project, in SI: the robot's `tool`, its
     motion `limits`, the gripper's `close` and `open` actions (None: the project has no
     gripper), the named digital `outputs` and `inputs`, and per robot (by name) its `sync`
-    handshake signals (output, input)."""
+    handshake signals (output, input), and the press brake's signals (None: the project names
+    none)."""
 
     tool: ToolData
     limits: MotionLimits = field(default_factory=MotionLimits)
@@ -354,6 +371,7 @@ class ProgramSettings:
     outputs: dict[str, Signal] = field(default_factory=dict)
     inputs: dict[str, Signal] = field(default_factory=dict)
     sync: dict[str, tuple[Signal, Signal]] = field(default_factory=dict)
+    press: PressSignals | None = None
 
 
 def move_label(program: RobotProgram, index: int, move: MoveInstr) -> str:

@@ -64,9 +64,10 @@ A wait with a timeout uses FANUC's $WAITTMOUT pattern: ``$WAITTMOUT=k`` (k in 1/
 unit of the FANUC operator's manual, "WAIT instructions") before ``WAIT DI[n]=ON TIMEOUT,
 LBL[j]``; LBL[j] lies after the program's ``END`` and shows ``MESSAGE[...]`` then ``ABORT``:
 a timed-out wait stops the program, as RAPID's WaitDI \\MaxTime does. A gripper action is a
-comment "gripper close/open" and its expanded actions. A sync point is an I/O handshake
-after the comment ``!SYNC name: ROBOT_A,ROBOT_B``: ``DO[out]=ON``, ``WAIT DI[in]=ON``,
-``DO[out]=OFF``.
+comment "gripper close/open" and its expanded actions. A sync point is the four-phase I/O
+handshake of `sync_handshake` after the comment ``!SYNC name: ROBOT_A,ROBOT_B``: leading
+``WAIT DI[in]=OFF``, ``DO[out]=ON``, ``WAIT DI[in]=ON``, ``DO[out]=OFF``; following ``WAIT
+DI[in]=ON``, ``DO[out]=ON``, ``WAIT DI[in]=OFF``, ``DO[out]=OFF``.
 
 Names. The program name is upper case, letters, digits and _ (at most 36 characters, the
 R-30iB limit); position comments (the target names) at most 16 characters; names that clash
@@ -102,6 +103,7 @@ from workbench.motion.programs.controller_program import (
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
+from workbench.motion.programs.sync_handshake import handshake, leads
 
 #: Words of FANUC's TP language (instructions, registers, operators) no name may take.
 RESERVED = (
@@ -398,16 +400,11 @@ class _Writer:
             for b in a.expand():
                 self.action(b)
         elif isinstance(a, SyncPoint):
-            if a.output is None or a.input is None:
-                raise InputError(
-                    f"program {self.p.name}: sync point {a.name!r} needs an output and an"
-                    " input signal: FANUC has no task sync, it uses an I/O handshake"
-                )
-            robots = ",".join(a.robots)
-            self.comment(f"SYNC {a.name}: {robots}")
-            self.line(f"{self.io('DO', a.output)}=ON")
-            self.line(f"WAIT {self.io('DI', a.input)}=ON")
-            self.line(f"{self.io('DO', a.output)}=OFF")
+            # FANUC has no task sync (without Multi-Arm): the four-phase handshake of sync_handshake
+            steps = handshake(a, leads(a, self.p.name))
+            self.comment(f"SYNC {a.name}: {','.join(a.robots)}")
+            for b in steps:
+                self.action(b)
         else:  # pragma: no cover - the model has no other action
             raise InputError(f"program {self.p.name}: FANUC LS cannot write {a!r}")
 

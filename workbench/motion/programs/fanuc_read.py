@@ -8,7 +8,7 @@ Read: /PROG name; in /MN the frame lines (``PR[k]=LPOS-LPOS``, ``PR[k,j]=v``,
 ``C P[via]`` + ``: P[end] v mm/sec ...``, ``DO[n]=ON|OFF``, ``DO[n]=PULSE,t sec``,
 ``$WAITTMOUT=k`` + ``WAIT DI[n]=ON|OFF TIMEOUT,LBL[j]`` (timeout k/100 s; FANUC's default
 3000 = 30 s when the program does not set it), ``WAIT DI[n]=ON|OFF``, ``WAIT t(sec)``,
-comments, the ``!SYNC name: robots`` handshake (DO on, WAIT DI on, DO off) as a SyncPoint,
+comments, the ``!SYNC name: robots`` four-phase handshake (`sync_handshake`) as a SyncPoint,
 and after ``END`` the timeout handlers (LBL, MESSAGE, ABORT); in /POS joint positions
 (J1..Jn deg) and Cartesian ones (X, Y, Z mm, W, P, R deg, UF, UT, CONFIG).
 
@@ -47,6 +47,7 @@ from workbench.motion.programs.controller_program import (
     WorkObject,
 )
 from workbench.motion.programs.fanuc import TURN_JOINTS, turn_range_deg, zone_of_termination
+from workbench.motion.programs.sync_handshake import match_handshake
 
 NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 DEFAULT_WAITTMOUT = 3000  # 1/100 s, FANUC's default $WAITTMOUT
@@ -457,20 +458,18 @@ def _fold_syncs(
         no, it = items[k]
         if isinstance(it, tuple):
             _, name, robots = it
-            seq = [x for _, x in items[k + 1 : k + 4]]
-            ok = (
-                len(seq) == 3
-                and isinstance(seq[0], SetOutput) and seq[0].value
-                and isinstance(seq[1], WaitInput) and seq[1].value and seq[1].timeout is None
-                and isinstance(seq[2], SetOutput) and not seq[2].value
-                and seq[2].signal.number == seq[0].signal.number
-            )  # fmt: skip
-            if ok:
-                out.append(SyncPoint(name, robots, seq[0].signal, seq[1].signal))  # type: ignore[attr-defined]
-                k += 4
+            found = match_handshake([x for _, x in items[k + 1 : k + 5]])
+            if found:
+                lead, sig_out, sig_in = found
+                out.append(SyncPoint(name, robots, sig_out, sig_in, lead))
+                k += 5
                 continue
             unknown.append(
-                (no, f"!SYNC {name}: not followed by DO[n]=ON, WAIT DI[m]=ON, DO[n]=OFF")
+                (
+                    no,
+                    f"!SYNC {name}: not followed by the four-phase handshake (WAIT DI[m]=OFF/ON,"
+                    " DO[n]=ON, WAIT DI[m]=ON/OFF, DO[n]=OFF)",
+                )
             )
             k += 1
             continue

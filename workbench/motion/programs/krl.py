@@ -31,9 +31,12 @@ with no INI fold and no BAS/ILF calls, every setting explicit:
   FALSE`, `WAIT FOR $IN[n] OR $TIMER_FLAG[1]` ($TIMER_FLAG[1] turns TRUE when the timer
   reaches 0), `$TIMER_STOP[1] = TRUE`, `IF $TIMER_FLAG[1] THEN HALT, WAIT FOR $IN[n] ENDIF`
   (timer 1 is used; its resolution is 1 ms): a timed-out wait stops the robot with a message,
-  and Start resumes at the re-wait, so the program never runs on with the signal unconfirmed. A gripper action is its expanded actions under a `; gripper
-  close`/`; gripper open` comment; a sync point is an I/O handshake under `; sync point NAME:
-  robots A, B`: `$OUT[out] = TRUE`, `WAIT FOR $IN[in]`, `$OUT[out] = FALSE`.
+  and Start resumes at the re-wait, so the program never runs on with the signal unconfirmed. A
+  gripper action is its expanded actions under a `; gripper close`/`; gripper open` comment; a
+  sync point is the four-phase I/O handshake of `sync_handshake` under `; sync point NAME:
+  robots A, B`: leading `WAIT FOR NOT $IN[in]`, `$OUT[out] = TRUE`, `WAIT FOR $IN[in]`,
+  `$OUT[out] = FALSE`; following `WAIT FOR $IN[in]`, `$OUT[out] = TRUE`, `WAIT FOR NOT
+  $IN[in]`, `$OUT[out] = FALSE`.
 
 Status and Turn (the E6POS `S` and `T`), KUKA's definitions (KUKA Expert Programming manual
 "Status"/"Turn", quoted at robot-forum.com/robotforum/thread/7173; the same bits in Siemens
@@ -93,6 +96,7 @@ from workbench.motion.programs.controller_program import (
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
+from workbench.motion.programs.sync_handshake import handshake, leads
 
 #: KRL keywords, data types and names of the controller's global data (compared
 #: case-insensitively): identifiers the post never writes.
@@ -368,18 +372,12 @@ class _Writer:
         if isinstance(a, WaitInput):
             return self._wait(a)
         if isinstance(a, SyncPoint):
-            if a.output is None or a.input is None:
-                raise InputError(
-                    f"sync point {a.name!r}: KRL synchronises robots by an I/O handshake;"
-                    " give the sync point an output and an input signal"
-                )
-            robots = ", ".join(a.robots)
-            return [
-                f"  ; sync point {a.name}: robots {robots}",
-                f"  $OUT[{_number(a.output)}] = TRUE ; {a.output.name}",
-                f"  WAIT FOR $IN[{_number(a.input)}] ; {a.input.name}",
-                f"  $OUT[{_number(a.output)}] = FALSE ; {a.output.name}",
-            ]
+            # KRL has no task sync: the four-phase handshake of sync_handshake
+            steps = handshake(a, leads(a, self.p.name))
+            out = [f"  ; sync point {a.name}: robots {', '.join(a.robots)}"]
+            for b in steps:
+                out += self._action(b)
+            return out
         raise InputError(f"KRL: cannot write the instruction {a!r}")
 
     def _wait(self, a: WaitInput) -> list[str]:

@@ -18,7 +18,8 @@
   (also `$IN[n] == TRUE`), and the timer pattern `write_krl` uses for a timeout
   (`$TIMER[k] = -ms`, `WAIT FOR ... OR $TIMER_FLAG[k]`, `IF $TIMER_FLAG[k] THEN HALT` and
   the re-wait `WAIT FOR ...` `ENDIF`);
-- the `; sync point NAME: robots A, B` handshake back into a `SyncPoint`; comments, folds
+- the `; sync point NAME: robots A, B` four-phase handshake back into a `SyncPoint` (its
+  `lead` from the file: `sync_handshake.match_handshake`); comments, folds
   (`;FOLD`/`;ENDFOLD` are comments) and `&` header lines are skipped, and the motion settings
   `write_krl` states explicitly ($ADVANCE, $IPO_MODE = #BASE, $ORI_TYPE, $CIRC_TYPE,
   $ACC_AXIS, $ACC/$VEL.ORI*, $APO.CORI/CVEL) are understood and have no effect here.
@@ -58,6 +59,7 @@ from workbench.motion.programs.controller_program import (
 )
 from workbench.motion.programs.krl import ZERO_TOL
 from workbench.motion.programs.program_text import split_comment, split_top
+from workbench.motion.programs.sync_handshake import match_handshake
 
 _I = re.IGNORECASE
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -615,24 +617,15 @@ class _Reader:
     def result(self, prog: str) -> ReadProgram:
         ins = self.instructions
         for idx, name, robots, line in reversed(self.syncs):
-            block = ins[idx : idx + 3]
-            ok = (
-                len(block) == 3
-                and isinstance(block[0], SetOutput)
-                and block[0].value
-                and isinstance(block[1], WaitInput)
-                and block[1].value
-                and block[1].timeout is None
-                and isinstance(block[2], SetOutput)
-                and not block[2].value
-                and block[2].signal.number == block[0].signal.number
-            )
-            if ok:
-                ins[idx : idx + 3] = [SyncPoint(name, robots, block[0].signal, block[1].signal)]
+            found = match_handshake(ins[idx : idx + 4])
+            if found:
+                lead, out, inp = found
+                ins[idx : idx + 4] = [SyncPoint(name, robots, out, inp, lead)]
             else:
                 self.notes.append(
-                    f"{self.src_name} line {line}: sync point {name} is not followed by the handshake"
-                    " $OUT = TRUE, WAIT FOR $IN, $OUT = FALSE; read as plain I/O"
+                    f"{self.src_name} line {line}: sync point {name} is not followed by the"
+                    " four-phase handshake (WAIT FOR [NOT] $IN, $OUT = TRUE, WAIT FOR [NOT] $IN,"
+                    " $OUT = FALSE); read as plain I/O"
                 )
         tools = tuple(
             ToolData(nm, T, *(self.tool_loads[nm] if nm in self.tool_loads else (None, None)))

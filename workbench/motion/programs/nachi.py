@@ -49,8 +49,9 @@ Our reading (no NACHI manual is public in the corpora; each is stated in docs/pr
   are listed in the header (``' USERCOORD``) for the pose comments.
 - Wait with timeout: no NACHI form was found; ``WAITI`` waits without limit and a ``' TIMEOUT``
   comment above it states the plan's limit. Pulse: ``SET``, ``DELAY``, ``RESET`` under a
-  ``' PULSE`` comment. Sync point: the I/O handshake ``SET`` own output, ``WAITI`` partner
-  input, ``RESET`` own output under a ``' SYNC`` comment. Gripper: its expanded actions under
+  ``' PULSE`` comment. Sync point: the four-phase I/O handshake of `sync_handshake` under a
+  ``' SYNC`` comment (leading ``WAITJ``, ``SET``, ``WAITI``, ``RESET``; following ``WAITI``,
+  ``SET``, ``WAITJ``, ``RESET``: own output, partner input). Gripper: its expanded actions under
   ``' gripper close/open``.
 - ``AC=0`` (acceleration level 0) and ``SM=0`` (no extra smoothing) on every move.
 """
@@ -81,6 +82,7 @@ from workbench.motion.programs.controller_program import (
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable, controller_model, nachi_file_name
+from workbench.motion.programs.sync_handshake import handshake, leads
 
 RESERVED = (
     "MOVE",
@@ -254,18 +256,12 @@ class _Writer:
         elif isinstance(ins, WaitTime):
             b.append(f"DELAY {ins.seconds:.3f}")
         elif isinstance(ins, SyncPoint):
-            if ins.output is None or ins.input is None:
-                raise InputError(
-                    f"program {self.p.name}: sync point {ins.name!r} needs an output and an input"
-                    " signal for the NACHI I/O handshake; set them in the project's io section"
-                )
+            # no task sync between FD controllers: the four-phase handshake of sync_handshake
+            steps = handshake(ins, leads(ins, self.p.name))
             robots = ",".join(self.names(r, "robot") for r in ins.robots)
-            b += [
-                f"' SYNC {self.names(ins.name, 'sync')} WITH {robots}",
-                f"SET O{ins.output.number}",
-                f"WAITI I{ins.input.number}",
-                f"RESET O{ins.output.number}",
-            ]
+            b.append(f"' SYNC {self.names(ins.name, 'sync')} WITH {robots}")
+            for a in steps:
+                self.action(a)
         else:  # pragma: no cover - the model has no other instruction
             raise InputError(f"program {self.p.name}: NACHI cannot write {type(ins).__name__}")
 

@@ -310,18 +310,16 @@ class _Reader:
                 self.instructions.append(PulseOutput(Signal(f"O{n}", n), t))
                 return 3
         elif m := _SYNC.match(s):
-            on, wait, off = self.io(k + 1, "SET"), self.io(k + 2, "WAITI"), self.io(k + 3, "RESET")
-            if on and wait and off and on[1] == off[1]:
+            # the four-phase handshake (sync_handshake): WAITJ/WAITI, SET, WAITI/WAITJ, RESET
+            w0 = self.io(k + 1, "WAITJ") or self.io(k + 1, "WAITI")
+            on, off = self.io(k + 2, "SET"), self.io(k + 4, "RESET")
+            w2 = self.io(k + 3, "WAITI" if w0 and w0[0] == "WAITJ" else "WAITJ")
+            if w0 and on and w2 and off and on[1] == off[1] and w0[1] == w2[1]:
                 robots = tuple(r for r in m.group(2).split(",") if r)
-                self.instructions.append(
-                    SyncPoint(
-                        m.group(1),
-                        robots,
-                        Signal(f"O{on[1]}", on[1]),
-                        Signal(f"I{wait[1]}", wait[1]),
-                    )
-                )
-                return 3
+                sig_out, sig_in = Signal(f"O{on[1]}", on[1]), Signal(f"I{w0[1]}", w0[1])
+                lead = w0[0] == "WAITJ"
+                self.instructions.append(SyncPoint(m.group(1), robots, sig_out, sig_in, lead))
+                return 4
         return 0
 
     def read(self) -> ReadProgram:

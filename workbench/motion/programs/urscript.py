@@ -39,8 +39,9 @@ error=True) halt end`` and ``wait_t = wait_t + get_steptime()`` in it (a timed-o
 stops the program). ``sleep(t)`` waits. A pulse is ``# pulse DO n for t s``, the output
 high, ``sleep(t)``, low (it holds the program for t: URScript has no pulse instruction).
 Comments ``# text``; a gripper action is ``# gripper close/open`` and its expanded actions;
-a sync point is ``# sync name: robot_a, robot_b`` and the I/O handshake (output high, wait
-for the input, output low).
+a sync point is ``# sync name: robot_a, robot_b`` and the four-phase I/O handshake of
+`sync_handshake` (leading: wait for the input low, output high, wait for the input high,
+output low; following: wait high, output high, wait low, output low).
 
 Names are legal URScript identifiers (NameTable, case-sensitive, `RESERVED`: keywords and
 the built-ins this post uses); every rename is a note in `ExportedProgram.notes` and a
@@ -73,6 +74,7 @@ from workbench.motion.programs.controller_program import (
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.first_move import safe_start
 from workbench.motion.programs.names import NameTable
+from workbench.motion.programs.sync_handshake import handshake, leads
 
 #: URScript keywords and the built-in functions and names a program must not shadow.
 RESERVED = (
@@ -304,15 +306,11 @@ class _Writer:
             for b in a.expand():
                 self.action(b)
         elif isinstance(a, SyncPoint):
-            if a.output is None or a.input is None:
-                raise InputError(
-                    f"program {self.p.name}: sync point {a.name!r} needs an output and an input"
-                    " signal: URScript has no task sync, it uses an I/O handshake"
-                )
+            # URScript has no task sync: the four-phase handshake of sync_handshake
+            steps = handshake(a, leads(a, self.p.name))
             self.add(_comment(f"sync {a.name}: {', '.join(a.robots)}"))
-            self.set_out(a.output, True)
-            self.wait_in(a.input, True, None)
-            self.set_out(a.output, False)
+            for b in steps:
+                self.action(b)
         else:  # pragma: no cover - the model has no other action
             raise InputError(f"program {self.p.name}: URScript cannot write {a!r}")
 

@@ -45,6 +45,7 @@ from workbench.motion.programs.controller_program import (
     WorkObject,
 )
 from workbench.motion.programs.program_text import Unbalanced, numbered_lines, split_top
+from workbench.motion.programs.sync_handshake import match_handshake
 from workbench.motion.programs.urscript import JOINT_SPEED, STANDARD_IO
 
 _IDENT = r"[A-Za-z_][A-Za-z0-9_]*"
@@ -476,19 +477,14 @@ def _fold(items: list[object], unknown: list[tuple[int, str]]) -> list[ReadMove 
                     out.append(PulseOutput(seq[0].signal, it[3]))  # type: ignore[attr-defined]
                     k += 4
                     continue
-            else:
-                ok = (
-                    len(seq) == 3
-                    and isinstance(seq[0], SetOutput) and seq[0].value
-                    and isinstance(seq[1], WaitInput) and seq[1].value and seq[1].timeout is None
-                    and isinstance(seq[2], SetOutput) and not seq[2].value
-                    and seq[2].signal.number == seq[0].signal.number
-                )  # fmt: skip
-                if ok:
-                    out.append(SyncPoint(it[2], it[3], seq[0].signal, seq[1].signal))  # type: ignore[attr-defined]
-                    k += 4
-                    continue
-            unknown.append((it[1], f"# {it[0]} block not followed by its output/wait/output lines"))
+            elif found := match_handshake(items[k + 1 : k + 5]):
+                lead, sig_out, sig_in = found
+                out.append(SyncPoint(it[2], it[3], sig_out, sig_in, lead))
+                k += 5
+                continue
+            unknown.append(
+                (it[1], f"# {it[0]} block not followed by its output and wait lines ({it[0]})")
+            )
             k += 1
             continue
         out.append(it)  # type: ignore[arg-type]

@@ -38,37 +38,49 @@ MODULE bending
         ! bend 'b23' (step 1)
         MoveJ b1_approach, [250,45,5000,1000], fine, suction_gripper\WObj:=wobj0;
         MoveL b1_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b1_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b45' (step 2)
         MoveJ b2_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
         MoveL b2_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b2_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b12' (step 3)
         MoveJ b3_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
         MoveL b3_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b3_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b14' (step 4)
         MoveJ b4_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
         MoveL b4_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b4_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b16' (step 5)
         MoveJ b5_approach, v1000\T:=0.355, fine, suction_gripper\WObj:=wobj0;
         MoveL b5_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b5_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! bend 'b17' (step 6)
         MoveJ b6_approach, v1000\T:=0.535, fine, suction_gripper\WObj:=wobj0;
         MoveL b6_bend, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
-        PulseDO \High\PLength:=0.2, press_start;
+        SetDO press_start, 1;
+        WaitDI press_clamped, 1\MaxTime:=30;
+        SetDO press_start, 0;
         WaitDI press_done, 1\MaxTime:=30;
         MoveL b6_retreat, [250,500,5000,1000], fine, suction_gripper\WObj:=wobj0;
         ! transfer to the pallet as planned (checked)
