@@ -174,6 +174,8 @@ def check_read_back(
             assert np.linalg.norm(T_read[:3, 3] - T_planned[:3, 3]) < 1e-5, where
             assert _angle(T_read[:3, :3], T_planned[:3, :3]) < 0.01, where
         assert abs(rm.zone - mv.zone) < zone_tol, (where, rm.zone, mv.zone)
+        if any(m.force for m in got):  # a format with force control: every move's force
+            assert abs(rm.force - mv.force) < 1e-9, (where, rm.force, mv.force)
         if check_durations and rm.duration is not None:
             assert abs(rm.duration - mv.duration) <= 0.01 * mv.duration + 1e-3, where
         elif check_speeds:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 from workbench.errors import InputError, PlanningError
 from workbench.kinematics.robot_library import LibraryRobot, library_robot
 from workbench.motion.programs.controller_base import in_controller_base
-from workbench.motion.programs.controller_program import RobotProgram
+from workbench.motion.programs.controller_program import ContactForce, RobotProgram
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.formats import (
     PROGRAM_FORMATS,
@@ -31,6 +31,8 @@ if TYPE_CHECKING:
 
 #: The workflows that export robot programs.
 WORKFLOWS = ("motion", "bending", "assembly", "polishing")
+#: The formats whose programs press with force control (RAPID: ABB's FC Pressure, rapid.py).
+FORCE_CONTROL_FORMATS = ("rapid",)
 
 
 def _check_workflow(workflow: str) -> str:
@@ -149,9 +151,21 @@ def export(
             " force=True (--force) to write it anyway"
         )
     if fmt in SAMPLE_FORMATS:
-        return write_samples(fmt, _samples(workflow, plan))
+        samples = write_samples(fmt, _samples(workflow, plan))
+        note = contact_note(wb, workflow, fmt)  # the joints of the offset targets
+        return ExportedProgram(samples.files, samples.notes + ((note,) if note else ()))
     written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
     return write_programs(fmt, written)
+
+
+def contact_note(wb: Workbench, workflow: str, fmt: str) -> str | None:
+    """Return what an export of a pressing workflow (polishing) in a format without force
+    control assumes: a compliant tool with D = F/k, with the numbers (None: nothing to say).
+    Every post without force control writes it in its header; the GUI shows it on export."""
+    if _check_workflow(workflow) != "polishing" or fmt in FORCE_CONTROL_FORMATS:
+        return None
+    si = wb.polishing.si
+    return ContactForce(si.force, si.control.stiffness).compliance_note()
 
 
 def controller_programs(

@@ -64,6 +64,7 @@ from workbench.motion.programs.controller_program import (
     WaitInput,
     WaitTime,
     check_program,
+    compliance_notes,
 )
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.names import NameTable
@@ -266,7 +267,7 @@ def write_urscript(program: RobotProgram) -> ExportedProgram:
             k += 1
         else:
             w.action(ins)
-    notes = tuple(w.vars.notes + w.targets.notes)
+    notes = tuple(compliance_notes(program) + w.vars.notes + w.targets.notes)
     head = [_comment(f"workbench program {program.name} (robot {program.robot})")]
     head += [_comment(f"note: {n}") for n in notes]
     text = "\n".join([*head, f"def {w.name}():", *w.out, "end", f"{w.name}()", ""])
