@@ -111,7 +111,7 @@ class ProgramDownload:
             notify(self.server, client, f"{fmt}: no force control", warning, color="yellow")
         others = [n for n in exported.notes if n != warning]
         if others:
-            body = "\n".join(f"- {n}" for n in others[:12])
+            body = "; ".join(others[:12])  # a notification shows plain text, one paragraph
             notify(self.server, client, "Export notes", body, color="blue")
         self.after(exported)
 
