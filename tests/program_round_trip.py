@@ -187,6 +187,8 @@ def check_read_back(
             assert abs(rm.zone - zone) < zone_tol, (where, rm.zone, zone)
         else:
             assert rm.zone == 0.0, (where, rm.zone)
+        if any(m.force for m in got):  # a format with force control: every move's force
+            assert abs(rm.force - mv.force) < 1e-9, (where, rm.force, mv.force)
         if k == 0:  # reached from anywhere: no stated time; a stated speed is the bounded one
             assert rm.duration is None, (where, rm.duration)
             assert rm.speed is None or rm.speed <= FIRST_MOVE_SPEED + 1e-9, (where, rm.speed)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -53,13 +54,14 @@ def _parser() -> argparse.ArgumentParser:
     )
     export.add_argument(
         "--out",
-        help="output file (one-file exports), folder, or .zip (several files: KRL .src + .dat,"
-        " one program per robot); default: the export's file names in the current folder",
+        help="output file (one-file exports), .zip, or folder: DIR/ (a trailing slash) or an"
+        " existing folder gets the export's own file names (KRL .src + .dat, one program per"
+        " robot), created if missing; default: the export's file names in the current folder",
     )
     export.add_argument(
         "--force",
         action="store_true",
-        help="write the program even if the plan collides or breaks a limit",
+        help="write the program even if the plan collides or breaks a limit (exit 0 once written)",
     )
     export.add_argument(
         "--any-vendor",
@@ -166,7 +168,8 @@ def _export(args: argparse.Namespace) -> int:
         )
         return 2
     check_vendor(wb, fmt, any_vendor=args.any_vendor)  # before planning: refused early
-    if args.out and Path(args.out).suffix:  # a file (or .zip): its folder must exist
+    folder = _out_folder(args.out)
+    if args.out and folder is None and Path(args.out).suffix:  # a file or .zip: folder must exist
         _out_file(args.out)
     args.format = fmt
     plan = plan_workflow(wb, args.workflow, progress=_Progress())
@@ -179,12 +182,14 @@ def _export(args: argparse.Namespace) -> int:
         )
         return 1
     exported = wb.export_program(args.format, args.workflow, force=True, any_vendor=args.any_vendor)
-    out = Path(args.out) if args.out else Path.cwd()
-    if out.suffix.lower() == ".zip":  # its folder was checked before planning
+    out = folder or (Path(args.out) if args.out else Path.cwd())
+    if folder is not None:  # DIR/ or an existing folder: the export's own file names in it
+        written = [str(p) for p in exported.write_to(folder)]
+    elif out.suffix.lower() == ".zip":  # its folder was checked before planning
         data = exported.zip_bytes()
         atomic_write(out, lambda fh: fh.write(data), binary=True)
         written = [f"{out} ({', '.join(exported.files)})"]
-    elif len(exported.files) == 1 and args.out and not out.is_dir():
+    elif len(exported.files) == 1 and args.out:
         atomic_write_text(_out_file(args.out), exported.text)
         written = [str(out)]
     else:
@@ -192,7 +197,12 @@ def _export(args: argparse.Namespace) -> int:
     for note in exported.notes:
         print(f"note: {note}")
     print(f"wrote {', '.join(written)} ({args.workflow}, {args.format})")
-    return 0 if plan.ok else 1
+    if not plan.ok:  # --force: written as asked, so the command succeeded
+        print(
+            "workbench export: warning: the plan has problems (above); written anyway (--force)",
+            file=sys.stderr,
+        )
+    return 0
 
 
 def _sweep(args: argparse.Namespace) -> int:
@@ -250,6 +260,17 @@ def _import(args: argparse.Namespace) -> int:
     moves = len(wb.project.program.moves) if wb.project.program else 0
     print(f"wrote {path}: program {wb.project.program.name} with {moves} items")  # type: ignore[union-attr]
     return 0
+
+
+def _out_folder(out: str | None) -> Path | None:
+    """Return `--out` as the folder to write into when it names one: it ends in a path
+    separator (``DIR/``, created with its parents when missing) or is an existing folder;
+    None when it names a file (or .zip), or is not given."""
+    if not out:
+        return None
+    if out.endswith(("/", os.sep)) or Path(out).is_dir():
+        return Path(out)
+    return None
 
 
 def _out_file(out: str) -> Path:

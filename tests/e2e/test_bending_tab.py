@@ -100,3 +100,30 @@ def test_reorder_fold_plan_and_first_collision(launch, tmp_path: Path) -> None: 
     steady_picture(lambda: canvas_png(page))
     (ROOT / "docs").mkdir(exist_ok=True)
     save_screenshot(page, "bending.png")
+
+    # Download a colliding plan: refused, and (no --force in the GUI) the message says what a
+    # GUI user can do.
+    wait_for(lambda: not app.bending.export.disabled, what="Download enabled by the plan")
+    page.get_by_role("button", name="Download program").click()
+    page.get_by_text("The GUI writes only plans without problems").first.wait_for()
+    page.get_by_text("--workflow bending --force").first.wait_for()
+
+
+def test_plan_and_download_the_bending_program(launch) -> None:  # type: ignore[no-untyped-def]
+    # The example's bending plan is collision-free: the Bending tab downloads its program, the
+    # service's export in the format the dropdown shows (NACHI FD for the MZ07).
+    app, page = launch(ROOT / "projects" / "bending_cell.json")
+    page.get_by_role("tab", name="Bending").click()
+    page.get_by_role("button", name="Plan", exact=True).click()
+    wait_for(lambda: app.wb.bending.last_plan is not None, timeout=90, what="the bending plan")
+    assert app.wb.bending.last_plan.ok
+    button = page.get_by_role("button", name="Download program")
+    wait_for(lambda: not app.bending.export.disabled, what="Download enabled by the plan")
+    assert app.bending.export.format.value == "nachi" == app.wb.default_program_format()
+    with page.expect_download() as dl:
+        button.click()
+    text = Path(dl.value.path()).read_text()
+    assert text == app.wb.export_program("nachi", "bending").text
+    assert text.startswith("' PROGRAM ") and "M1J,L" in text
+    steady_picture(lambda: canvas_png(page))
+    save_screenshot(page, "bending_download.png")

@@ -82,6 +82,18 @@ def test_plan_and_simulate_a_polishing_path(launch) -> None:  # type: ignore[no-
     steady_picture(lambda: canvas_png(page))
     save_screenshot(page, "polishing.png")
 
+    # Download the program (NACHI, no force control): the service's export, and a notification
+    # that stays says the targets assume a compliant tool with D = F/k (30 N / 5000 N/m = 6 mm).
+    assert app.polishing.format.value == "nachi"
+    with page.expect_download(timeout=120_000) as dl:
+        page.get_by_role("button", name="Download program").click()
+    text = Path(dl.value.path()).read_text()
+    assert text == app.wb.export_program("nachi", "polishing").text
+    assert "NO FORCE CONTROL" in text and "D = F/k = 6.000 mm" in text
+    page.get_by_text("nachi: no force control").first.wait_for()
+    page.get_by_text("compliant tool of spring rate k = 5000 N/m").first.wait_for()
+    save_screenshot(page, "polishing_download.png")
+
 
 def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     app, page = launch(ROOT / "projects" / "polishing_cell.json")

@@ -128,6 +128,46 @@ def test_cli_writes_a_file_a_folder_or_a_zip(tmp_path: Path) -> None:
         )
 
 
+def test_cli_out_folder_gets_the_exports_own_file_names(tmp_path: Path) -> None:
+    # DIR/ (a trailing slash): created, with its parents, and the export's file names in it
+    res = _cli("--out", f"{tmp_path / 'new' / 'nachi'}/")
+    assert res.returncode == 0, res.stderr
+    names = sorted(p.name for p in (tmp_path / "new" / "nachi").iterdir())
+    assert names == ["MZ07-01-A.001"]  # the one file the MZ07's NACHI export writes
+    # an existing folder (no slash) is a folder too, also for a one-file export
+    (tmp_path / "rapid").mkdir()
+    res = _cli("--format", "rapid", "--any-vendor", "--out", str(tmp_path / "rapid"))
+    assert res.returncode == 0, res.stderr
+    assert [p.name for p in (tmp_path / "rapid").iterdir()] == ["pick_place.mod"]
+    text = (tmp_path / "rapid" / "pick_place.mod").read_text()
+    assert text.startswith("MODULE pick_place")
+    # a name with a dot and a slash is a folder, not a file with a suffix
+    res = _cli("--format", "krl", "--any-vendor", "--out", f"{tmp_path / 'krl.v2'}/")
+    assert res.returncode == 0, res.stderr
+    assert sorted(p.name for p in (tmp_path / "krl.v2").iterdir()) == [
+        "pick_place.dat",
+        "pick_place.src",
+    ]
+
+
+def test_cli_force_writes_a_plan_with_problems_and_exits_0(tmp_path: Path) -> None:
+    data = json.loads(MZ07.read_text())
+    data["cell"]["objects"].append(
+        {"name": "crate", "shape": "box", "size": [200, 120, 200], "pose": {"xyz": [430, 0, 580]}}
+    )
+    project = tmp_path / "crate.json"
+    project.write_text(json.dumps(data))
+    out = tmp_path / "out" / "pick_place.001"
+    (tmp_path / "out").mkdir()
+    refused = run_cli("export", str(project), "--out", str(out))
+    assert refused.returncode == 1 and not out.exists()
+    assert "crate" in refused.stdout and "--force" in refused.stderr
+    forced = run_cli("export", str(project), "--out", str(out), "--force")
+    assert forced.returncode == 0, forced.stderr
+    assert out.read_text().startswith("' PROGRAM ")
+    assert "crate" in forced.stdout and "written anyway (--force)" in forced.stderr
+
+
 def test_cli_takes_the_vendors_format_and_refuses_another_unless_any_vendor(
     tmp_path: Path,
 ) -> None:

@@ -16,11 +16,10 @@ from workbench.geometry.transforms import (
 )
 from workbench.gui.fields import NumberField, schema_range
 from workbench.gui.handles import Removable
-from workbench.gui.motion_panel import download_of
 from workbench.gui.notify import guarded
+from workbench.gui.program_download import ProgramDownload
 from workbench.gui.progress import busy
 from workbench.gui.scene import COLLISION_COLOR, _add_mesh, place
-from workbench.service import EXPORT_FORMATS
 from workbench.service.assembly import KEY_POINT_FORMATS, PLANNER_CHOICES, AssemblyPlan
 
 if TYPE_CHECKING:
@@ -154,17 +153,15 @@ class AssemblyPanel:
             "Key points format", options=KEY_POINT_FORMATS, initial_value="csv"
         )
         self.download = g.add_button("Download key points", icon=viser.Icon.DOWNLOAD, disabled=True)
-        self.prog_format = g.add_dropdown(
-            "Program format",
-            options=tuple(EXPORT_FORMATS),
-            initial_value=self.wb.default_program_format() or "rapid",
-        )
-        self.prog_download = g.add_button(
-            "Download robot programs",
-            icon=viser.Icon.DOWNLOAD,
-            disabled=True,
+        self.programs = ProgramDownload(
+            s,
+            lambda: self.wb,
+            "assembly",
+            format_label="Program format",
+            label="Download robot programs",
             hint="One program per robot (a .zip), with the sync points the sequence needs",
         )
+        self.prog_format, self.prog_download = self.programs.format, self.programs.button
         self.handles += [
             self.info,
             self.part,
@@ -188,7 +185,6 @@ class AssemblyPanel:
             guarded(s, "Plan sequence")(lambda e: self._on_plan(e, one=False))
         )
         self.download.on_click(guarded(s, "Export key points")(self._on_download))
-        self.prog_download.on_click(guarded(s, "Export program")(self._on_program))
 
     def _build_scene(self) -> None:
         s = self.app.server
@@ -450,10 +446,3 @@ class AssemblyPanel:
             event.client.send_file_download(
                 f"{stem}_key_points.{fmt}", text.encode(), save_immediately=True
             )
-
-    def _on_program(self, event: viser.GuiEvent) -> None:
-        fmt = str(self.prog_format.value)
-        exported = self.wb.export_program(fmt, "assembly")  # refused if the plan has problems
-        if event.client is not None:
-            name, data = download_of(exported, f"assembly_{fmt}")
-            event.client.send_file_download(name, data, save_immediately=True)

@@ -18,6 +18,7 @@ from workbench.gui.bending_cycle import CycleFollower
 from workbench.gui.fields import NumberField, format_number
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
+from workbench.gui.program_download import ProgramDownload
 from workbench.gui.progress import busy
 from workbench.gui.scene import place
 from workbench.gui.sequence_search import SequenceSearch
@@ -123,6 +124,7 @@ class BendingPanel:
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
+        self.export = ProgramDownload(s, lambda: self.app.wb, "bending")  # the plan's programs
         self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)", visible=not self.has_press)
         self.handles += [
             self.info,
@@ -138,6 +140,7 @@ class BendingPanel:
             self.plan_button,
             self.progress,
             self.result,
+            *self.export.handles,
             self.plot_folder,
             self.levels_folder,  # after its checkboxes and markdown
         ]
@@ -373,6 +376,7 @@ class BendingPanel:
         """Show a plan's summary, and its motion on the timeline."""
         head = "**OK:** " if plan.ok else "**Collision:** "
         self.result.content = head + plan.summary()
+        self.export.disabled = False  # the export writes this plan (or says why not)
         cost = self.app.wb.bending.check_cost(plan)  # measured on request, not by the plan
         if cost is not None:  # one OBB tree checks the part throughout (no press)
             nb = float(len(self.app.wb.bending.part.bends))

@@ -11,10 +11,11 @@ import viser
 from workbench.gui import jobs
 from workbench.gui.handles import Removable
 from workbench.gui.notify import guarded, notify
+from workbench.gui.program_download import ProgramDownload
 from workbench.gui.program_editor import ProgramEditorPanel, table_markdown
 from workbench.gui.progress import busy
 from workbench.gui.timeline import Timeline
-from workbench.service import EXPORT_FORMATS, ExportedProgram, Workbench
+from workbench.service import Workbench
 from workbench.service.program_import import program_files
 
 
@@ -41,12 +42,14 @@ class MotionPanel:
         self.plan_button = g.add_button("Plan", icon=viser.Icon.ROUTE)
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
-        self.format = g.add_dropdown(
-            "Export format",
-            options=tuple(EXPORT_FORMATS),
-            initial_value=wb.default_program_format() or "rapid",
+        self.export = ProgramDownload(
+            server,
+            lambda: self.wb,
+            "motion",
+            stem=lambda: f"{self.wb.project.program.name}_{self.format.value}",  # type: ignore[union-attr]
+            after=lambda _: self.refresh(),  # a stale plan was planned again for the export
         )
-        self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.format, self.download = self.export.format, self.export.button
         self.upload = g.add_upload_button(
             "Import program",
             icon=viser.Icon.UPLOAD,
@@ -55,7 +58,6 @@ class MotionPanel:
         )
         self.upload.on_upload(guarded(server, "Import program")(self._on_import))
         self.plan_button.on_click(guarded(server, "Plan")(self._on_plan))
-        self.download.on_click(guarded(server, "Export")(self._on_download))
         self.handles: list[Removable] = [
             self.program,
             self.plan_button,
@@ -95,14 +97,6 @@ class MotionPanel:
             robot=self.wb.robot,
         )
 
-    def _on_download(self, event: viser.GuiEvent) -> None:
-        fmt = str(self.format.value)
-        exported = self.wb.export_program(fmt)  # refused (a notification) if the plan has problems
-        if event.client is not None:
-            name, data = download_of(exported, f"{self.wb.project.program.name}_{fmt}")  # type: ignore[union-attr]
-            event.client.send_file_download(name, data, save_immediately=True)
-        self.refresh()  # a stale plan was planned again for the export
-
     def _on_import(self, event: viser.GuiEvent) -> None:
         up = self.upload.value
         # a job like a plan: refused (Busy) while another runs, nothing changed then
@@ -115,11 +109,3 @@ class MotionPanel:
             text = "\n".join(f"- {n}" for n in notes[:20])
             more = f"\n- … and {len(notes) - 20} more" if len(notes) > 20 else ""
             notify(self.server, event.client, "Import notes", text + more, color="yellow")
-
-
-def download_of(exported: ExportedProgram, stem: str) -> tuple[str, bytes]:
-    """Return (file name, bytes) to download: the one file, or a zip `stem`.zip of several."""
-    if len(exported.files) == 1:
-        name, text = next(iter(exported.files.items()))
-        return name, text.encode()
-    return f"{stem}.zip", exported.zip_bytes()

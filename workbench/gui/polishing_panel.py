@@ -15,11 +15,10 @@ from numpy.typing import NDArray
 from workbench.errors import InputError, WorkbenchError
 from workbench.gui.fields import NumberField, format_number, schema_range
 from workbench.gui.handles import Removable
-from workbench.gui.motion_panel import download_of
 from workbench.gui.notify import guarded
+from workbench.gui.program_download import ProgramDownload
 from workbench.gui.progress import busy
 from workbench.gui.uploads import WORKPIECES, safe_name
-from workbench.service import EXPORT_FORMATS
 from workbench.service.polishing import PolishingPath, PolishingSimulation
 
 if TYPE_CHECKING:
@@ -128,12 +127,8 @@ class PolishingPanel:
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.path_info = g.add_markdown("")
         self.sim_info = g.add_markdown("")
-        self.format = g.add_dropdown(
-            "Export format",
-            options=tuple(EXPORT_FORMATS),
-            initial_value=app.wb.default_program_format() or "rapid",
-        )
-        self.download = g.add_button("Download program", icon=viser.Icon.DOWNLOAD, disabled=True)
+        self.export = ProgramDownload(app.server, lambda: self.app.wb, "polishing")
+        self.format, self.download = self.export.format, self.export.button
         self.plot_folder = g.add_folder("Force control", expand_by_default=True)
         self.handles += [
             self.workpiece_info,
@@ -153,7 +148,6 @@ class PolishingPanel:
         self.pattern.on_update(guard(self._on_parameter))
         self.plan_button.on_click(guard(self._on_plan))
         self.sim_button.on_click(guard(self._on_simulate))
-        self.download.on_click(guard(self._on_download))
         try:
             self.svc.load_workpiece()
         except WorkbenchError as exc:
@@ -364,13 +358,6 @@ class PolishingPanel:
                 aspect=1.6,
             ),
         ]
-
-    def _on_download(self, event: viser.GuiEvent) -> None:
-        fmt = str(self.format.value)
-        exported = self.app.wb.export_program(fmt, "polishing")  # refused if the plan has problems
-        if event.client is not None:
-            name, data = download_of(exported, f"polishing_{fmt}")
-            event.client.send_file_download(name, data, save_immediately=True)
 
     def remove(self) -> None:
         """Remove the tab's widgets and scene nodes."""

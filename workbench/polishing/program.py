@@ -13,10 +13,13 @@ between the trajectory's waypoints), so the moves add up to the plan's cycle tim
 
 Force: the plan's targets are the commanded points, moved D = F/k into the surface along the tool
 axis (`toolpath.force_offset`, seed 004: F = 20 N, k = 5000 N/m, D = 4 mm), so a controller
-without force control presses with F through the contact stiffness k; comments at the top and at
-the first process point state F, k and D. ABB's Integrated Force Control (FCPress1LStart /
-FCPressL / FCPressEnd) would take the surface points and F instead of the offset: not written by
-this build (see docs/programs.md).
+without force control presses with F only through a compliant tool of spring rate k; comments at
+the top and at the first process point state F, k and D, and the program's `contact`
+(`ContactForce`) makes every post without force control say so plainly in its header. The
+moves from the first to the last process point carry the force F (`MoveInstr.force`): RAPID
+writes them as ABB's Force Control pressing (FCCalib, FCPress1LStart, FCPressL, FCPressEnd on
+the first lead-out move; `motion.programs.rapid`), where F along the tool's z replaces the
+offset (see docs/programs.md).
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from workbench.kinematics.model import RobotModel
 from workbench.motion.program import Move, Program
 from workbench.motion.programs.controller_program import (
     Comment,
+    ContactForce,
     Instruction,
     MotionLimits,
     MoveInstr,
@@ -231,6 +235,7 @@ def polishing_program(
         model.dof,
         robot,
         lim,
+        ContactForce(settings.force, settings.control.stiffness),
     )
 
 
@@ -376,6 +381,7 @@ def _path_moves(
                 tool.name,
                 WOBJ,
                 dt,
+                force=settings.force if kind == "p" else 0.0,  # into contact .. the last point
             )
         )
         if b == last_in and b != n - 1:

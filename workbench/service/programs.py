@@ -14,7 +14,7 @@ from workbench.errors import InputError, PlanningError
 from workbench.kinematics.joint_convention import JointConvention
 from workbench.kinematics.robot_library import LibraryRobot, library_robot
 from workbench.motion.programs.controller_base import in_controller_base
-from workbench.motion.programs.controller_program import RobotProgram
+from workbench.motion.programs.controller_program import ContactForce, RobotProgram
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.formats import (
     PROGRAM_FORMATS,
@@ -33,6 +33,8 @@ if TYPE_CHECKING:
 
 #: The workflows that export robot programs.
 WORKFLOWS = ("motion", "bending", "assembly", "polishing")
+#: The formats whose programs press with force control (RAPID: ABB's FC Pressure, rapid.py).
+FORCE_CONTROL_FORMATS = ("rapid",)
 
 
 def _check_workflow(workflow: str) -> str:
@@ -181,7 +183,9 @@ def export(
         )
     if fmt in SAMPLE_FORMATS:
         samples = _samples(workflow, plan)
-        return write_samples(fmt, samples, [convention_of(wb, name) for name, _, _ in samples])
+        out = write_samples(fmt, samples, [convention_of(wb, name) for name, _, _ in samples])
+        note = contact_note(wb, workflow, fmt)  # the joints of the offset targets
+        return ExportedProgram(out.files, out.notes + ((note,) if note else ()))
     written = controller_programs(wb, workflow, robot_programs(wb, workflow, plan))
     return write_programs(fmt, written, models=robot_models(wb, written))
 
@@ -199,6 +203,16 @@ def robot_models(wb: Workbench, programs: list[RobotProgram]) -> list[str]:
         preset = presets.get(p.robot, project.robot.preset)
         out.append(controller_model(library_robot(preset).title if preset else p.robot))
     return out
+
+
+def contact_note(wb: Workbench, workflow: str, fmt: str) -> str | None:
+    """Return what an export of a pressing workflow (polishing) in a format without force
+    control assumes: a compliant tool with D = F/k, with the numbers (None: nothing to say).
+    Every post without force control writes it in its header; the GUI shows it on export."""
+    if _check_workflow(workflow) != "polishing" or fmt in FORCE_CONTROL_FORMATS:
+        return None
+    si = wb.polishing.si
+    return ContactForce(si.force, si.control.stiffness).compliance_note()
 
 
 def controller_programs(

@@ -307,7 +307,7 @@ def test_offs_and_reltool_give_the_displaced_poses():
 def test_unknown_instructions_are_listed_by_line():
     text = """MODULE hand
   CONST robtarget p1:=[[500,100,400],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
-  VAR loaddata myload;
+  VAR intnum myint;
   PROC main()
     ConfL \\Off;
     MoveL p1, v100, fine, tool0;
@@ -424,3 +424,71 @@ def test_names_shared_by_a_target_and_a_tool_get_distinct_identifiers():
     read = read_rapid(out.files)
     check_read_back(prog, read, model)
     assert np.allclose(solve_moves(read, model)[1], prog.moves[1].target.q, atol=1e-6)
+
+
+def _pressing_program():  # noqa: ANN202
+    """Return (program, model): home, a pressed run of two linear moves, a lift-off move."""
+    from workbench.motion.programs.controller_program import ContactForce
+
+    prog, model = sample_program()
+    home, pick, place = prog.moves[0], prog.moves[1], prog.moves[2]
+    ins = (
+        home,  # an exact stop: FCCalib runs with the robot still
+        replace(place, force=20.0, zone=0.01),
+        MoveInstr("linear", pick.target, 0.1, 0.0, "gripper", "fixture", 1.0, force=12.5),
+        MoveInstr("linear", place.target, 0.1, 0.0, "gripper", "fixture", 1.0),
+    )
+    return replace(prog, instructions=ins, contact=ContactForce(20.0, 5000.0)), model
+
+
+def test_pressed_moves_are_force_control_and_read_back():
+    prog, model = _pressing_program()
+    out = write_rapid(prog)
+    body = [line.strip() for line in out.text.splitlines()]
+    start = body.index("FCCalib gripper_load;")
+    assert body[start + 1 :][:3] == [
+        "FCPress1LStart p_place, [250,500,5000,1000]\\Fz:=20, 50, z10, gripper\\WObj:=fixture;",
+        "FCPressL p_pick, [100,500,5000,1000], 12.5, fine, gripper\\WObj:=fixture;",
+        "FCPressEnd p_place, [100,500,5000,1000], gripper\\WObj:=fixture;",
+    ]
+    # the sensor is calibrated with the tool's own load (its tooldata's tload)
+    assert "PERS loaddata gripper_load:=[2.5,[10,0,80],[1,0,0,0],0,0,0];" in body
+    assert body.index("MoveAbsJ home, v1000\\T:=1.25, fine, gripper\\WObj:=fixture;") < start
+    assert "NO FORCE CONTROL" not in out.text  # RAPID presses with F itself
+    assert any("Force Control" in n for n in out.notes)
+    read = read_rapid(out.files)
+    assert [m.force for m in read.moves] == [0.0, 20.0, 12.5, 0.0]
+    check_read_back(prog, read, model)  # targets, zones, speeds and every force
+    again = to_robot_program(read, model)
+    assert [m.force for m in again.moves] == [m.force for m in prog.moves]
+
+
+def test_a_pressed_run_must_start_still_and_end_with_a_linear_lift_off():
+    prog, _ = _pressing_program()
+    home, pressed, pressed2, lift = prog.instructions
+    blended = replace(prog, instructions=(replace(home, zone=0.02), pressed, pressed2, lift))
+    with pytest.raises(InputError, match="starts after an exact stop"):
+        write_rapid(blended)
+    with pytest.raises(InputError, match="ends while pressing"):
+        write_rapid(replace(prog, instructions=(home, pressed, pressed2)))
+    with pytest.raises(InputError, match="ends with a linear move"):
+        write_rapid(replace(prog, instructions=(home, pressed, home)))
+    with pytest.raises(InputError, match="contact force"):
+        write_rapid(replace(prog, instructions=(replace(home, force=5.0), pressed, lift)))
+
+
+def test_posts_without_force_control_state_the_compliant_tool():
+    from workbench.motion.programs.formats import post
+
+    prog, _ = _pressing_program()
+    d_mm = 20.0 / 5000.0 * 1000.0  # D = F/k
+    for fmt in ("krl", "ls", "urscript", "nachi"):
+        out = post(fmt)(prog)
+        text = "\n".join(out.files.values())
+        # the header says it plainly (FANUC wraps long comments: compare without line breaks)
+        flat = " ".join(
+            re.sub(r"^\s*(\d+:)?[\s!;#']*|\s*;?\s*$", "", ln) for ln in text.splitlines()
+        )
+        assert f"D = F/k = {d_mm:.3f} mm" in flat, fmt
+        assert "k = 5000 N/m" in flat and "F = 20 N" in flat, fmt
+        assert out.notes[0].startswith("NO FORCE CONTROL"), fmt

@@ -100,7 +100,10 @@ class MoveInstr:
 
     `speed`: a joint move's fraction (0, 1] of the joints' maximum speed; a linear or circular
     move's TCP speed [m/s]. `zone`: blend radius [m], 0 = exact stop. `duration`: the planned
-    time [s] from the previous target to this one (0 where unknown).
+    time [s] from the previous target to this one (0 where unknown). `force`: the contact force
+    [N] a linear move presses with along the tool's z axis where the controller has force
+    control (RAPID: FCPress1LStart / FCPressL, `rapid.py`); 0: none. Posts without force
+    control move to the target (see `ContactForce`).
     """
 
     kind: MoveKind
@@ -111,11 +114,46 @@ class MoveInstr:
     wobj: str = "base"
     duration: float = 0.0
     via: Target | None = None
+    force: float = 0.0
 
     @property
     def name(self) -> str:
         """Return the target's name."""
         return self.target.name
+
+
+@dataclass(frozen=True)
+class ContactForce:
+    """A process that presses on a surface (polishing): the contact `force` F [N] along the tool's
+    z axis and the contact `stiffness` k [N/m] its targets were planned with: they lie
+    D = F/k inside the surface along the tool axis (`offset` [m]). A controller with force
+    control presses with F itself (RAPID's FC Pressure: the moves' `force`); a position-only
+    program presses with F only through a compliant tool of spring rate k, which every other
+    post states in its header (`compliance_note`)."""
+
+    force: float
+    stiffness: float
+
+    @property
+    def offset(self) -> float:
+        """Return D = F/k [m]."""
+        return self.force / self.stiffness
+
+    def compliance_note(self) -> str:
+        """Return the plain statement a position-only program carries in its header."""
+        d_mm = self.offset * 1000.0
+        return (
+            f"NO FORCE CONTROL: position-only targets D = F/k = {d_mm:.3f} mm inside the surface"
+            f" (along the tool axis); they assume a compliant tool of spring rate k ="
+            f" {self.stiffness:g} N/m that presses with F = {self.force:g} N there; a stiffer"
+            f" tool presses harder, a rigid one is driven {d_mm:.3f} mm into the part"
+        )
+
+
+def compliance_notes(program: RobotProgram) -> list[str]:
+    """Return the header notes of a program written without force control: the compliant tool
+    its targets assume (`ContactForce.compliance_note`), or none."""
+    return [] if program.contact is None else [program.contact.compliance_note()]
 
 
 @dataclass(frozen=True, eq=False)
@@ -212,7 +250,8 @@ class MotionLimits:
 @dataclass(frozen=True, eq=False)
 class RobotProgram:
     """One robot's program (see the module docstring). `dof` joints; `convention` maps the
-    targets' model joints to the controller's; `robot` names the robot (a MultiMove task)."""
+    targets' model joints to the controller's; `robot` names the robot (a MultiMove task);
+    `contact` the contact force a pressing process plans with (None: no contact)."""
 
     name: str
     tools: tuple[ToolData, ...]
@@ -222,6 +261,7 @@ class RobotProgram:
     dof: int = 6
     robot: str = "robot"
     limits: MotionLimits = field(default_factory=MotionLimits)
+    contact: ContactForce | None = None
     T_world_base: FloatArray | None = None
     """The robot's base (4, 4) [m] in the world its controller shares with other robots (an
     assembly cell: the main robot's base, RAPID MultiMove's wobj0; each robot's work objects
@@ -302,7 +342,8 @@ class ReadTarget:
 class ReadMove:
     """A move as read: kind, target (and `via` for circular), `speed` (joint: fraction of max,
     linear/circular: TCP m/s; None when the program gives only a time), `zone` [m], `tool`
-    and `wobj` names, `duration` [s] when the program states one (RAPID \\T), source `line`."""
+    and `wobj` names, `duration` [s] when the program states one (RAPID \\T), source `line`,
+    `force` [N] a force-controlled move presses with (RAPID FCPress1LStart / FCPressL)."""
 
     kind: MoveKind
     target: ReadTarget
@@ -313,6 +354,7 @@ class ReadMove:
     duration: float | None = None
     via: ReadTarget | None = None
     line: int = 0
+    force: float = 0.0
 
     @property
     def name(self) -> str:
@@ -431,6 +473,11 @@ def check_program(program: RobotProgram, *, needs_mass: bool = False) -> None:
             )
         if not np.isfinite(mv.duration) or mv.duration < 0.0:
             raise InputError(f"planned duration {mv.duration!r} s must be >= 0", field=where)
+        if not np.isfinite(mv.force) or mv.force < 0.0 or (mv.force and mv.kind != "linear"):
+            raise InputError(
+                f"contact force {mv.force!r} N: a linear move's force is finite and >= 0",
+                field=where,
+            )
     if needs_mass:
         for name in sorted(used_tools):
             t = program.tool(name)

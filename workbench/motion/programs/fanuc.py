@@ -98,6 +98,7 @@ from workbench.motion.programs.controller_program import (
     WaitInput,
     WaitTime,
     check_program,
+    compliance_notes,
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
@@ -462,7 +463,8 @@ def write_ls(
             k += 1
         else:
             w.action(ins)
-    notes = [*prog_names.notes, *w.frame_names.notes, *w.names.notes, *w.rounding_notes()]
+    notes = [*compliance_notes(program), *prog_names.notes, *w.frame_names.notes, *w.names.notes]
+    notes += w.rounding_notes()
     head = [f"!{c}" for n in notes for c in _comment_lines("note: " + n)]
     body = [f"  {h} ;" for h in head] + w.mn
     if w.handlers:

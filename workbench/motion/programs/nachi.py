@@ -77,6 +77,7 @@ from workbench.motion.programs.controller_program import (
     WaitInput,
     WaitTime,
     check_program,
+    compliance_notes,
     move_label,
 )
 from workbench.motion.programs.exported import ExportedProgram
@@ -325,6 +326,7 @@ def write_nachi(
         " documented; the Cartesian poses are in the TARGET comments",
         "tool TCPs (H=n) and accuracy distances (A=n) are controller constants: set them as listed",
     ]
+    notes[:0] = compliance_notes(program)  # first: what the targets assume
     if any(isinstance(i, WaitInput) and i.timeout is not None for i in program.actions()):
         notes.append(
             "wait-input timeouts are not enforced on the controller (see the TIMEOUT comments)"

@@ -26,6 +26,17 @@
   ``PERS tasks`` list of the MultiMove task names ``"T_" + robot program name upper-case``
   (the controller's motion tasks must carry those names; MultiMove's defaults are T_ROB1..).
 
+Force control (a program whose moves carry a contact `force`, e.g. polishing): ABB's FC
+Pressure instructions (Application manual - Force Control, RAPID references, instructions
+FCCalib, FCPress1LStart, FCPressL, FCPressEnd; the RobotWare Force Control option with a force
+sensor), `_Press`: a run of pressed linear moves starts after an exact stop with ``FCCalib
+<tool>_load;`` (the sensor calibrated with the tool's ``PERS loaddata``, the tooldata's tload)
+and ``FCPress1LStart to, speed\\Fz:=F, 50, zone, tool\\WObj:=w;`` (press along the tool's z
+from where the robot stands until 50 % of F, then move to the target with F), goes on with
+``FCPressL to, speed, F, zone, tool\\WObj:=w;`` and ends with ``FCPressEnd to, speed,
+tool\\WObj:=w;`` on the next (linear) move, which lifts off. Along the force direction the robot
+follows F, not the targets (they lie D = F/k inside the surface, `ContactForce`).
+
 confdata [cf1, cf4, cf6, cfx] (RAPID Technical Reference Manual - Instructions, Functions and
 Data types, data type *confdata*, serial robots): cf1, cf4, cf6 are the quadrant numbers of the
 controller's axes 1, 4 and 6, floor(angle / 90 deg) (0..90 deg -> 0, -90..0 deg -> -1,
@@ -69,6 +80,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from workbench.errors import InputError
 from workbench.kinematics.arm_configuration import ArmConfiguration
 from workbench.motion.programs.angles import quaternion_wxyz
 from workbench.motion.programs.controller_program import (
@@ -116,6 +128,7 @@ RAPID_RESERVED = (
     " MoveAbsJ MoveJ MoveL MoveC MoveExtJ SearchL TriggL SetDO PulseDO Set Reset WaitDI WaitDO"
     " WaitTime WaitUntil WaitSyncTask SyncMoveOn SyncMoveOff ConfJ ConfL SingArea VelSet AccSet"
     " Stop Offs RelTool CRobT CJointT TPWrite"
+    " FCCalib FCPress1LStart FCPressL FCPressEnd FCAct FCDeact"
     " robtarget jointtarget tooldata wobjdata loaddata speeddata zonedata confdata syncident"
     " tasks num dnum bool string pos orient pose signaldi signaldo"
     " main tool0 wobj0 load0 fine "
@@ -138,6 +151,9 @@ CFX_TABLE = {
 }
 _V_ORI, _V_LEAX, _V_REAX = 500, 5000, 1000
 _JOINT_SPEED = "v1000"  # nominal: \T sets the time
+#: FCPress1LStart's ForceThreshold [% of the force]: the contact is taken as made, and the move
+#: to the target starts, at this share of F (ours; public RAPID programs use 15 .. 60).
+FC_START_THRESHOLD = 50
 
 
 def _num(x: float, nd: int) -> str:
@@ -219,7 +235,13 @@ class _Writer:
         self.names = NameTable("RAPID", RAPID_RESERVED, max_len=MAX_NAME_LEN, prefix="p")
         self.module = self.names(program.name, "program")
         # declarations by kind, each in the order first used: tools, work objects, sync data, targets
-        self.decl: dict[str, list[str]] = {"tool": [], "wobj": [], "sync": [], "target": []}
+        self.decl: dict[str, list[str]] = {
+            "tool": [],
+            "load": [],
+            "wobj": [],
+            "sync": [],
+            "target": [],
+        }
         self.multimove = any(isinstance(i, SyncPoint) for i in program.instructions)
         # MultiMove: PERS data of one name is shared by all tasks; TASK PERS keeps each robot's own
         self.pers = "TASK PERS" if self.multimove else "PERS"
@@ -232,6 +254,7 @@ class _Writer:
         self.syncs: dict[str, str] = {}
         self.notes: list[str] = []
         self.moved = self.first_move = False
+        self.press = _Press(self)
 
     def _declare(self, name: str, fallback: str, text_of, group: str = "") -> str:  # noqa: ANN001
         """Return the identifier of a datum (`text_of(ident)` its declaration); a different
@@ -324,6 +347,8 @@ class _Writer:
         tail = f"{zone}, {tool}\\WObj:={wobj};"
         via = self.target(mv.via) if mv.via is not None else ""
         to = self.target(mv.target)
+        if self.press.move(mv, to, tool, wobj):
+            return
         if mv.kind == "joint":
             instr = "MoveJ" if mv.target.cartesian else "MoveAbsJ"
             speed = _JOINT_SPEED
@@ -402,6 +427,7 @@ class _Writer:
                 self.move(ins)
             else:
                 self.action(ins)
+        self.press.end()
         notes = tuple(self.names.notes + self.notes)
         head = [
             f"MODULE {self.module}",
@@ -427,6 +453,81 @@ class _Writer:
             "",
         ]
         return "\n".join(lines), notes
+
+
+class _Press:
+    """The force-controlled runs of a RAPID program (module docstring, "Force control").
+
+    ABB, "Application manual - Force control" (e.g. 3HAC083267-001, RobotWare 7.7), chapter
+    RAPID references, instructions FCCalib (calibrate the sensor with the load data, robot
+    still and out of contact), FCPress1LStart (ToPoint, Speed \\Fx|\\Fy|\\Fz force [N],
+    ForceThreshold [%], Zone, Tool \\WObj), FCPressL (ToPoint, Speed, Force [N], Zone, Tool
+    \\WObj) and FCPressEnd (ToPoint, Speed, Tool \\WObj); the argument order as public RAPID
+    polishing programs write them (found with the code search, not copied). The manual's own
+    pages were not readable here: check ForceThreshold's unit and the force frame (the tool's,
+    \\Fz along its z) against the manual before a program runs on a cell."""
+
+    def __init__(self, w: _Writer) -> None:
+        self.w = w
+        self.pressing = False
+        self.stopped = True  # the last move ended in an exact stop (none yet: standing)
+        self.last = ""  # the last move's target, for errors
+
+    def load(self, name: str) -> str:
+        """Return the loaddata of a tool (its tooldata's tload), declared on first use."""
+        t = self.w.p.tool(name)
+        mass, cog = _TOOL0_LOAD if _is_flange(t) else (t.mass, t.cog)  # type: ignore[assignment]
+        load = (
+            f"[{_num(float(mass), 4)},{_vec(np.asarray(cog, float) * 1000.0, 4)},[1,0,0,0],0,0,0]"  # type: ignore[arg-type]
+        )
+        return self.w._declare(
+            f"{t.name}_load", "load", lambda i: f"    PERS loaddata {i}:={load};", "load"
+        )
+
+    def move(self, mv: MoveInstr, to: str, tool: str, wobj: str) -> bool:
+        """Write `mv` if it starts, continues or ends a pressed run; False: a plain move."""
+        body, speed, force = self.w.body, speeddata(mv.speed), _num(mv.force, 4)
+        tail = f"{zonedata(mv.zone)}, {tool}\\WObj:={wobj};"
+        was, self.last = self.last, f"move to {mv.name!r}"
+        if mv.force > 0.0 and not self.pressing:
+            if not self.stopped:  # FCCalib measures the sensor's offset: robot still, no contact
+                raise InputError(
+                    f"{was}: a force-controlled run starts after an exact stop (FCCalib needs"
+                    " the robot standing still); give that move zone 0",
+                    field=f"program {self.w.p.name}",
+                )
+            body.append(f"        FCCalib {self.load(mv.tool)};")
+            body.append(
+                f"        FCPress1LStart {to}, {speed}\\Fz:={force}, {FC_START_THRESHOLD}, {tail}"
+            )
+            self.w.notes.append(
+                f"force control: ABB's Force Control option presses with {mv.force:g} N along"
+                " the tool's z (FCPress1LStart .. FCPressEnd) instead of the targets' offset"
+            )
+        elif mv.force > 0.0:
+            body.append(f"        FCPressL {to}, {speed}, {force}, {tail}")
+        elif self.pressing:
+            if mv.kind != "linear":
+                raise InputError(
+                    f"{self.last}: a force-controlled run ends with a linear move off the"
+                    " surface (FCPressEnd)",
+                    field=f"program {self.w.p.name}",
+                )
+            body.append(f"        FCPressEnd {to}, {speed}, {tool}\\WObj:={wobj};")
+        else:
+            self.stopped = mv.zone <= 0.0
+            return False
+        self.pressing, self.stopped = mv.force > 0.0, mv.zone <= 0.0 or mv.force <= 0.0
+        return True
+
+    def end(self) -> None:
+        """Refuse a program that ends while pressing (no FCPressEnd would lift the tool)."""
+        if self.pressing:
+            raise InputError(
+                f"{self.last}: the program ends while pressing; end the force-controlled run"
+                " with a linear move off the surface (FCPressEnd)",
+                field=f"program {self.w.p.name}",
+            )
 
 
 def write_rapid(program: RobotProgram) -> ExportedProgram:

@@ -19,6 +19,13 @@ Functions and Data types):
   aggregates, ``Offs(p, dx, dy, dz)`` (displaced in the work object [mm]) or ``RelTool(p, dx,
   dy, dz \\Rx \\Ry \\Rz)`` (displaced in the tool frame [mm], turned about the tool's x, then
   the new y, then the new z [deg]).
+- ABB's Force Control pressing (Application manual - Force control, RAPID references; the
+  forms `rapid.py` writes): ``FCPress1LStart to, speed\\Fz:=F, threshold, zone, tool``,
+  ``FCPressL to, speed, F, zone, tool`` (linear moves that press with F [N] along the tool's z:
+  `ReadMove.force`) and ``FCPressEnd to, speed, tool`` (a linear move that ends the run: exact
+  stop, no force); each with ``\\WObj:=``. ``FCCalib load;`` (the sensor calibrated before a
+  run) is understood and gives no instruction; ``\\Fx``/``\\Fy`` and the other switches
+  are listed in ``unknown``.
 - ``SetDO``, ``Set``, ``Reset``, ``PulseDO`` (``\\PLength`` default 0.2 s), ``WaitDI`` (with
   ``\\MaxTime`` as the timeout; ``\\TimeFlag`` accepted), ``WaitTime``, ``WaitSyncTask`` (the
   SyncPoint's robots are the task names with the ``T_`` prefix dropped, lower-case).
@@ -87,6 +94,7 @@ _DATA_TYPES = {
     "string",
     "syncident",
     "tasks",
+    "loaddata",
 }
 _BLOCK_OPEN = {"IF", "FOR", "WHILE", "TEST"}
 _BLOCK_CLOSE = {"ENDIF", "ENDFOR", "ENDWHILE", "ENDTEST"}
@@ -683,6 +691,37 @@ class _Reader:
         speed = None if kind == "joint" else v_tcp / 1000.0
         return ReadMove(kind, to, speed, zone / 1000.0, tool, wobj, duration, via, self.line)  # type: ignore[arg-type]
 
+    def press(self, instr: str, a: _Args) -> ReadMove:
+        """Return a Force Control pressing move (FCPress1LStart, FCPressL, FCPressEnd)."""
+        allowed = {"fcpress1lstart": {"wobj", "fz"}}.get(instr, {"wobj"})
+        n = {"fcpress1lstart": 5, "fcpressl": 5, "fcpressend": 3}[instr]
+        if set(a.switches) - allowed or (instr == "fcpress1lstart" and "fz" not in a.switches):
+            raise _Unsupported(f"{instr} with switches {sorted(a.switches)}")
+        if len(a.positional) != n:
+            raise InputError(f"{self.where}: {instr} needs {n} arguments")
+        pos = a.positional
+        force = 0.0
+        if instr == "fcpress1lstart":
+            force = self.number(a.switches["fz"], "\\Fz [N]")
+        elif instr == "fcpressl":
+            force = self.number(pos[2], "FCPressL's force [N]")
+        if not force >= 0.0:
+            raise InputError(f"{self.where}: the contact force {force} N must be >= 0")
+        zone = 0.0 if instr == "fcpressend" else self.zone(pos[3], a) / 1000.0
+        wobj = self.frame_name(
+            a.switches.get("wobj", ("id", "wobj0")), self.wobjs, "wobj0", "work object"
+        )
+        return ReadMove(
+            "linear",
+            self.target(pos[0], "robtarget", "target"),
+            self.speed(pos[1], a) / 1000.0,
+            zone,
+            self.frame_name(pos[n - 1], self.tools, "tool0", "tool"),
+            wobj,
+            line=self.line,
+            force=force,
+        )
+
     def signal(self, node) -> Signal:  # noqa: ANN001
         if node[0] != "id":
             raise _Unsupported("a signal expression")
@@ -696,12 +735,19 @@ class _Reader:
             raise InputError(f"{self.where}: a digital value is 0 or 1, got {_show(v)}")
         return bool(v)
 
-    def instruction(self, name: str, a: _Args) -> ReadMove | Action:
+    def instruction(self, name: str, a: _Args) -> ReadMove | Action | None:
         n = name.lower()
         sw = set(a.switches)
         pos = a.positional
         if n in ("moveabsj", "movej", "movel", "movec"):
             return self.move(n, a)
+        if n in ("fcpress1lstart", "fcpressl", "fcpressend"):
+            return self.press(n, a)
+        if n == "fccalib" and len(pos) == 1 and not sw:
+            load = self.env.get(pos[0][1].lower()) if pos[0][0] == "id" else None
+            if load is None or load.type != "loaddata":
+                raise _Unsupported("FCCalib of an undeclared loaddata")
+            return None  # the calibration before a pressed run: no instruction of its own
         if n == "setdo" and len(pos) == 2 and sw <= {"sync"}:
             return SetOutput(self.signal(pos[0]), self.bit(pos[1]))
         if n in ("set", "reset") and len(pos) == 1 and not sw:
@@ -751,7 +797,9 @@ class _Reader:
         args = p.args()
         if not p.done():
             raise _Unsupported("trailing text")
-        self.instructions.append(self.instruction(name, args))
+        ins = self.instruction(name, args)
+        if ins is not None:
+            self.instructions.append(ins)
 
     def file(self, fname: str, text: str, multi: bool) -> None:
         stmts = _statements(text, fname)

@@ -111,6 +111,7 @@ def to_robot_program(
                 ins.wobj,
                 ins.duration or 0.0,
                 via,
+                ins.force,
             )
         )
     return RobotProgram(

@@ -70,6 +70,7 @@ from workbench.motion.programs.controller_program import (
     WaitInput,
     WaitTime,
     check_program,
+    compliance_notes,
 )
 from workbench.motion.programs.exported import ExportedProgram
 from workbench.motion.programs.first_move import safe_start
@@ -332,7 +333,7 @@ def write_urscript(program: RobotProgram) -> ExportedProgram:
             k += 1
         else:
             w.action(ins)
-    notes = tuple(w.vars.notes + w.targets.notes)
+    notes = tuple(compliance_notes(program) + w.vars.notes + w.targets.notes)
     if w.cut:
         k, z, r = max(w.cut, key=lambda c: c[1] - c[2])
         notes += (
