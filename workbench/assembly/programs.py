@@ -158,7 +158,7 @@ def assembly_programs(
             n,
             settings.limits,
             # MultiMove's shared world is the main arm's base (its wobj0)
-            invert_transform(np.asarray(world, float))
+            T_world_base=invert_transform(np.asarray(world, float))
             @ np.asarray(arms[n].setup.T_world_base, float),
         )
         for n in used

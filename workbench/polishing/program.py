@@ -235,7 +235,7 @@ def polishing_program(
         model.dof,
         robot,
         lim,
-        ContactForce(settings.force, settings.control.stiffness),
+        contact=ContactForce(settings.force, settings.control.stiffness),
     )
 
 

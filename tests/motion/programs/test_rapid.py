@@ -453,7 +453,8 @@ def test_pressed_moves_are_force_control_and_read_back():
     ]
     # the sensor is calibrated with the tool's own load (its tooldata's tload)
     assert "PERS loaddata gripper_load:=[2.5,[10,0,80],[1,0,0,0],0,0,0];" in body
-    assert body.index("MoveAbsJ home, v1000\\T:=1.25, fine, gripper\\WObj:=fixture;") < start
+    # the first move is the safe one (first_move.py): bounded speed, no \T, an exact stop
+    assert body.index("MoveAbsJ home, [250,45,5000,1000], fine, gripper\\WObj:=fixture;") < start
     assert "NO FORCE CONTROL" not in out.text  # RAPID presses with F itself
     assert any("Force Control" in n for n in out.notes)
     read = read_rapid(out.files)
@@ -466,7 +467,8 @@ def test_pressed_moves_are_force_control_and_read_back():
 def test_a_pressed_run_must_start_still_and_end_with_a_linear_lift_off():
     prog, _ = _pressing_program()
     home, pressed, pressed2, lift = prog.instructions
-    blended = replace(prog, instructions=(replace(home, zone=0.02), pressed, pressed2, lift))
+    # (the first move always ends in an exact stop, first_move.py: a blended move before the run)
+    blended = replace(prog, instructions=(home, replace(lift, zone=0.02), pressed, pressed2, lift))
     with pytest.raises(InputError, match="starts after an exact stop"):
         write_rapid(blended)
     with pytest.raises(InputError, match="ends while pressing"):
