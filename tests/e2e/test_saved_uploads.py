@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 import trimesh
-from browser_helpers import PAGE_TIMEOUT_MS, close_notifications, free_port
+from browser_helpers import PAGE_TIMEOUT_MS, close_notifications, free_port, wait_for
 
 pytestmark = pytest.mark.e2e
 
@@ -142,8 +142,15 @@ def test_uploads_saved_then_sigterm_then_the_project_opens_and_plans(
                 page.get_by_text(shown).first.wait_for()  # the panel shows it in use
                 close_notifications(page)
             page.get_by_role("tab", name="Project").click()
+            before = project.read_text()
             page.get_by_role("button", name="Save to cell.json", exact=True).click()
-            page.get_by_text("Saved").first.wait_for()
+            # the notification's own title (a bare "Saved" also matches the File name field's
+            # hint "saved in the working folder"), then the file the save replaced (atomic: old
+            # or new, never half): nothing is read before the save has written
+            page.get_by_text("Saved", exact=True).first.wait_for()
+            wait_for(
+                lambda p=project, b=before: p.read_text() != b, what="the save to write the file"
+            )
             assert _uploads_of(proc.pid), "the uploads wait in the server's upload folders"
             saved = json.loads(project.read_text())
             context.close()
