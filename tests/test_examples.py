@@ -8,7 +8,6 @@ with the public API where a number is involved.
 from __future__ import annotations
 
 import ast
-import importlib.util
 import json
 import re
 import subprocess
@@ -19,6 +18,7 @@ from types import ModuleType
 
 import numpy as np
 import pytest
+from twins import load_module
 
 from workbench import Workbench
 
@@ -28,12 +28,7 @@ EXAMPLES = ROOT / "examples"
 
 def _load(name: str) -> ModuleType:
     """Import examples/<name>.py (its name starts with a digit: not importable by `import`)."""
-    path = EXAMPLES / f"{name}.py"
-    spec = importlib.util.spec_from_file_location(f"example_{name}", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return load_module(f"examples/{name}.py", f"example_{name}")
 
 
 def _run(name: str, capsys: pytest.CaptureFixture[str], *args: object) -> tuple[object, str]:

@@ -9,9 +9,7 @@ every bad file is refused naming the field and the fix.
 
 from __future__ import annotations
 
-import importlib.util
 import io
-import sys
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +18,7 @@ import numpy as np
 import pytest
 import shapely
 from ezdxf.enums import TextEntityAlignment
+from twins import load_module
 
 from workbench.cad.dxf import read_flat_pattern
 from workbench.cad.dxf_write import write_flat_pattern
@@ -38,18 +37,7 @@ FIELD = "bending.part_file (flat.dxf)"
 PAN_DXF = ROOT / "projects" / "parts" / "pan_flat.dxf"
 
 
-def _twin() -> Any:
-    """Import tests/sheetmetal/test_flat_split.py (its part loader and part comparison)."""
-    path = ROOT / "tests" / "sheetmetal" / "test_flat_split.py"
-    spec = importlib.util.spec_from_file_location("flat_pattern_twin", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-TWIN = _twin()
+TWIN = load_module("tests/sheetmetal/test_flat_split.py", "flat_pattern_twin")
 
 
 def _new(units: int = 4, version: str = "R2010") -> tuple[Any, Any]:

@@ -4,14 +4,13 @@ pose target's stored configuration survives save and load and is the branch the 
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pinocchio as pin
 import pytest
+from twins import load_module
 
 from workbench import Workbench
 from workbench.errors import PlanningError
@@ -27,18 +26,7 @@ EXAMPLE = ROOT / "projects" / "mz07_cell.json"
 pytestmark = pytest.mark.slow  # every test plans the example, some of them 20 times
 
 
-def _twin() -> Any:
-    """Import tests/kinematics/test_target_configuration.py (its pinocchio configuration twin)."""
-    path = ROOT / "tests" / "kinematics" / "test_target_configuration.py"
-    spec = importlib.util.spec_from_file_location("target_configuration_twin", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
-TWIN = _twin()
+TWIN = load_module("tests/kinematics/test_target_configuration.py", "target_configuration_twin")
 
 
 def _without_start_and_configurations() -> Workbench:

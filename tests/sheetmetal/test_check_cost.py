@@ -2,20 +2,16 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 from scipy.spatial.transform import Rotation
+from twins import load_module
 
 from workbench.geometry import OBB
 from workbench.geometry.transforms import make_transform
 from workbench.sheetmetal import SheetMetalPart
 from workbench.sheetmetal.check_cost import check_cost, flat_loop, time_checks
 
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)  # type: ignore[arg-type]
-_spec.loader.exec_module(_tp)  # type: ignore[union-attr]
+_tp = load_module("tests/sheetmetal/test_part.py", "part_twin")
 
 
 def test_flat_loop_equals_the_tree_and_counts_every_pair() -> None:

@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import importlib.util
 import itertools
-from pathlib import Path
 
 import fcl
 import numpy as np
 import pytest
 from numpy.typing import ArrayLike
 from scipy.spatial.transform import Rotation
+from twins import load_module
 
 from workbench.errors import InputError
 from workbench.geometry import OBB, obb_overlap
@@ -18,9 +17,7 @@ from workbench.geometry.transforms import make_transform, rot_z
 from workbench.sheetmetal import SheetMetalPart
 from workbench.sheetmetal.obbtree import OBBTree
 
-_spec = importlib.util.spec_from_file_location("tp", Path(__file__).with_name("test_part.py"))
-_tp = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_tp)
+_tp = load_module("tests/sheetmetal/test_part.py", "part_twin")
 
 
 @pytest.fixture(scope="module")
