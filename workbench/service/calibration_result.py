@@ -52,7 +52,7 @@ class CalibrationResult:
 
 
 def _xyz(v: object) -> str:
-    x, y, z = (float(c) + 0.0 for c in np.asarray(v, float))
+    x, y, z = (round(float(c), 3) + 0.0 for c in np.asarray(v, float))  # + 0.0: no "-0.000"
     return f"x {x:.3f}  y {y:.3f}  z {z:.3f}"
 
 
@@ -62,7 +62,7 @@ def pose_text(T: FloatArray) -> str:
 
 
 def _pose_text(pose: Pose) -> str:
-    r = ", ".join(f"{v + 0.0:.4f}" for v in pose.rpy)
+    r = ", ".join(f"{round(v, 4) + 0.0:.4f}" for v in pose.rpy)
     return f"{_xyz(pose.xyz)} mm, rpy [{r}] deg"
 
 
