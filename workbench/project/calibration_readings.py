@@ -107,7 +107,8 @@ def _table(
     kind, width = _header(head_line, head, source, dof)
     if kind not in kinds:
         raise InputError(
-            f"this file needs label,x,y,z (points [mm]), not {kind}", field=f"{source} line 1"
+            f"this file needs label,x,y,z (points [mm]), not {kind}",
+            field=f"{source} line {head_line}",
         )
     unit = "deg" if kind == "joints" else "mm"
     labels: list[str] = []
@@ -116,7 +117,8 @@ def _table(
     for r, (number, cells) in enumerate(body):
         if len(cells) != width + 1:
             raise InputError(
-                f"{len(cells)} values but the header has {width + 1} columns ({','.join(head)})",
+                f"{len(cells) - 1} values after the label but the header names {width}"
+                f" ({','.join(head[1:])}); give one per column",
                 field=f"{source} line {number}",
             )
         label = cells[0]
