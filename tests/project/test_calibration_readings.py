@@ -8,7 +8,7 @@ import pytest
 
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import library_robot
-from workbench.project.calibration_readings import parse_known, parse_readings
+from workbench.project.calibration_readings import parse_known, parse_readings, work_object_name
 from workbench.project.models import Robot
 
 MZ07 = Robot(preset="mz07")
@@ -65,3 +65,11 @@ def test_known_points_refuse_joints() -> None:
     with pytest.raises(InputError, match="label,x,y,z") as err:
         parse_known("label,j1,j2,j3\na,1,2,3\n", source="k.csv")
     assert err.value.field == "k.csv line 1"
+
+
+def test_work_object_names_are_checked() -> None:
+    assert work_object_name("fixture 2") == "fixture 2"
+    for bad, detail in (("base", "is the robot base"), ("", "1 to 64"), ("a\tb", "printable")):
+        with pytest.raises(InputError, match=detail) as err:
+            work_object_name(bad)
+        assert err.value.field == "work object name"

@@ -22,9 +22,11 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
+from pydantic import TypeAdapter, ValidationError
 
 from workbench.errors import InputError
 from workbench.project.models import Robot
+from workbench.project.program_io import BASE_WOBJ, Name
 from workbench.project.units import DEG, MM
 
 FloatArray = NDArray[np.float64]
@@ -159,3 +161,18 @@ def parse_known(text: str, *, source: str) -> tuple[tuple[str, ...], FloatArray]
     """Return (labels, points (n, 3) [m]) of a known-points CSV `label,x,y,z` [mm]."""
     _, labels, _, values = _table(text, source, None, ("points",))
     return labels, values * MM
+
+
+def work_object_name(name: str) -> str:
+    """Return `name` checked as a new or existing work object's name (InputError naming it)."""
+    try:
+        TypeAdapter(Name).validate_python(name)
+    except ValidationError:
+        raise InputError(
+            f"{name!r}: give 1 to 64 printable characters", field="work object name"
+        ) from None
+    if name == BASE_WOBJ:
+        raise InputError(
+            f"{name!r} is the robot base; choose another name", field="work object name"
+        )
+    return name

@@ -26,7 +26,12 @@ from workbench.calibration.measured import flange_poses, in_model_base, tcp_posi
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import library_robot
 from workbench.project import Project, project_from_dict
-from workbench.project.calibration_readings import Readings, parse_known, parse_readings
+from workbench.project.calibration_readings import (
+    Readings,
+    parse_known,
+    parse_readings,
+    work_object_name,
+)
 from workbench.project.units import matrix_to_pose
 from workbench.service.calibration_result import (
     CalibrationResult,
@@ -87,11 +92,11 @@ class CalibrationService:
         )
         T_world_base = self.wb.setup.T_world_base
         tips = fit.tips(T[approach])
-        T_world_tcp = T_world_base @ T[approach[-1]] @ fit.T_flange_tcp
         tool = self.wb.project.tool
         T_new = fit.T_flange_tcp.copy()
         if not fit.oriented:  # the position measured, the orientation kept
             T_new[:3, :3] = self.wb.setup.T_flange_tcp[:3, :3]
+        T_world_tcp = T_world_base @ T[approach[-1]] @ T_new
         return CalibrationResult(
             kind="tcp",
             name=tool.name,
@@ -123,6 +128,7 @@ class CalibrationService:
         [m] dropped and named). The frame is in the world, as the project stores work objects."""
         if method not in WOBJ_METHODS:
             raise InputError(f"method {method!r}: give one of {', '.join(WOBJ_METHODS)}")
+        work_object_name(name)
         readings = self._readings(csv_text, source)
         measured = self._base_points(readings)
         T_world_base = self.wb.setup.T_world_base
