@@ -73,3 +73,14 @@ def test_work_object_names_are_checked() -> None:
         with pytest.raises(InputError, match=detail) as err:
             work_object_name(bad)
         assert err.value.field == "work object name"
+
+
+def test_joints_outside_the_robots_range_are_noted_not_refused() -> None:
+    # Readings of a real robot lie within its ranges: one outside says the project's robot (or
+    # its convention) is not the one measured. Noted in the summary, not refused: a range in
+    # the library may be an estimate.
+    lo, hi = library_robot("mz07").controller_limits_deg[1]
+    text = f"label,j1,j2,j3,j4,j5,j6\np1,0,{hi + 5},0,0,0,0\np2,0,{lo + 1},0,0,0,0\n"
+    r = _parse(text)
+    assert len(r.notes) == 1 and r.notes[0].startswith(f"r.csv line 2: p1 j2 = {hi + 5:.3f} deg")
+    assert r.joints.shape == (2, 6)

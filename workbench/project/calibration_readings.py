@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 from pydantic import TypeAdapter, ValidationError
 
 from workbench.errors import InputError
+from workbench.kinematics.robot_library import LIBRARY
 from workbench.project.models import Robot
 from workbench.project.program_io import BASE_WOBJ, Name
 from workbench.project.units import DEG, MM
@@ -44,6 +45,7 @@ class Readings:
     lines: tuple[int, ...]
     joints: FloatArray | None = None
     points: FloatArray | None = None
+    notes: tuple[str, ...] = ()  # joint values outside the robot's ranges (a wrong robot?)
 
     @property
     def kind(self) -> str:
@@ -152,9 +154,39 @@ def parse_readings(text: str, *, source: str, robot: Robot, dof: int) -> Reading
         return Readings(source, labels, lines, points=values * MM)
     convention = robot.convention()
     q = values * DEG
-    return Readings(
-        source, labels, lines, joints=q if convention is None else convention.to_model(q)
-    )
+    notes = _outside(values, _controller_limits(robot), labels, lines, source)
+    model = q if convention is None else convention.to_model(q)
+    return Readings(source, labels, lines, joints=model, notes=notes)
+
+
+def _controller_limits(robot: Robot) -> FloatArray | None:
+    """Return the robot's joint ranges (dof, 2) [deg, the controller's] (None: a URDF's)."""
+    if robot.preset is not None:
+        return np.asarray(LIBRARY[robot.preset].controller_limits_deg, float)
+    if robot.dh is not None:
+        return np.array([[r.min, r.max] for r in robot.dh], float)
+    return None
+
+
+def _outside(
+    values: FloatArray,
+    limits: FloatArray | None,
+    labels: tuple[str, ...],
+    lines: tuple[int, ...],
+    source: str,
+) -> tuple[str, ...]:
+    """Return a note per joint reading outside the robot's range [deg]: readings of a real
+    robot lie within it, so one outside says the robot or its convention is not the real one."""
+    if limits is None:
+        return ()
+    notes = []
+    for r, c in zip(*np.nonzero((values < limits[:, 0]) | (values > limits[:, 1])), strict=True):
+        lo, hi = limits[c]
+        notes.append(
+            f"{source} line {lines[r]}: {labels[r]} j{c + 1} = {values[r, c]:.3f} deg lies outside"
+            f" the robot's range [{lo:g}, {hi:g}] deg; is the project's robot the one measured?"
+        )
+    return tuple(notes)
 
 
 def parse_known(text: str, *, source: str) -> tuple[tuple[str, ...], FloatArray]:

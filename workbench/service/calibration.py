@@ -106,7 +106,8 @@ class CalibrationService:
             points_world=tips @ T_world_base[:3, :3].T + T_world_base[:3, 3],
             residuals=fit.residuals,
             dropped=(),
-            lines=tcp_lines(fit, T_new, tool.name, tuple(labels[i] for i in approach), tool.tcp),
+            lines=tcp_lines(fit, T_new, tool.name, tuple(labels[i] for i in approach), tool.tcp)
+            + _notes(readings),
         )
 
     # -- work objects ---------------------------------------------------------------------
@@ -155,7 +156,7 @@ class CalibrationService:
             points_world=measured @ T_world_base[:3, :3].T + T_world_base[:3, 3],
             residuals=residuals,
             dropped=dropped,
-            lines=lines,
+            lines=lines + _notes(readings),
         )
 
     def _stored_wobj(self, name: str) -> Any:
@@ -217,7 +218,8 @@ class CalibrationService:
             points_world=measured @ fit.T[:3, :3].T + fit.T[:3, 3],
             residuals=fit.residuals,
             dropped=fit.dropped,
-            lines=fit_lines(fit, f"robot {robot.name!r} base in the world", fit.T, robot.base),
+            lines=fit_lines(fit, f"robot {robot.name!r} base in the world", fit.T, robot.base)
+            + _notes(readings),
         )
 
     # -- apply ----------------------------------------------------------------------------
@@ -249,6 +251,10 @@ class CalibrationService:
 def calibration_of(wb: Any) -> CalibrationService:
     """Return the calibration service of Workbench `wb` (its `calibration` property)."""
     return CalibrationService(wb)
+
+
+def _notes(readings: Readings) -> tuple[str, ...]:
+    return tuple(f"  note: {note}" for note in readings.notes)
 
 
 def _pose_json(T: FloatArray) -> dict[str, list[float]]:
