@@ -69,6 +69,11 @@ class TcpFit:
         return float(np.mean(self.residuals))
 
     @property
+    def min_error(self) -> float:
+        """Return the smallest distance [m] of the fitted tip from the fixed point (Min error)."""
+        return float(np.min(self.residuals))
+
+    @property
     def max_error(self) -> float:
         """Return the largest distance [m] of the fitted tip from the fixed point (Max error)."""
         return float(np.max(self.residuals))

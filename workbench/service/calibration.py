@@ -32,7 +32,8 @@ from workbench.project.calibration_readings import (
     parse_readings,
     work_object_name,
 )
-from workbench.project.units import matrix_to_pose
+from workbench.project.common import Pose
+from workbench.project.units import matrix_to_pose, pose_to_matrix
 from workbench.service.calibration_result import (
     CalibrationResult,
     FloatArray,
@@ -101,6 +102,7 @@ class CalibrationService:
             kind="tcp",
             name=tool.name,
             T=T_new,
+            T_previous=self.wb.setup.T_flange_tcp,
             T_world_frame=T_world_tcp,
             labels=tuple(labels[i] for i in approach),
             points_world=tips @ T_world_base[:3, :3].T + T_world_base[:3, 3],
@@ -133,24 +135,26 @@ class CalibrationService:
         readings = self._readings(csv_text, source)
         measured = self._base_points(readings)
         T_world_base = self.wb.setup.T_world_base
+        stored = self._stored_wobj(name)
         if method == "3point":
             if known_csv is not None:
                 raise InputError("the 3-point method takes no known points; use method 'fit'")
             labels = (label.lower() for label in readings.labels)
             frame = three_point_frame(dict(zip(labels, measured, strict=True)))
             T_world = T_world_base @ frame.T
-            lines = three_point_lines(frame, name, readings.labels, T_world)
+            lines = three_point_lines(frame, name, readings.labels, T_world, stored)
             residuals = np.zeros(len(measured))
             dropped: tuple[str, ...] = ()
         else:
             fit = self._fit(readings, measured, known_csv, known_source, tolerance)
             T_world = T_world_base @ fit.T
-            lines = fit_lines(fit, f"work object {name!r}", T_world, self._stored_wobj(name))
+            lines = fit_lines(fit, f"work object {name!r}", T_world, stored)
             residuals, dropped = fit.residuals, fit.dropped
         return CalibrationResult(
             kind="work_object",
             name=name,
             T=T_world,
+            T_previous=None if stored is None else pose_to_matrix(stored),
             T_world_frame=T_world,
             labels=readings.labels,
             points_world=measured @ T_world_base[:3, :3].T + T_world_base[:3, 3],
@@ -159,7 +163,7 @@ class CalibrationService:
             lines=lines + _notes(readings),
         )
 
-    def _stored_wobj(self, name: str) -> Any:
+    def _stored_wobj(self, name: str) -> Pose | None:
         wobjs = self.wb.project.work_objects or []
         return next((w.pose for w in wobjs if w.name == name), None)
 
@@ -213,6 +217,7 @@ class CalibrationService:
             kind="base",
             name=robot.name,
             T=fit.T,
+            T_previous=self.wb.setup.T_world_base,
             T_world_frame=fit.T,
             labels=readings.labels,
             points_world=measured @ fit.T[:3, :3].T + fit.T[:3, 3],
