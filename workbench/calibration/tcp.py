@@ -78,6 +78,14 @@ class TcpFit:
         """Return the largest distance [m] of the fitted tip from the fixed point (Max error)."""
         return float(np.max(self.residuals))
 
+    def keeping(self, T_flange_tcp: FloatArray) -> FloatArray:
+        """Return the TCP to store (4, 4) [m]: the fitted one, with the orientation of
+        `T_flange_tcp` (the tool's as it was) unless the orientation was measured."""
+        T = self.T_flange_tcp.copy()
+        if not self.oriented:
+            T[:3, :3] = np.asarray(T_flange_tcp, float)[:3, :3]
+        return T
+
     def tips(self, T_base_flange: FloatArray) -> FloatArray:
         """Return the fitted tip (n, 3) [m] in the base at flange poses (n, 4, 4)."""
         T = np.asarray(T_base_flange, float)

@@ -22,7 +22,12 @@ from workbench.calibration import (
     three_point_frame,
 )
 from workbench.calibration.frame_fit import OUTLIER_TOLERANCE
-from workbench.calibration.measured import flange_poses, in_model_base, tcp_positions
+from workbench.calibration.measured import (
+    flange_poses,
+    in_model_base,
+    tcp_positions,
+    transformed,
+)
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import library_robot
 from workbench.project import Project, project_from_dict
@@ -94,9 +99,7 @@ class CalibrationService:
         T_world_base = self.wb.setup.T_world_base
         tips = fit.tips(T[approach])
         tool = self.wb.project.tool
-        T_new = fit.T_flange_tcp.copy()
-        if not fit.oriented:  # the position measured, the orientation kept
-            T_new[:3, :3] = self.wb.setup.T_flange_tcp[:3, :3]
+        T_new = fit.keeping(self.wb.setup.T_flange_tcp)  # unmeasured orientation: kept
         T_world_tcp = T_world_base @ T[approach[-1]] @ T_new
         return CalibrationResult(
             kind="tcp",
@@ -105,7 +108,7 @@ class CalibrationService:
             T_previous=self.wb.setup.T_flange_tcp,
             T_world_frame=T_world_tcp,
             labels=tuple(labels[i] for i in approach),
-            points_world=tips @ T_world_base[:3, :3].T + T_world_base[:3, 3],
+            points_world=transformed(tips, T_world_base),
             residuals=fit.residuals,
             dropped=(),
             lines=tcp_lines(fit, T_new, tool.name, tuple(labels[i] for i in approach), tool.tcp)
@@ -157,7 +160,7 @@ class CalibrationService:
             T_previous=None if stored is None else pose_to_matrix(stored),
             T_world_frame=T_world,
             labels=readings.labels,
-            points_world=measured @ T_world_base[:3, :3].T + T_world_base[:3, 3],
+            points_world=transformed(measured, T_world_base),
             residuals=residuals,
             dropped=dropped,
             lines=lines + _notes(readings),
@@ -220,7 +223,7 @@ class CalibrationService:
             T_previous=self.wb.setup.T_world_base,
             T_world_frame=fit.T,
             labels=readings.labels,
-            points_world=measured @ fit.T[:3, :3].T + fit.T[:3, 3],
+            points_world=transformed(measured, fit.T),
             residuals=fit.residuals,
             dropped=fit.dropped,
             lines=fit_lines(fit, f"robot {robot.name!r} base in the world", fit.T, robot.base)
