@@ -32,7 +32,7 @@ def test_joints_go_through_the_controllers_convention() -> None:
 
 
 def test_points_are_millimetres_in_metres_and_the_header_is_case_blind() -> None:
-    r = _parse("Label,X,Y,Z\norigin,400,0,100.5\n")
+    r = _parse("\ufeffLabel,X,Y,Z\r\norigin,400,0,100.5\r\n")  # a spreadsheet's BOM and CRLF
     assert r.kind == "points" and np.allclose(r.points, [[0.4, 0.0, 0.1005]])
     labels, pts = parse_known("label,x,y,z\na,1,2,3\n", source="k.csv")
     assert labels == ("a",) and np.allclose(pts, [[0.001, 0.002, 0.003]])
@@ -42,6 +42,7 @@ def test_points_are_millimetres_in_metres_and_the_header_is_case_blind() -> None
     ("text", "field", "detail"),
     [
         ("label,a,b\np,1,2\n", "r.csv line 1", "give label,j1,j2,j3,j4,j5,j6"),
+        ("label;x;y;z\np;1;2;3\n", "r.csv line 1", "by commas, not ';'"),
         ("label,j1,j2,j3,j4,j5\np,1,2,3,4,5\n", "r.csv line 1", "robot has 6 joints"),
         ("label,x,y,z\np,1,2\n", "r.csv line 2", "2 values after the label but the header names 3"),
         ("label,x,y,z\np,1,nan,3\n", "r.csv line 2, column 3 (y)", "'nan' is not a finite"),

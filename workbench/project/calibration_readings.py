@@ -55,7 +55,7 @@ class Readings:
 
 def _rows(text: str, source: str) -> list[tuple[int, list[str]]]:
     rows = []
-    for number, line in enumerate(text.splitlines(), 1):
+    for number, line in enumerate(text.removeprefix("\ufeff").splitlines(), 1):
         if line.strip() and not line.lstrip().startswith("#"):
             cells = next(csv.reader(io.StringIO(line)))
             rows.append((number, [c.strip() for c in cells]))
@@ -83,9 +83,11 @@ def _header(number: int, cells: list[str], source: str, dof: int | None) -> tupl
                 field=f"{source} line {number}",
             )
         return "joints", len(joints)
+    separated = next((c for c in (";", "\t") if c in cells[0]), None)
+    hint = "" if separated is None else f"; separate the values by commas, not {separated!r}"
     raise InputError(
         f"header {','.join(cells)!r}: give {expected} (joints [deg], as the controller shows"
-        " them) or label,x,y,z (TCP positions [mm] in the robot's base)",
+        f" them) or label,x,y,z (TCP positions [mm] in the robot's base){hint}",
         field=f"{source} line {number}",
     )
 
