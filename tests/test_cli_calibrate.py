@@ -54,6 +54,19 @@ def test_the_docs_worked_example_runs_and_reopens_calibrated(tmp_path: Path) -> 
             assert line.strip() in DOC.read_text(), line
 
 
+def test_the_docs_python_example_runs(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    block = re.search(r"```python\n(.*?)```", DOC.read_text(), re.S)
+    assert block, "docs/calibration.md has no ```python block"
+    monkeypatch.chdir(ROOT)
+    scope: dict[str, object] = {}
+    exec(compile(block.group(1), "docs/calibration.md", "exec"), scope)
+    assert "TCP of tool 'gripper'" in capsys.readouterr().out
+    wb = scope["wb"]
+    assert wb.project.tool.tcp.xyz == [0.0, 0.0, 150.0]  # type: ignore[attr-defined]  # undone
+
+
 def test_apply_writes_out_and_leaves_the_project_alone(tmp_path: Path) -> None:
     project = tmp_path / "p.json"
     shutil.copy(ROOT / "projects" / "mz07_cell.json", project)
