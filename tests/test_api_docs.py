@@ -39,6 +39,7 @@ from workbench.service import (
     PolishingService,
     Workbench,
 )
+from workbench.service.workflow_slot import WorkflowSlot
 
 API = Path(__file__).resolve().parents[1] / "docs" / "api.md"
 PACKAGES = (
@@ -178,6 +179,9 @@ def _function(cls: type, name: str) -> Any:
 
 def _member_type(cls: type, name: str) -> type | None:
     """Return the class a member of `cls` holds or returns (None: not a single class)."""
+    slot = inspect.getattr_static(cls, name, None)
+    if isinstance(slot, WorkflowSlot):  # wb.bending etc.: the service class it makes
+        return slot.cls
     fn = _function(cls, name)
     try:
         hints = typing.get_type_hints(fn if fn is not None else cls)

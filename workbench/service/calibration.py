@@ -256,11 +256,6 @@ class CalibrationService:
         return previous
 
 
-def calibration_of(wb: Any) -> CalibrationService:
-    """Return the calibration service of Workbench `wb` (its `calibration` property)."""
-    return CalibrationService(wb)
-
-
 def _notes(readings: Readings) -> tuple[str, ...]:
     return tuple(f"  note: {note}" for note in readings.notes)
 

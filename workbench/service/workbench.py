@@ -32,13 +32,14 @@ from workbench.project.units import to_deg
 from workbench.service import program_edit, program_import, programs, project_imports, project_save
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
-from workbench.service.calibration import CalibrationService, calibration_of
+from workbench.service.calibration import CalibrationService
 from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
+from workbench.service.workflow_slot import WorkflowSlot
 
 
 @dataclass(frozen=True)
@@ -239,27 +240,13 @@ class Workbench:
                 self._workflows[name] = cls(self)
             return self._workflows[name]
 
-    @property
-    def collision(self) -> CollisionService:
-        """Return the conservative collision engine of the open project (seeds 001, 002)."""
-        return self._workflow("collision", CollisionService)  # type: ignore[no-any-return]
-
-    @property
-    def bending(self) -> BendingService:
-        """Return the press-brake bending workflow of the open project (seed 000)."""
-        return self._workflow("bending", BendingService)  # type: ignore[no-any-return]
-
-    @property
-    def assembly(self) -> AssemblyService:
-        """Return the virtual-assembly workflow of the open project (seed 003)."""
-        return self._workflow("assembly", AssemblyService)  # type: ignore[no-any-return]
-
-    @property
-    def polishing(self) -> PolishingService:
-        """Return the polishing workflow of the open project (seed 004)."""
-        return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
-
-    calibration: CalibrationService = property(calibration_of)  # type: ignore[assignment]
+    collision = WorkflowSlot(
+        CollisionService, "The conservative collision engine of the project (seeds 001, 002)."
+    )
+    bending = WorkflowSlot(BendingService, "The press-brake bending workflow (seed 000).")
+    assembly = WorkflowSlot(AssemblyService, "The virtual-assembly workflow (seed 003).")
+    polishing = WorkflowSlot(PolishingService, "The polishing workflow (seed 004).")
+    calibration = WorkflowSlot(CalibrationService, "TCP, work-object and base calibration.")
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
