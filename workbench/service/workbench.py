@@ -38,6 +38,7 @@ from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
+from workbench.service.touchup import TouchupService
 
 
 @dataclass(frozen=True)
@@ -76,9 +77,7 @@ class Workbench:
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
-        check_named_files(
-            project, self.folders
-        )  # the lazily read files too: fail here, not at plan
+        check_named_files(project, self.folders)  # lazily read files too: fail here, not at plan
         setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders, project.cad)
         cell = build_cell(project.cell.to_si(), self.folders, project.cad)
         cell += press_cell(None if project.bending is None else project.bending.press_si())
@@ -179,12 +178,9 @@ class Workbench:
         return self.link_poses(q)[-1] @ self._setup.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
-        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first.
-
-        One per arm configuration and turn of the wide joints, labelled
-        'front/elbow up/no flip, J6 +1 turn' (the labels depend on the pose only);
-        `move_tcp` accepts them.
-        """
+        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first: one per
+        arm configuration and turn of the wide joints, labelled 'front/elbow up/no flip, J6 +1
+        turn' (the labels depend on the pose only); `move_tcp` accepts them."""
         T = check_transform(T_world_tcp, "T_world_tcp")
         setup = self._setup
         T_base_flange = (
@@ -259,6 +255,11 @@ class Workbench:
     def polishing(self) -> PolishingService:
         """Return the polishing workflow of the open project (seed 004)."""
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
+
+    @property
+    def touchup(self) -> TouchupService:
+        """Return the touch-up round trip: a program edited on the robot compared and applied."""
+        return self._workflow("touchup", TouchupService)  # type: ignore[no-any-return]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
