@@ -26,6 +26,12 @@ def _wb() -> Workbench:
     return Workbench.from_dict(cell_data(), base_dir=ROOT / "projects")
 
 
+@pytest.fixture(scope="module")
+def cell() -> Workbench:
+    """The cell as the project has it; `compare` never changes it (checked below)."""
+    return _wb()
+
+
 def _close(T: np.ndarray, T_ref: np.ndarray) -> None:
     assert np.linalg.norm(T[:3, 3] - T_ref[:3, 3]) < POSITION_TOL
     c = (np.trace(T[:3, :3].T @ T_ref[:3, :3]) - 1.0) / 2.0
@@ -33,8 +39,8 @@ def _close(T: np.ndarray, T_ref: np.ndarray) -> None:
 
 
 @pytest.mark.parametrize("fmt", PROGRAM_FORMATS)
-def test_the_fitted_correction_is_the_fixtures_move(fmt: str) -> None:
-    wb = _wb()
+def test_the_fitted_correction_is_the_fixtures_move(fmt: str, cell: Workbench) -> None:
+    wb = cell
     before = wb.to_json()
     report = wb.touchup.compare(touched_up_files(fmt))
     c = report.correction
@@ -49,8 +55,8 @@ def test_the_fitted_correction_is_the_fixtures_move(fmt: str) -> None:
 
 
 @pytest.mark.parametrize("fmt", PROGRAM_FORMATS)
-def test_a_target_moved_alone_is_named_not_folded_in(fmt: str) -> None:
-    report = _wb().touchup.compare(touched_up_files(fmt, alone=("pick", PICK_ALONE)))
+def test_a_target_moved_alone_is_named_not_folded_in(fmt: str, cell: Workbench) -> None:
+    report = cell.touchup.compare(touched_up_files(fmt, alone=("pick", PICK_ALONE)))
     c = report.correction
     assert c is not None and c.outliers == ("pick",)
     _close(c.T_correction, CORRECTION)  # the others still give the fixture's move
@@ -60,10 +66,12 @@ def test_a_target_moved_alone_is_named_not_folded_in(fmt: str) -> None:
 
 
 @pytest.mark.parametrize("fmt", ["rapid", "nachi"])  # names kept; NACHI: matched in order too
-def test_moves_deleted_and_added_on_the_pendant_are_reported_not_mismatched(fmt: str) -> None:
+def test_moves_deleted_and_added_on_the_pendant_are_reported_not_mismatched(
+    fmt: str, cell: Workbench
+) -> None:
     extra = xyz_rpy_to_transform([0.0, 0.04, -0.02], [0.0, 0.0, 0.0])
     files = touched_up_files(fmt, delete="lift", add=("over_place", "above_right", extra))
-    report = _wb().touchup.compare(files)
+    report = cell.touchup.compare(files)
     status = {r.name: r.status for r in report.rows}
     assert status["lift"] == "deleted"
     added = [r for r in report.rows if r.status == "added"]
@@ -123,8 +131,8 @@ def test_apply_targets_keeps_the_work_object_and_takes_every_taught_target() -> 
     assert not any(r.moved for r in again.rows)  # the project is now what the pendant taught
 
 
-def test_malformed_input_names_the_file_and_the_fix() -> None:
-    wb = _wb()
+def test_malformed_input_names_the_file_and_the_fix(cell: Workbench) -> None:
+    wb = cell
     with pytest.raises(InputError, match=r"broken\.mod.*no moves the reader understood"):
         wb.touchup.compare({"broken.mod": "MODULE x\n  PROC main()\n  ENDPROC\nENDMODULE\n"})
     with pytest.raises(InputError, match="no program file given"):

@@ -82,7 +82,8 @@ class TouchupService:
                 "touch-up: no program file given; give the program read from the robot"
             )
         project = wb.project
-        if project.program is None or not any(True for _ in planned_targets(project, wb.robot)):
+        planned = planned_targets(project, wb.robot)
+        if not planned:
             raise InputError(
                 "touch-up: the project has no program moves to compare with; plan or import a"
                 " program first",
@@ -118,7 +119,7 @@ class TouchupService:
         notes = [f"line {n}: {t!r} is not understood; left out" for n, t in read.unknown]
         notes += circular_notes(read)
         report = compare(
-            planned_targets(project, wb.robot),
+            planned,
             taught,
             work_object_frames(project),
             source=source,

@@ -54,10 +54,11 @@ FIT_DISTANCE = 0.5e-3
 FIT_ANGLE = np.radians(0.5)
 """... and its orientation within this [rad] of the fitted rotation."""
 GAP_COST = 1.0
-"""The alignment's cost of a move added or deleted on the pendant; a pair costs at most
-`2 * GAP_COST * 0.95`, so pairs are preferred and gaps go where the pairs fit worst."""
-PAIR_SCALE = 0.05
-"""The alignment's distance scale [m]: a pair whose targets lie this far apart costs one gap."""
+"""The alignment's cost of a move added or deleted on the pendant."""
+REPLACED_DISTANCE = 0.1
+"""Matched by order (a format without names), a read target farther than this [m] from the
+project's is another move (one deleted, one added on the pendant), not a touch-up: a pair
+costs its distance / REPLACED_DISTANCE * 2 gaps, so it is preferred to two gaps below it."""
 
 Status = Literal["same", "moved", "deleted", "added"]
 
@@ -272,10 +273,10 @@ def same_name(planned: str, taught: str) -> bool:
 
 def _pair_cost(p: PlannedTarget, t: TaughtTarget, by_name: bool) -> float:
     if by_name:
-        return 0.0 if same_name(p.name, t.name) else 2.0 * GAP_COST  # never better than 2 gaps
-    d = float(np.linalg.norm(p.T_world_tcp[:3, 3] - t.T_world_tcp[:3, 3])) / PAIR_SCALE
-    kind = 0.0 if (p.kind == "joint") == (t.kind == "joint") else 0.25
-    return min(d * GAP_COST + kind, 1.9 * GAP_COST)
+        return 0.0 if same_name(p.name, t.name) else 3.0 * GAP_COST  # worse than 2 gaps
+    d = float(np.linalg.norm(p.T_world_tcp[:3, 3] - t.T_world_tcp[:3, 3]))
+    kind = 0.0 if (p.kind == "joint") == (t.kind == "joint") else 0.25 * GAP_COST
+    return 2.0 * GAP_COST * d / REPLACED_DISTANCE + kind
 
 
 def names_kept(planned: Sequence[PlannedTarget], taught: Sequence[TaughtTarget]) -> bool:
