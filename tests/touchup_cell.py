@@ -127,10 +127,11 @@ def touched_up_files(
     alone: tuple[str, np.ndarray] | None = None,
     delete: str | None = None,
     add: tuple[str, str, np.ndarray] | None = None,
+    joints: tuple[str, np.ndarray] | None = None,
 ) -> dict[str, str]:
     """Return the touched-up program as `fmt` files. `alone` (name, T in the work object):
     that target moved further; `delete`: that move left out; `add` (new name, after which
-    move, T in the work object of that move's target): a move inserted."""
+    move, T in the work object of that move's target): a move inserted; `joints` (name, dq [rad, model]): that joint target re-taught by dq."""
     wb, program = moved_program()
     out = []
     for ins in program.instructions:
@@ -139,6 +140,9 @@ def touched_up_files(
                 continue
             if alone is not None and ins.name == alone[0]:
                 ins = _shift(wb, program, ins, alone[1])
+            if joints is not None and ins.name == joints[0]:
+                q = ins.target.q + joints[1]
+                ins = dataclasses.replace(ins, target=dataclasses.replace(ins.target, q=q))
             out.append(ins)
             if add is not None and ins.name == add[1]:
                 new = _shift(wb, program, ins, add[2])

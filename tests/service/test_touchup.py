@@ -51,6 +51,7 @@ def test_the_fitted_correction_is_the_fixtures_move(fmt: str, cell: Workbench) -
     assert all(report.row(n).agrees for n in MOVED)
     assert report.row("home").status == "same"
     assert wb.to_json() == before  # comparing changes nothing
+    assert report.notes == ()  # the controller's work object and tool are the project's
     assert "work object fixture: correction [2.100, -1.400, 0.900] mm" in report.summary()
 
 
@@ -156,3 +157,36 @@ def test_apply_plans_again_and_checks_collisions() -> None:
     assert applied is not None and applied.plan is not None and applied.plan.ok
     assert wb.last_plan is applied.plan
     assert "collision-free" in applied.summary()
+
+
+@pytest.mark.parametrize("fmt", ["krl", "urscript"])
+def test_a_joint_target_re_taught_is_compared_through_fk_and_kept_as_taught(fmt: str) -> None:
+    wb = _wb()
+    dq = np.radians([1.0, -0.5, 0.0, 0.0, 0.3, 0.0])
+    report = wb.touchup.compare(touched_up_files(fmt, joints=("home", dq)))
+    home = report.row("home")
+    assert home.moved and home.wobj == "base" and home.agrees is None  # alone in the base
+    want = wb.tcp_pose(wb.robot.convention.to_model(np.radians([0, 90, 0, 0, -90, 0])) + dq)
+    np.testing.assert_allclose(home.taught.T_world_tcp, want, atol=1e-5)  # type: ignore[union-attr]
+    wb.touchup.apply(report, mode="work_object", plan=False)
+    taught = wb.robot.convention.to_controller(home.taught.q)  # type: ignore[union-attr]
+    home_move = wb.project.program.moves[-1]  # type: ignore[union-attr]
+    np.testing.assert_allclose(np.radians(home_move.joints), taught, atol=1e-9)
+    with pytest.raises(InputError, match="compare the program again"):
+        wb.touchup.apply(report, mode="targets", plan=False)  # the project changed since
+
+
+def test_a_program_without_its_names_is_matched_in_order(cell: Workbench) -> None:
+    # the NACHI program with its comments dropped (a pendant that keeps none): the moves by
+    # order and distance, the deleted one still found
+    ((name, text),) = touched_up_files("nachi", delete="lift").items()
+    bare = "\n".join(line for line in text.splitlines() if not line.startswith("'"))
+    report = cell.touchup.compare({name: bare + "\n"})
+    assert [r.status for r in report.rows].count("deleted") == 1
+    paired = [r for r in report.rows if r.planned is not None and r.taught is not None]
+    assert [r.planned.name for r in paired] == [  # type: ignore[union-attr]
+        "above_left", "pick", "above_right", "place", "retract", "home"
+    ]  # fmt: skip
+    c = report.correction
+    assert c is not None and c.outliers == ()
+    _close(c.T_correction, CORRECTION)

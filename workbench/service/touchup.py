@@ -15,8 +15,8 @@ from workbench.motion.programs.formats import format_of, reader
 from workbench.motion.programs.touchup import (
     TouchupReport,
     TouchupSettings,
-    circular_notes,
     compare,
+    read_notes,
     taught_targets,
 )
 from workbench.project.io import project_from_dict
@@ -65,6 +65,7 @@ class TouchupService:
         self.settings = TouchupSettings()
         self.last_report: TouchupReport | None = None
         self.last_applied: TouchupApplied | None = None
+        self._basis: tuple[TouchupReport, str] | None = None
 
     def set_settings(self, settings: TouchupSettings) -> None:
         """Use other tolerances (`TouchupSettings`, m and rad) from the next `compare` on."""
@@ -116,19 +117,25 @@ class TouchupService:
                 f"the program has no moves the reader understood; is it a {fmt} program?",
                 field=source,
             )
-        notes = [f"line {n}: {t!r} is not understood; left out" for n, t in read.unknown]
-        notes += circular_notes(read)
+        frames = work_object_frames(project)
+        notes = read_notes(read, frames, T_world_base, pose_to_matrix(project.tool.tcp))
         report = compare(
             planned,
             taught,
-            work_object_frames(project),
+            frames,
             source=source,
             fmt=fmt,
             settings=self.settings,
             notes=notes,
         )
         self.last_report = report
+        self._basis = (report, self._program_of(project))
         return report
+
+    @staticmethod
+    def _program_of(project: Project) -> str:
+        program = project.program.model_dump_json() if project.program else ""
+        return program + str([w.model_dump_json() for w in project.work_objects or ()])
 
     def apply(
         self, report: TouchupReport, *, mode: str = "work_object", plan: bool = True
@@ -140,6 +147,13 @@ class TouchupService:
         kept with the notes as `last_applied`; a failed plan is reported there, not raised."""
         wb = self._wb
         previous = wb.project.model_copy(deep=True)
+        basis = self._basis
+        if basis is None or basis[0] is not report or basis[1] != self._program_of(previous):
+            raise InputError(
+                "touch-up: the project's program or work objects changed since this comparison"
+                " (or it was made on another project); compare the program again, then apply",
+                field="report",
+            )
         data, notes = touched_up_project(previous, report, mode, wb.robot.convention)
         with wb._lock:  # the applied project keeps this touch-up (settings, report, result)
             wb.replace_project(project_from_dict(data, source=f"touch-up of {report.source}"))

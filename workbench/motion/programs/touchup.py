@@ -38,7 +38,7 @@ from numpy.typing import NDArray
 from workbench.errors import InputError
 from workbench.geometry.rigid_fit import RigidFit, check_spread, fit_rigid, fit_rigid_robust
 from workbench.kinematics.model import RobotModel
-from workbench.motion.programs.controller_program import ReadMove, ReadProgram
+from workbench.motion.programs.controller_program import ReadProgram
 from workbench.motion.programs.readback import solve_moves
 
 FloatArray = NDArray[np.float64]
@@ -243,13 +243,38 @@ def taught_targets(
     return out
 
 
-def circular_notes(read: ReadProgram) -> list[str]:
-    """Return a note per circular move: its end point is compared, its via point is not."""
-    return [
+def read_notes(
+    read: ReadProgram,
+    frames: Mapping[str, FloatArray],
+    T_world_base: FloatArray,
+    T_flange_tcp: FloatArray,
+    settings: TouchupSettings | None = None,
+) -> list[str]:
+    """Return what the comparison of `read` must say besides its rows: the lines the reader
+    did not understand, circular moves (their end compared, not their via), a work object or
+    tool of the program that differs from the project's (`frames`: the project's work objects
+    in the world; the targets are compared in the world all the same)."""
+    s = settings or TouchupSettings()
+    notes = [f"line {n}: {t!r} is not understood; left out" for n, t in read.unknown]
+    notes += [
         f"line {m.line} ({m.name}): a circular move; its end point is compared, its via point not"
         for m in read.moves
-        if isinstance(m, ReadMove) and m.via is not None
+        if m.via is not None
     ]
+    for w in read.work_objects:
+        if w.name in frames and _changed(frames[w.name], T_world_base @ w.T_base_wobj, s):
+            notes.append(
+                f"work object {w.name}: the program's differs from the project's (changed on"
+                " the controller?); its targets are compared where the program puts them"
+            )
+    for tool in {m.tool for m in read.moves}:
+        data = next((t for t in read.tools if t.name == tool), None)
+        if data is not None and _changed(T_flange_tcp, data.T_flange_tcp, s):
+            notes.append(
+                f"tool {tool}: the program's TCP differs from the project's; its pose targets are"
+                " that tool's, its joint targets are compared through the project's tool"
+            )
+    return notes
 
 
 # -- matching ----------------------------------------------------------------------------------
