@@ -10,6 +10,7 @@ import pytest
 from tests.touchup_cell import CORRECTION, ROOT, WOBJ, cell_data, moved_data, touched_up_files
 from workbench.errors import InputError
 from workbench.geometry.transforms import xyz_rpy_to_transform
+from workbench.kinematics.robot_library import ROBOT_NAMES, library_robot
 from workbench.motion.programs.formats import PROGRAM_FORMATS
 from workbench.service import Workbench
 
@@ -138,6 +139,12 @@ def test_malformed_input_names_the_file_and_the_fix(cell: Workbench) -> None:
         wb.touchup.compare({"broken.mod": "MODULE x\n  PROC main()\n  ENDPROC\nENDMODULE\n"})
     with pytest.raises(InputError, match="no program file given"):
         wb.touchup.compare({})
+    with pytest.raises(InputError, match=r"broken\.ls.*check that it is a ls program"):
+        wb.touchup.compare({"broken.ls": "/PROG BROKEN\n/MN\n   1:  J P[7] 50% FINE ;\n/END\n"})
+    empty = cell_data()
+    del empty["program"]
+    with pytest.raises(InputError, match="no program moves to compare with"):
+        Workbench.from_dict(empty).touchup.compare(touched_up_files("krl"))
     with pytest.raises(InputError, match="mode"):
         wb.touchup.apply(wb.touchup.compare(touched_up_files("krl")), mode="wobj")
 
@@ -189,4 +196,18 @@ def test_a_program_without_its_names_is_matched_in_order(cell: Workbench) -> Non
     ]  # fmt: skip
     c = report.correction
     assert c is not None and c.outliers == ()
+    _close(c.T_correction, CORRECTION)
+
+
+@pytest.mark.slow  # a workbench per robot (about 0.5 s each)
+@pytest.mark.parametrize("preset", ROBOT_NAMES)
+def test_every_library_robot_in_its_own_language(preset: str) -> None:
+    # the vendor's base convention too (FANUC's world at J2 height: in_model_base)
+    fmt = library_robot(preset).program_format
+    files = touched_up_files(fmt, preset=preset, alone=("pick", PICK_ALONE))
+    wb = Workbench.from_dict(cell_data(preset), base_dir=ROOT / "projects")
+    report = wb.touchup.compare(files)
+    assert report.fmt == fmt and report.notes == ()
+    c = report.correction
+    assert c is not None and c.outliers == ("pick",)
     _close(c.T_correction, CORRECTION)

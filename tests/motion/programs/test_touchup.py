@@ -148,23 +148,27 @@ def _pairings_brute_force(planned, taught) -> float:
     by_name = tu.names_kept(planned, taught)
     n, m = len(planned), len(taught)
     best = np.inf
+
+    def pair_cost(p, t) -> float:  # written out again, one pair at a time
+        if by_name:
+            if p.name.lower() == t.name.lower():
+                return 0.0
+            return tu.RENAMED_COST if same_name(p.name, t.name) else 3.0 * tu.GAP_COST
+        d = np.linalg.norm(p.T_world_tcp[:3, 3] - t.T_world_tcp[:3, 3])
+        kind = 0.0 if (p.kind == "joint") == (t.kind == "joint") else 0.25 * tu.GAP_COST
+        return 2.0 * tu.GAP_COST * d / tu.REPLACED_DISTANCE + kind
+
     for k in range(min(n, m) + 1):
         for ps in itertools.combinations(range(n), k):
             for ts in itertools.combinations(range(m), k):
-                cost = sum(
-                    tu._pair_cost(planned[i], taught[j], by_name)
-                    for i, j in zip(ps, ts, strict=True)
-                )
+                cost = sum(pair_cost(planned[i], taught[j]) for i, j in zip(ps, ts, strict=True))
                 best = min(best, cost + (n - k + m - k) * tu.GAP_COST)
     return best
 
 
 def _alignment_cost(planned, taught, pairs) -> float:
-    by_name = tu.names_kept(planned, taught)
-    return sum(
-        tu.GAP_COST if i is None or j is None else tu._pair_cost(planned[i], taught[j], by_name)
-        for i, j in pairs
-    )
+    costs = tu.pair_costs(planned, taught, tu.names_kept(planned, taught))
+    return sum(tu.GAP_COST if i is None or j is None else costs[i, j] for i, j in pairs)
 
 
 @pytest.mark.parametrize("seed", range(20))
@@ -191,6 +195,23 @@ def test_the_alignment_is_the_cheapest_in_order_pairing(seed: int, names: bool) 
     )
     matched = {planned[i].name for i, j in pairs if i is not None and j is not None}
     assert matched == {p.name for p in kept}  # nothing mismatched, nothing lost
+
+
+def test_numbered_names_pair_exactly_before_as_renamed() -> None:
+    # pt_1 .. pt_5 are the same name as renamed ("pt"); pt_3 deleted on the pendant must not
+    # shift pt_4 onto pt_3's place
+    rng = np.random.default_rng(3)
+    _, planned = _cell(rng, 5)
+    planned = [
+        PlannedTarget(p.index, f"pt_{k + 1}", p.kind, p.wobj, p.T_world_tcp)
+        for k, p in enumerate(planned)
+    ]
+    taught = [_taught(p, p.T_world_tcp) for p in planned if p.name != "pt_3"]
+    pairs = match_moves(planned, taught)
+    assert (2, None) in pairs
+    assert all(
+        planned[i].name == taught[j].name for i, j in pairs if i is not None and j is not None
+    )
 
 
 def test_names_as_the_posts_write_them_are_the_same() -> None:

@@ -282,10 +282,16 @@ def read_notes(
 _NOT_IDENT = re.compile(r"[^a-z0-9_]")
 
 
+def _ident(name: str) -> str:
+    """Return a name as a post writes it: lower case (FANUC, NACHI: upper), illegal
+    characters as _."""
+    return _NOT_IDENT.sub("_", name.lower())
+
+
 def _key(name: str) -> str:
-    """Return a name as the posts may have renamed it: lower case, illegal characters as _,
-    a numbering suffix ("_1", "_2": reserved or repeated names) dropped."""
-    return re.sub(r"_\d+$", "", _NOT_IDENT.sub("_", name.lower()))
+    """Return a name as the posts may have renamed it: `_ident`, a numbering suffix ("_1",
+    "_2": reserved or repeated names) dropped."""
+    return re.sub(r"_\d+$", "", _ident(name))
 
 
 def same_name(planned: str, taught: str) -> bool:
@@ -296,12 +302,33 @@ def same_name(planned: str, taught: str) -> bool:
     return a == b or (len(b) >= 8 and a.startswith(b))
 
 
-def _pair_cost(p: PlannedTarget, t: TaughtTarget, by_name: bool) -> float:
+RENAMED_COST = 0.5 * GAP_COST
+"""The alignment's cost of a pair whose names are the same only as renamed (`same_name`):
+exactly equal names pair first ("pt_2" with "pt_2", not with "pt_3")."""
+
+
+def pair_costs(
+    planned: Sequence[PlannedTarget], taught: Sequence[TaughtTarget], by_name: bool
+) -> FloatArray:
+    """Return the alignment's cost (n, m) of pairing each planned with each taught move: by
+    name, 0 (equal), `RENAMED_COST` (`same_name`) or 3 gaps (another move); by order, the
+    distance in units of `REPLACED_DISTANCE` (two gaps), a quarter gap more for another kind."""
     if by_name:
-        return 0.0 if same_name(p.name, t.name) else 3.0 * GAP_COST  # worse than 2 gaps
-    d = float(np.linalg.norm(p.T_world_tcp[:3, 3] - t.T_world_tcp[:3, 3]))
-    kind = 0.0 if (p.kind == "joint") == (t.kind == "joint") else 0.25 * GAP_COST
-    return 2.0 * GAP_COST * d / REPLACED_DISTANCE + kind
+        out = np.full((len(planned), len(taught)), 3.0 * GAP_COST)
+        for i, p in enumerate(planned):
+            for j, t in enumerate(taught):
+                if _ident(p.name) == _ident(t.name):
+                    out[i, j] = 0.0
+                elif same_name(p.name, t.name):
+                    out[i, j] = RENAMED_COST
+        return out
+    P = np.array([p.T_world_tcp[:3, 3] for p in planned]).reshape(-1, 3)
+    T = np.array([t.T_world_tcp[:3, 3] for t in taught]).reshape(-1, 3)
+    d = np.linalg.norm(P[:, None, :] - T[None, :, :], axis=2)
+    joint_p = np.array([p.kind == "joint" for p in planned], bool)
+    joint_t = np.array([t.kind == "joint" for t in taught], bool)
+    kind = 0.25 * GAP_COST * (joint_p[:, None] != joint_t[None, :])
+    return np.asarray(2.0 * GAP_COST * d / REPLACED_DISTANCE + kind)
 
 
 def names_kept(planned: Sequence[PlannedTarget], taught: Sequence[TaughtTarget]) -> bool:
@@ -317,26 +344,27 @@ def match_moves(
 ) -> list[tuple[int | None, int | None]]:
     """Return the alignment of the two move lists as (planned index, taught index) pairs in
     order; None on one side: a move deleted (taught None) or added (planned None) on the
-    pendant. By name where the format keeps names (`names_kept`), else by order and distance."""
-    by_name = names_kept(planned, taught)
-    n, m = len(planned), len(taught)
+    pendant. By name where the format keeps names (`names_kept`), else by order and distance:
+    the least total cost (`pair_costs`, `GAP_COST` a gap; Needleman-Wunsch)."""
+    pairs = pair_costs(planned, taught, names_kept(planned, taught))
+    n, m = pairs.shape
     cost = np.zeros((n + 1, m + 1))
     cost[:, 0] = np.arange(n + 1) * GAP_COST
     cost[0, :] = np.arange(m + 1) * GAP_COST
     for i in range(1, n + 1):
         for j in range(1, m + 1):
-            pair = cost[i - 1, j - 1] + _pair_cost(planned[i - 1], taught[j - 1], by_name)
-            cost[i, j] = min(pair, cost[i - 1, j] + GAP_COST, cost[i, j - 1] + GAP_COST)
+            cost[i, j] = min(
+                cost[i - 1, j - 1] + pairs[i - 1, j - 1],
+                cost[i - 1, j] + GAP_COST,
+                cost[i, j - 1] + GAP_COST,
+            )
     out: list[tuple[int | None, int | None]] = []
     i, j = n, m
     while i > 0 or j > 0:
-        if i > 0 and j > 0:
-            pair = cost[i - 1, j - 1] + _pair_cost(planned[i - 1], taught[j - 1], by_name)
-            if np.isclose(cost[i, j], pair):
-                out.append((i - 1, j - 1))
-                i, j = i - 1, j - 1
-                continue
-        if i > 0 and np.isclose(cost[i, j], cost[i - 1, j] + GAP_COST):
+        if i > 0 and j > 0 and np.isclose(cost[i, j], cost[i - 1, j - 1] + pairs[i - 1, j - 1]):
+            out.append((i - 1, j - 1))
+            i, j = i - 1, j - 1
+        elif i > 0 and np.isclose(cost[i, j], cost[i - 1, j] + GAP_COST):
             out.append((i - 1, None))
             i -= 1
         else:
