@@ -14,9 +14,9 @@ from workbench.kinematics.robot_library import ROBOT_NAMES, library_robot
 from workbench.motion.programs.formats import PROGRAM_FORMATS
 from workbench.service import Workbench
 
-# the printed precision of the formats: 0.01 mm and 1e-6 of a quaternion (RAPID), 0.001 mm /
-# deg (KRL), 0.001 mm / deg (LS), joints to 1e-4 rad (URScript) and 0.001 deg (NACHI) through
-# a 0.6 m arm: all within 0.02 mm, 0.005 deg
+# the printed precision of the posts (RAPID: 8 significant digits of mm, quaternions to 1e-9;
+# KRL, LS: 1e-6 mm and deg; URScript joints 1e-9 rad, NACHI 1e-6 deg, through FK) is far
+# within these
 POSITION_TOL = 0.02e-3
 ANGLE_TOL = np.radians(0.005)
 PICK_ALONE = xyz_rpy_to_transform([0.003, 0.0, 0.0], [0.0, 0.0, 0.0])

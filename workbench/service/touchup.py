@@ -23,18 +23,24 @@ from workbench.project.io import project_from_dict
 from workbench.project.paths import size_limit
 from workbench.project.touchup import (
     TOUCHUP_MODES,
+    base_and_tool,
     planned_targets,
     touched_up_project,
     work_object_frames,
 )
-from workbench.project.units import pose_to_matrix
 
 if TYPE_CHECKING:
     from workbench.project.models import Project
     from workbench.service.motion_plan import MotionPlan
     from workbench.service.workbench import Workbench
 
-__all__ = ["TOUCHUP_MODES", "TouchupApplied", "TouchupService"]
+__all__ = [
+    "TOUCHUP_MODES",
+    "TouchupApplied",
+    "TouchupReport",
+    "TouchupService",
+    "TouchupSettings",
+]  # the GUI takes the report and settings types from here (it imports only the service)
 
 
 @dataclass(frozen=True)
@@ -104,8 +110,8 @@ class TouchupService:
             read = reader(fmt)(files)
             if project.robot.preset is not None:  # work objects as the controller states them
                 read = in_model_base(read, library_robot(project.robot.preset).T_base_controller)
-            T_world_base = pose_to_matrix(project.robot.base)
-            taught = taught_targets(read, wb.robot, T_world_base, pose_to_matrix(project.tool.tcp))
+            T_world_base, T_flange_tcp = base_and_tool(project)
+            taught = taught_targets(read, wb.robot, T_world_base, T_flange_tcp)
         except WorkbenchError as exc:
             raise InputError(
                 f"{exc}; check that it is a {fmt} program of this project's robot (or give the"
@@ -118,7 +124,7 @@ class TouchupService:
                 field=source,
             )
         frames = work_object_frames(project)
-        notes = read_notes(read, frames, T_world_base, pose_to_matrix(project.tool.tcp))
+        notes = read_notes(read, frames, T_world_base, T_flange_tcp)
         report = compare(
             planned,
             taught,

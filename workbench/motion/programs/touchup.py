@@ -44,8 +44,9 @@ from workbench.motion.programs.readback import solve_moves
 FloatArray = NDArray[np.float64]
 
 MOVED_DISTANCE = 0.05e-3
-"""A target moved when its position changed by more than this [m] (above every format's
-printed precision: 0.01 mm in RAPID, KRL, LS; joints to 0.001 deg in URScript and NACHI)."""
+"""A target moved when its position changed by more than this [m]: well above what the
+workbench's own posts print (RAPID: 8 significant digits of mm, quaternions to 1e-9; KRL and
+LS: 1e-6 mm and deg; URScript joints 1e-9 rad; NACHI joints 1e-6 deg)."""
 MOVED_ANGLE = np.radians(0.05)
 """... or its orientation by more than this [rad]."""
 FIT_DISTANCE = 0.5e-3
