@@ -31,7 +31,7 @@ from workbench.project.touchup import (
 
 if TYPE_CHECKING:
     from workbench.project.models import Project
-    from workbench.service.motion_plan import MotionPlan
+    from workbench.service.motion_plan import MotionPlan, Progress
     from workbench.service.workbench import Workbench
 
 __all__ = [
@@ -144,13 +144,19 @@ class TouchupService:
         return program + str([w.model_dump_json() for w in project.work_objects or ()])
 
     def apply(
-        self, report: TouchupReport, *, mode: str = "work_object", plan: bool = True
+        self,
+        report: TouchupReport,
+        *,
+        mode: str = "work_object",
+        plan: bool = True,
+        progress: Progress | None = None,
     ) -> Project:
         """Apply `report` to the project in `mode` ("work_object": fold each shared correction
         into its work object, targets that do not fit kept as taught; "targets": every moved
         target as taught; "both") and return the previous project (undo:
-        `wb.replace_project(previous)`). Then plan the motion again and check it (`plan`),
-        kept with the notes as `last_applied`; a failed plan is reported there, not raised."""
+        `wb.replace_project(previous)`). Then plan the motion again and check it (`plan`;
+        `progress` as `wb.plan_motion`'s), kept with the notes as `last_applied`; a failed plan
+        is reported there, not raised."""
         wb = self._wb
         previous = wb.project.model_copy(deep=True)
         basis = self._basis
@@ -168,7 +174,7 @@ class TouchupService:
         error = ""
         if plan:
             try:
-                result = wb.plan_motion()
+                result = wb.plan_motion(progress=progress)
             except WorkbenchError as exc:
                 error = str(exc)
         self.last_applied = TouchupApplied(mode, notes, result, error)

@@ -242,3 +242,21 @@ def test_too_few_targets_give_no_fit_with_the_reason() -> None:
     assert c is not None and not c.fitted and "at least 3 points" in c.reason
     assert all(r.moved and r.agrees is None for r in report.rows)
     assert "no correction fitted" in report.summary()
+
+
+def test_each_work_object_gets_its_own_correction() -> None:
+    rng = np.random.default_rng(11)
+    W_a, a = _cell(rng, 5, "table")
+    W_b, b = _cell(rng, 4, "press")
+    C_a, C_b = _correction(rng), _correction(rng)
+    planned = a + [
+        PlannedTarget(5 + p.index, f"b{p.index}", p.kind, p.wobj, p.T_world_tcp) for p in b
+    ]
+    D = {"table": W_a @ C_a @ np.linalg.inv(W_a), "press": W_b @ C_b @ np.linalg.inv(W_b)}
+    taught = [_taught(p, D[p.wobj] @ p.T_world_tcp) for p in planned]
+    report = compare(planned, taught, {"base": np.eye(4), "table": W_a, "press": W_b})
+    got = {c.wobj: c for c in report.corrections}
+    np.testing.assert_allclose(got["table"].T_correction, C_a, atol=1e-9)
+    np.testing.assert_allclose(got["press"].T_correction, C_b, atol=1e-9)
+    assert report.correction is got["table"]  # the one with the most moves
+    np.testing.assert_allclose(got["press"].T_world_wobj_new, W_b @ C_b, atol=1e-12)
