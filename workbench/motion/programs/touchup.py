@@ -27,6 +27,7 @@ SI inside (m, rad); `TouchupRow.delta_mm`, `angle_deg` and `summary()` are for d
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -416,36 +417,59 @@ def _in_wobj(T_world_wobj: FloatArray, T_world: FloatArray) -> FloatArray:
     return out
 
 
-def _agreeing(
+def _agreement(
     C: FloatArray, planned: Sequence[FloatArray], taught: Sequence[FloatArray], s: TouchupSettings
-) -> list[int]:
+) -> tuple[list[int], float]:
     """Return the indices of the targets that `C` maps onto their taught pose within the fit
-    tolerances (position and orientation)."""
-    return [
-        k
-        for k, (P, Q) in enumerate(zip(planned, taught, strict=True))
-        if np.linalg.norm(C[:3, :3] @ P[:3, 3] + C[:3, 3] - Q[:3, 3]) <= s.fit_distance
-        and rotation_angle(C[:3, :3] @ P[:3, :3], Q[:3, :3]) <= s.fit_angle
-    ]
+    tolerances (position and orientation), and the sum of their distances [m]."""
+    P, Q = np.asarray(planned), np.asarray(taught)  # (n, 4, 4)
+    moved = P[:, :3, 3] @ C[:3, :3].T + C[:3, 3]
+    dist = np.linalg.norm(moved - Q[:, :3, 3], axis=1)
+    # angle of (C_R P_R)^T Q_R: trace = sum of the elementwise product of C_R P_R and Q_R
+    cos = (np.einsum("ij,njk,nik->n", C[:3, :3], P[:, :3, :3], Q[:, :3, :3]) - 1.0) / 2.0
+    ok = (dist <= s.fit_distance) & (np.arccos(np.clip(cos, -1.0, 1.0)) <= s.fit_angle)
+    return [int(k) for k in np.flatnonzero(ok)], float(dist[ok].sum())
+
+
+MAX_TRIPLES = 220
+"""The consensus tries every triple of targets up to 12 targets (220 triples), beyond that
+this many, drawn with a fixed seed (the same report for the same programs)."""
+
+
+def _candidates(planned: Sequence[FloatArray], taught: Sequence[FloatArray]) -> list[FloatArray]:
+    """Return the rigid changes the consensus tries: each target's own (taught @ inv(planned):
+    a pose fixes one) and the least-squares change of the positions of each triple of targets
+    (the pendant may re-teach positions and leave a tool's orientation as it was)."""
+    out = [Q @ np.linalg.inv(P) for P, Q in zip(planned, taught, strict=True)]
+    n = len(planned)
+    triples = list(itertools.combinations(range(n), 3))
+    if len(triples) > MAX_TRIPLES:
+        rng = np.random.default_rng(0)
+        triples = [triples[k] for k in rng.choice(len(triples), MAX_TRIPLES, replace=False)]
+    src = np.array([P[:3, 3] for P in planned])
+    tgt = np.array([Q[:3, 3] for Q in taught])
+    for tri in triples:
+        try:
+            out.append(fit_rigid(src[list(tri)], tgt[list(tri)]).T)
+        except InputError:  # on one line: no change determined
+            continue
+    return out
 
 
 def consensus(
     planned: Sequence[FloatArray], taught: Sequence[FloatArray], settings: TouchupSettings
 ) -> list[int]:
-    """Return the largest set of targets that share one rigid change: each target's own change
-    (taught @ inv(planned): a pose fixes a rigid transform) tried on all, the one most agree
-    with kept (ties: the smaller summed distance). A least-squares fit alone can mask a target
-    moved alone by spreading its error over a few coplanar others; a full pose cannot."""
+    """Return the largest set of targets that share one rigid change: every candidate change
+    (`_candidates`) tried on all targets, the one most agree with kept, within the fit
+    tolerances in position and orientation (ties: the smaller summed distance). A
+    least-squares fit of all targets can mask a target moved alone by spreading its error over
+    a few coplanar others; a change fixed by a few targets cannot (RANSAC's idea, exhaustive
+    where the targets are few)."""
     best: list[int] = []
     best_cost = np.inf
-    for P, Q in zip(planned, taught, strict=True):
-        C = Q @ np.linalg.inv(P)
-        agree = _agreeing(C, planned, taught, settings)
-        cost = sum(
-            float(np.linalg.norm(C[:3, :3] @ planned[k][:3, 3] + C[:3, 3] - taught[k][:3, 3]))
-            for k in agree
-        )
-        if len(agree) > len(best) or (len(agree) == len(best) and cost < best_cost):
+    for C in _candidates(planned, taught):
+        agree, cost = _agreement(C, planned, taught, settings)
+        if len(agree) > len(best) or (len(agree) == len(best) and cost < best_cost - 1e-12):
             best, best_cost = agree, cost
     return best
 
@@ -476,7 +500,7 @@ def fit_work_object(
     except InputError as exc:
         return refused(str(exc))
     first = fit_rigid_robust(src[shared], tgt[shared], settings.fit_distance)
-    kept = _agreeing(first.T, planned, taught, settings)
+    kept, _ = _agreement(first.T, planned, taught, settings)
     try:
         fit = fit_rigid(src[kept], tgt[kept])
     except InputError as exc:
