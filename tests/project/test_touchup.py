@@ -10,6 +10,7 @@ import pytest
 from tests.touchup_cell import CORRECTION, ROOT, cell_data, touched_up_files
 from workbench.errors import InputError
 from workbench.geometry.transforms import xyz_rpy_to_transform
+from workbench.motion.programs.touchup import TaughtTarget, compare
 from workbench.project import project_from_dict
 from workbench.project.touchup import planned_targets, touched_up_project, work_object_frames
 from workbench.project.units import pose_to_matrix
@@ -73,3 +74,27 @@ def test_a_bad_mode_is_refused_by_field(compared) -> None:
     wb, report = compared
     with pytest.raises(InputError, match="mode: 'wobj' is not one of work_object, targets, both"):
         touched_up_project(wb.project, report, "wobj")
+
+
+def test_moves_in_the_robot_base_are_kept_as_taught_with_a_note() -> None:
+    # the shipped MZ07 cell states its targets in the robot base: a shared shift is found but
+    # has no work object to go into
+    wb = Workbench.open(ROOT / "projects" / "mz07_cell.json")
+    planned = planned_targets(wb.project, wb.robot)
+    shift = xyz_rpy_to_transform([0.002, 0.0, 0.0], [0.0, 0.0, 0.0])
+    taught = [
+        TaughtTarget(p.name, p.kind, "base", 1, shift @ p.T_world_tcp, np.zeros(6), True)
+        for p in planned
+        if p.joints is None  # the pose targets; home (joints) left out: deleted
+    ]
+    report = compare(planned, taught, work_object_frames(wb.project))
+    c = report.correction
+    assert c is not None and c.wobj == "base" and c.significant(report.settings)
+    data, notes = touched_up_project(wb.project, report, "work_object", wb.robot.convention)
+    assert any("no work object to fold it into" in n for n in notes)
+    assert any("home: deleted on the pendant" in n for n in notes)
+    moved = project_from_dict(data)
+    for p in planned[:-1]:
+        np.testing.assert_allclose(
+            pose_to_matrix(moved.program.moves[p.index].pose), shift @ p.T_world_tcp, atol=1e-9
+        )

@@ -553,7 +553,7 @@ def compare(
 
 
 def _mm(v: float) -> str:
-    return f"{v * 1000.0:8.2f}"
+    return f"{round(v * 1000.0, 2) + 0.0:8.2f}"  # + 0.0: no "-0.00"
 
 
 def summary_lines(report: TouchupReport) -> list[str]:
@@ -564,15 +564,21 @@ def summary_lines(report: TouchupReport) -> list[str]:
         + (f" ({report.fmt})" if report.fmt else ""),
         f"{'move':<24} {'wobj':<12} {'dx':>8} {'dy':>8} {'dz':>8} {'angle':>7}  status",
     ]
+    still = {c.wobj for c in report.corrections if not c.moved}  # nothing to fit there
     for r in report.rows:
         if r.delta is None or r.angle is None:
             out.append(f"{r.name:<24} {r.wobj:<12} {'':>8} {'':>8} {'':>8} {'':>7}  {r.status}"
                        + (" on the pendant" if r.status in ("added", "deleted") else ""))  # fmt: skip
             continue
-        fit = "" if r.agrees is None else ("  fits" if r.agrees else "  does not fit")
+        fit = (
+            ""
+            if r.agrees is None or r.wobj in still
+            else ("  fits" if r.agrees else "  does not fit")
+        )
         dx, dy, dz = (_mm(v) for v in r.delta)
         out.append(
-            f"{r.name:<24} {r.wobj:<12} {dx} {dy} {dz} {np.degrees(r.angle):7.3f}  {r.status}{fit}"
+            f"{r.name:<24} {r.wobj:<12} {dx} {dy} {dz} {np.degrees(r.angle) + 0.0:7.3f}"
+            f"  {r.status}{fit}"
         )
     for c in report.corrections:
         out += correction_lines(c, report.settings)
