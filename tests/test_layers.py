@@ -47,7 +47,10 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("project",),
     ("service",),
     ("gui",),
-    ("cli_calibrate",),
+    (
+        "cli_calibrate",
+        "cli_touchup",
+    ),  # commands of the CLI in their own modules (cli.py stays small)
     ("cli",),
     ("__main__", "__init__"),
 )

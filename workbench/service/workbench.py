@@ -39,6 +39,7 @@ from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
+from workbench.service.touchup import TouchupService
 from workbench.service.workflow_slot import WorkflowSlot
 
 
@@ -179,12 +180,9 @@ class Workbench:
         return self.link_poses(q)[-1] @ self._setup.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
-        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first.
-
-        One per arm configuration and turn of the wide joints, labelled
-        'front/elbow up/no flip, J6 +1 turn' (the labels depend on the pose only);
-        `move_tcp` accepts them.
-        """
+        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first: one per
+        arm configuration and turn of the wide joints, labelled 'front/elbow up/no flip, J6 +1
+        turn' (the labels depend on the pose only); `move_tcp` accepts them."""
         T = check_transform(T_world_tcp, "T_world_tcp")
         setup = self._setup
         T_base_flange = (
@@ -247,6 +245,10 @@ class Workbench:
     assembly = WorkflowSlot(AssemblyService, "The virtual-assembly workflow (seed 003).")
     polishing = WorkflowSlot(PolishingService, "The polishing workflow (seed 004).")
     calibration = WorkflowSlot(CalibrationService, "TCP, work-object and base calibration.")
+
+    touchup = WorkflowSlot(
+        TouchupService, "The touch-up round trip: a program edited on the robot."
+    )
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
