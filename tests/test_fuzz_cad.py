@@ -30,7 +30,7 @@ from hostile_cad import DXF_EXAMPLES, HOSTILE, STEP_EXAMPLES, mutate
 from workbench.errors import WorkbenchError
 
 ROOT = Path(__file__).resolve().parent.parent
-CASES = 60
+CASES = 120
 CAD_SECONDS = 20.0
 MARGIN_SECONDS = 10.0  # worker start-up (Open CASCADE loads in 4-6 s) and the transfer
 CASE_MEMORY = 512 * 1024**2  # bytes of peak RSS growth of this process in one case

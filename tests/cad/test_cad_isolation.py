@@ -16,7 +16,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hostile_cad import HOSTILE, STEP_EXAMPLES, block_bomb_dxf, broken_step, deep_step, sphere_step
+from hostile_cad import (
+    HOSTILE,
+    STEP_EXAMPLES,
+    block_bomb_dxf,
+    broken_step,
+    circle_dxf,
+    deep_step,
+    sphere_step,
+)
 
 from workbench.cad import dxf_checks, isolation, step_checks
 from workbench.cad.dxf import read_flat_pattern
@@ -244,11 +252,25 @@ def test_a_reader_that_hangs_is_stopped_at_the_time_limit(monkeypatch: pytest.Mo
         read_step_mesh(sphere_step(50.0), "s.step", "workpiece", fine)
 
 
-@pytest.mark.slow  # ezdxf expands a block bomb until the 1 GiB limit (some 10-30 s)
+@pytest.mark.slow  # ezdxf flattens a circle of 1e12 mm until the 1 GiB limit (some 5-10 s)
 def test_a_reader_that_swells_is_stopped_at_the_memory_limit(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     monkeypatch.setenv("WORKBENCH_CAD_MEMORY_BYTES", str(1024**3))
-    monkeypatch.setattr(dxf_checks, "MAX_EXPANDED_ENTITIES", 10**12)
-    with pytest.raises(MeshError, match=r"reading 'bomb\.dxf' took more than the 1 GiB|crashed"):
-        read_flat_pattern(block_bomb_dxf(8, 10), "bomb.dxf", "bending.part_file")
+    monkeypatch.setattr(step_checks, "MAX_COORDINATE_MM", 1e300)  # let ezdxf meet the circle
+    with pytest.raises(
+        MeshError,
+        match=r"^bending\.part_file: reading 'c\.dxf' took more than the 1 GiB its reader may use"
+        r" \(WORKBENCH_CAD_MEMORY_BYTES\)",
+    ):
+        read_flat_pattern(circle_dxf(1e12), "c.dxf", "bending.part_file")
+
+
+def test_a_workpiece_is_read_as_a_mesh_or_a_step_only(tmp_path: Path) -> None:
+    """trimesh reads a DXF as a 2D path, in this process and unbounded: refused by its ending."""
+    from workbench.polishing.workpiece import load_workpiece
+
+    path = tmp_path / "lines.dxf"
+    path.write_bytes(block_bomb_dxf(2, 3))
+    with pytest.raises(MeshError, match=r"workpiece file 'lines\.dxf' is not a mesh file"):
+        load_workpiece(path, name="lines.dxf")

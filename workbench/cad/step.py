@@ -66,7 +66,7 @@ def _quiet() -> None:
         printer.SetTraceLevel(Message_Gravity.Message_Fail)
 
 
-def read_step_shape(data: bytes, name: str, field: str) -> Any:
+def read_step_shape(data: bytes, name: str, field: str | None) -> Any:
     """Return the OCP ``TopoDS_Shape`` [mm] of the STEP file `data` (named `name` in errors),
     in this process: for the CAD worker and for files this program wrote.
 
@@ -76,8 +76,9 @@ def read_step_shape(data: bytes, name: str, field: str) -> Any:
     """
     if not data.lstrip()[:32].upper().startswith(b"ISO-10303-21"):
         raise MeshError(
-            f"{field}: {name!r} is not a STEP file (it does not start with 'ISO-10303-21;');"
-            " export the part as STEP AP214 or AP242"
+            f"{name!r} is not a STEP file (it does not start with 'ISO-10303-21;');"
+            " export the part as STEP AP214 or AP242",
+            field=field,
         )
     step_checks.check_text(data, name, field)
     try:  # OCP's libraries link libGL and libX11 (Debian: libgl1), even without a display
@@ -86,9 +87,10 @@ def read_step_shape(data: bytes, name: str, field: str) -> Any:
         from OCP.STEPControl import STEPControl_Reader
     except (ImportError, OSError) as exc:
         raise MeshError(
-            f"{field}: cannot read STEP file {name!r}: Open CASCADE (OCP) does not load here"
+            f"cannot read STEP file {name!r}: Open CASCADE (OCP) does not load here"
             f" ({exc}); install the package 'cadquery-ocp-novtk' and the system library"
-            " libGL (Debian: apt-get install libgl1)"
+            " libGL (Debian: apt-get install libgl1)",
+            field=field,
         ) from None
 
     _quiet()
@@ -101,21 +103,24 @@ def read_step_shape(data: bytes, name: str, field: str) -> Any:
         status = reader.ReadFile(tmp)
         if status != IFSelect_RetDone:
             raise MeshError(
-                f"{field}: cannot read STEP file {name!r} ({status.name}); check that it is a"
-                " complete STEP export"
+                f"cannot read STEP file {name!r} ({status.name}); check that it is a"
+                " complete STEP export",
+                field=field,
             )
         step_checks.check_load(reader, data, name, field)
         if reader.TransferRoots() == 0:
-            raise MeshError(f"{field}: STEP file {name!r} holds no shape to transfer")
+            raise MeshError(f"STEP file {name!r} holds no shape to transfer", field=field)
         shape = reader.OneShape()
     except MeshError:
         raise
     except Exception as exc:  # OCP raises Standard_Failure subclasses on broken files
-        raise MeshError(f"{field}: cannot read STEP file {name!r}: {type(exc).__name__}") from None
+        raise MeshError(
+            f"cannot read STEP file {name!r}: {type(exc).__name__}", field=field
+        ) from None
     finally:
         os.unlink(tmp)
     if shape.IsNull():
-        raise MeshError(f"{field}: STEP file {name!r} holds no shape")
+        raise MeshError(f"STEP file {name!r} holds no shape", field=field)
     return shape
 
 
@@ -129,7 +134,9 @@ class StepTolerance:
     angular: float = math.radians(DEFAULT_ANGULAR_DEG)
 
 
-def read_step_mesh(data: bytes, name: str, field: str, tolerance: StepTolerance) -> trimesh.Trimesh:
+def read_step_mesh(
+    data: bytes, name: str, field: str | None, tolerance: StepTolerance
+) -> trimesh.Trimesh:
     """Return the tessellated STEP file `data` [mm] (its own length unit converted to mm),
     read in a CAD worker (`workbench.cad.isolation`).
 
@@ -164,12 +171,13 @@ def read_step_sheet(data: bytes, name: str, field: str) -> SheetBrep:
     return brep
 
 
-def _checked_shape(data: bytes, name: str, field: str) -> Any:
+def _checked_shape(data: bytes, name: str, field: str | None) -> Any:
     shape = read_step_shape(data, name, field)
     if not faces_of(shape):
         raise MeshError(
-            f"{field}: STEP file {name!r} holds no surfaces or solids (only curves or points);"
-            " export the part's solid body (or its faces) as STEP"
+            f"STEP file {name!r} holds no surfaces or solids (only curves or points);"
+            " export the part's solid body (or its faces) as STEP",
+            field=field,
         )
     step_checks.check_extent(_bbox(shape), name, field)
     return shape
@@ -213,7 +221,7 @@ def mesh_arrays(
     try:
         mesh = tessellate(shape, linear, angular)
     except MeshError as exc:
-        raise MeshError(f"{field}: STEP file {name!r}: {exc}") from None
+        raise MeshError(f"STEP file {name!r}: {exc}", field=field) from None
     solids = []
     explorer = TopExp_Explorer(shape, TopAbs_SOLID)
     while explorer.More():
