@@ -274,3 +274,16 @@ def test_a_workpiece_is_read_as_a_mesh_or_a_step_only(tmp_path: Path) -> None:
     path.write_bytes(block_bomb_dxf(2, 3))
     with pytest.raises(MeshError, match=r"workpiece file 'lines\.dxf' is not a mesh file"):
         load_workpiece(path, name="lines.dxf")
+
+
+def test_import_part_refuses_a_step_with_broken_references(tmp_path: Path) -> None:
+    from cli_run import run_cli
+
+    path = tmp_path / "broken.step"
+    path.write_bytes(broken_step())
+    done = run_cli("import-part", str(path), "--out", str(tmp_path / "part.json"))
+    assert done.returncode == 2 and not (tmp_path / "part.json").exists()
+    assert (
+        "broken.step (broken.step): STEP file 'broken.step' does not load whole: 10 entities"
+        in (done.stderr)
+    )

@@ -17,9 +17,9 @@ with an allow-list of classes, and turns every way a read can end into a result 
 `WorkbenchError` naming the file and what happened: the worker's own error as raised there
 (same class, message and field), a crash (the signal), the time limit, the memory limit.
 
-Start-up costs a new Python with numpy (and OCP for STEP, imported on the first STEP read):
-about 1 s, and 4-6 s with OCP, on this 2-core machine (docs/security.md). A worker is
-therefore kept and reused: `MAX_IDLE_WORKERS` wait between reads, one more is started for
+Start-up costs a new Python with numpy and ezdxf (2.7-4 s for the first read here; OCP loads
+on the first STEP read, 3 s, as it did in process); later reads cost what they did in process
+(docs/security.md). A worker is therefore kept and reused: `MAX_IDLE_WORKERS` wait between reads, one more is started for
 each read that finds none idle; a worker that crashed, was killed or grew past half its
 memory limit is replaced at the next read.
 """

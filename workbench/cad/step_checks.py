@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import trimesh
 
 from workbench.errors import MeshError
+
+if TYPE_CHECKING:
+    import trimesh
 
 MAX_STEP_ENTITIES = 2_000_000
 """Most entities (``#n = ...``) a STEP file may hold (a 200 MiB file holds some 3 million):
