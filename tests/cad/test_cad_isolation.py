@@ -287,3 +287,25 @@ def test_import_part_refuses_a_step_with_broken_references(tmp_path: Path) -> No
         "broken.step (broken.step): STEP file 'broken.step' does not load whole: 10 entities"
         in (done.stderr)
     )
+
+
+def test_a_worker_that_ended_while_idle_is_replaced() -> None:
+    import os
+    import signal
+    import time
+
+    data = (ROOT / "projects/parts/pan_flat.dxf").read_bytes()
+    read_flat_pattern(data, "pan_flat.dxf", "x")
+    assert isolation._idle, "the worker waits for the next read"
+    for worker in isolation._idle:
+        os.kill(worker.proc.pid, signal.SIGKILL)
+    time.sleep(0.2)
+    assert len(read_flat_pattern(data, "pan_flat.dxf", "x").bend_lines) == 4
+    # the race that check leaves: a worker that ends after it, before the request is sent
+    gone = isolation._Worker(isolation.cad_memory_bytes())
+    os.kill(gone.proc.pid, signal.SIGKILL)
+    gone.proc.wait()
+    assert gone.call("workbench.cad.dxf:flat_pattern_here", (data, "p.dxf", "x", "BEND"), 5.0) == (
+        "gone",
+        None,
+    )

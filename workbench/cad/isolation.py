@@ -171,6 +171,10 @@ class _Worker:
         deadline = time.monotonic() + seconds
         try:
             _send(self.proc.stdin, (target, args, seconds, _settings()))
+        except (BrokenPipeError, OSError):
+            self.kill()
+            return "gone", None  # it ended while idle: the file is not to blame
+        try:
             head = self._read(_HEADER.size, deadline)
             body = None if head is None else self._read(_HEADER.unpack(head)[0], deadline)
         except TimeoutError:
@@ -243,6 +247,9 @@ def run_isolated(target: str, args: tuple[Any, ...], *, name: str, field: str | 
     seconds, memory = cad_seconds(), cad_memory_bytes()
     worker = _take(memory)
     status, detail = worker.call(target, args, seconds)
+    if status == "gone":  # an idle worker that ended between the check and the read
+        worker = _Worker(memory)
+        status, detail = worker.call(target, args, seconds)
     if status in ("ok", "error", "memory", "failed"):
         if detail[-1]:
             _give_back(worker)
@@ -275,6 +282,8 @@ def run_isolated(target: str, args: tuple[Any, ...], *, name: str, field: str | 
             " readers: export it again from its CAD system",
             field=field,
         )
+    if status == "gone":
+        raise MeshError(f"cannot read {name!r}: the CAD worker does not start", field=field)
     raise MeshError(f"cannot read {name!r}: {detail[0]}: {detail[1]}", field=field)
 
 
