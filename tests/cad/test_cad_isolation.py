@@ -247,7 +247,9 @@ def test_a_reader_that_hangs_is_stopped_at_the_time_limit(monkeypatch: pytest.Mo
     monkeypatch.setenv("WORKBENCH_CAD_SECONDS", "3")
     fine = StepTolerance(linear=1e-6, angular=np.radians(0.5))  # 0.001 mm: the mesher takes minutes
     with pytest.raises(
-        MeshError, match=r"reading 's\.step' took longer than 3 s \(WORKBENCH_CAD_SECONDS\)"
+        MeshError,
+        match=r"reading 's\.step' took longer than 3 s \(WORKBENCH_CAD_SECONDS\) and was stopped;"
+        r" simplify the file, raise the tolerances \(0\.001 mm, the project's 'cad' section\)",
     ):
         read_step_mesh(sphere_step(50.0), "s.step", "workpiece", fine)
 

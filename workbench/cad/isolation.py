@@ -234,9 +234,12 @@ def _signal_name(code: int) -> str:
         return f"signal {-code}"
 
 
-def run_isolated(target: str, args: tuple[Any, ...], *, name: str, field: str | None) -> Any:
+def run_isolated(
+    target: str, args: tuple[Any, ...], *, name: str, field: str | None, fix: str = ""
+) -> Any:
     """Return `target(*args)` run in a CAD worker (`target` is "module:function" in
-    workbench.cad); `name` (the file) and `field` name the input in errors.
+    workbench.cad); `name` (the file) and `field` name the input in errors, `fix` (", or ...")
+    adds to what a time or memory refusal tells the user to do.
 
     The worker's WorkbenchError comes back as raised; a crash, the time limit
     (`WORKBENCH_CAD_SECONDS`) and the memory limit (`WORKBENCH_CAD_MEMORY_BYTES`) become a
@@ -263,13 +266,13 @@ def run_isolated(target: str, args: tuple[Any, ...], *, name: str, field: str | 
     if status == "memory":
         raise MeshError(
             f"{where} took more than the {memory / 1024**3:g} GiB its reader may use"
-            " (WORKBENCH_CAD_MEMORY_BYTES); simplify the file or raise the setting",
+            f" (WORKBENCH_CAD_MEMORY_BYTES); simplify the file{fix} or raise the setting",
             field=field,
         )
     if status == "timeout":
         raise MeshError(
             f"{where} took longer than {seconds:g} s (WORKBENCH_CAD_SECONDS) and was stopped;"
-            " simplify the file or raise the setting",
+            f" simplify the file{fix} or raise the setting",
             field=field,
         )
     if status == "died":

@@ -151,6 +151,7 @@ def read_step_mesh(
         (data, name, field, linear, tolerance.angular),
         name=name,
         field=field,
+        fix=f", raise the tolerances ({linear:g} mm, the project's 'cad' section)",
     )
     mesh = trimesh.Trimesh(
         arrays["vertices"],
