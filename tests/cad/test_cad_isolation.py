@@ -311,3 +311,16 @@ def test_a_worker_that_ended_while_idle_is_replaced() -> None:
         "gone",
         None,
     )
+
+
+@pytest.mark.slow  # starts two more workers (some 3 s each on two cores)
+def test_reads_from_several_threads_each_get_a_worker() -> None:
+    """A server reads for several clients at once: each read takes an idle worker or starts one,
+    and no more than MAX_IDLE_WORKERS stay afterwards."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    data = (ROOT / "projects/parts/pan_flat.dxf").read_bytes()
+    with ThreadPoolExecutor(4) as pool:
+        done = list(pool.map(lambda i: read_flat_pattern(data, f"p{i}.dxf", "x"), range(4)))
+    assert [len(p.bend_lines) for p in done] == [4] * 4
+    assert 1 <= len(isolation._idle) <= isolation.MAX_IDLE_WORKERS
