@@ -146,6 +146,13 @@ def test_a_reply_may_hold_arrays_and_the_readers_classes_only() -> None:
     with pytest.raises(pickle.UnpicklingError, match=r"builtins\.print"):
         isolation._Unpickler(io.BytesIO(pickle.dumps(Evil()))).load()
 
+    class Sneaky:  # a function of the allowed package: refused too
+        def __reduce__(self) -> tuple:
+            return (isolation.stop_workers, ())
+
+    with pytest.raises(pickle.UnpicklingError, match=r"isolation\.stop_workers"):
+        isolation._Unpickler(io.BytesIO(pickle.dumps(Sneaky()))).load()
+
 
 def test_every_cad_read_goes_through_the_isolated_entry_points() -> None:
     """Only the worker's modules call the readers (OCP's STEPControl_Reader, ezdxf's readers)."""

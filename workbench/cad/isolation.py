@@ -27,6 +27,7 @@ memory limit is replaced at the next read.
 from __future__ import annotations
 
 import atexit
+import dataclasses
 import importlib
 import io
 import os
@@ -102,7 +103,8 @@ def cad_memory_bytes() -> int:
 
 
 class _Unpickler(pickle.Unpickler):
-    """Unpickles only numpy arrays and the CAD readers' own classes (workbench.cad.*)."""
+    """Unpickles only numpy arrays and the CAD readers' own dataclasses (workbench.cad.*): a
+    worker that a hostile file took over cannot make the parent call a function."""
 
     def find_class(self, module: str, name: str) -> Any:
         numpy_ok = module.split(".")[0] == "numpy" and name in (
@@ -112,8 +114,12 @@ class _Unpickler(pickle.Unpickler):
             "scalar",
             "_frombuffer",
         )
-        if numpy_ok or module.startswith(ALLOWED_MODULES):
+        if numpy_ok:
             return super().find_class(module, name)
+        if module.startswith(ALLOWED_MODULES):  # the readers' dataclasses, never a function
+            found = super().find_class(module, name)
+            if isinstance(found, type) and dataclasses.is_dataclass(found):
+                return found
         raise pickle.UnpicklingError(f"a CAD worker's reply may not hold {module}.{name}")
 
 
