@@ -96,3 +96,34 @@ def test_import_a_robot_a_step_part_a_dxf_part_and_an_obstacle(launch, tmp_path:
     page.get_by_role("tab", name="Bending").click()
     page.get_by_text("Level 0 (root)").first.wait_for()
     assert page.get_by_text("OBB tree levels", exact=True).count() == 1
+
+
+def test_a_step_that_crashes_the_reader_is_refused_and_the_server_answers(  # type: ignore[no-untyped-def]
+    launch, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Issue 29: a STEP whose nested list crashes Open CASCADE's parser (its nesting bound lifted
+    here, so the file reaches the parser) ended the server with every page; it now crashes the
+    CAD worker only. So does a STEP with broken references on the obstacle (mesh) route."""
+    from hostile_cad import broken_step, deep_step
+
+    from workbench.cad import step_checks
+
+    app, page = launch(ROOT / "projects" / "u_channel_cell.json")
+    page.get_by_role("tab", name="Project").click()
+    monkeypatch.setattr(step_checks, "MAX_STEP_NESTING", 10**9)
+    deep, broken = tmp_path / "deep.step", tmp_path / "broken.step"
+    deep.write_bytes(deep_step())
+    broken.write_bytes(broken_step())
+    before = app.wb.project.bending.part
+    _upload(page, "Import part (STEP or DXF)", deep)
+    page.get_by_text("the reader crashed on 'deep.step' (with SIGSEGV)").first.wait_for()
+    save_screenshot(page, "img/import_panel_crash.png")
+    assert app.wb.project.bending.part == before
+    close_notifications(page)
+    n = len(app.wb.project.cell.objects)
+    _upload(page, "Import obstacle", broken)
+    page.get_by_text("does not load whole: 10 entities fail").first.wait_for()
+    assert len(app.wb.project.cell.objects) == n
+    close_notifications(page)
+    _upload(page, "Import part (STEP or DXF)", PARTS / "u_channel.step")  # the same server
+    page.get_by_text("3 flanges, 2 bends").first.wait_for()

@@ -13,6 +13,10 @@ What is read (R12 to R2018, ASCII or binary, model space, blocks inserted there 
   (case-insensitive; "-" or " " for "_"). The angle (and the direction, and optionally the
   inner radius) come from the bend note nearest the line (`workbench.cad.bend_notes`); the
   layers ``_UP``/``_DOWN`` give the direction too (a note that disagrees is refused).
+
+`read_flat_pattern`, the one entry point, reads the file in a CAD worker process with a time
+and memory limit (`workbench.cad.isolation`), bounded before parsing, expanding and flattening
+(`workbench.cad.dxf_checks`).
 """
 
 from __future__ import annotations
@@ -26,6 +30,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from workbench.cad import dxf_checks
 from workbench.cad.bend_notes import assign_notes, read_notes
 from workbench.cad.dxf_contours import CURVE_TYPES, chain_curves, flatten
 from workbench.cad.flat_pattern import (
@@ -34,6 +39,7 @@ from workbench.cad.flat_pattern import (
     FlatPatternError,
     check_flat_pattern,
 )
+from workbench.cad.isolation import run_isolated
 from workbench.geometry.polygon import clean_ring
 
 #: $INSUNITS code -> (name, metres per drawing unit); anything else is read as mm.
@@ -71,6 +77,7 @@ def _load(data: bytes, name: str, field: str) -> Any:
     fix = "export the flat pattern as DXF (R12 to R2018)"
     if not (data.startswith(b"AutoCAD Binary DXF") or b"SECTION" in data[:65536].upper()):
         raise FlatPatternError(f"{name!r} is not a DXF file (no SECTION); {fix}", field=field)
+    dxf_checks.check_text(data, name, field)
     try:
         if data.startswith(b"AutoCAD Binary DXF"):
             doc = _read_binary(data)
@@ -97,7 +104,7 @@ def _entities(space: Any, layer: str | None = None, depth: int = 0) -> list[tupl
     for e in space:
         own = str(e.dxf.get("layer", "0"))
         here = layer if (layer is not None and own == "0") else own
-        if e.dxftype() == "INSERT" and depth < 8:
+        if e.dxftype() == "INSERT" and depth < dxf_checks.MAX_INSERT_DEPTH:
             out += _entities(e.virtual_entities(), here, depth + 1)
         else:
             out.append((e, here))
@@ -169,18 +176,35 @@ def _outline(curves: list, name: str, field: str, unit: str, scale: float) -> tu
 def read_flat_pattern(
     data: bytes, name: str, field: str, *, bend_layer: str = "BEND"
 ) -> FlatPattern:
-    """Return the flat pattern [m, rad] of the DXF file `data` (named `name` in messages).
+    """Return the flat pattern [m, rad] of the DXF file `data` (named `name` in messages),
+    read in a CAD worker process (`workbench.cad.isolation`).
 
-    FlatPatternError (an InputError) names `field` and the fix: not a DXF file, no closed
-    outline, several outlines, no bend line on the bend layers (the message lists the layers
-    present), a bend line without an angle or direction (named by its number and ends), a
-    bend line that does not cross the outline from edge to edge, two bend lines that cross.
+    FlatPatternError (an InputError) names `field` and the fix: not a DXF file, too many
+    objects, blocks that expand too far, geometry beyond the cell or a spline of too high a
+    degree (`workbench.cad.dxf_checks`), no closed outline, several outlines, no bend line on
+    the bend layers (the message lists the layers present), too many bend lines, a bend line
+    without an angle or direction (named by its number and ends), a bend line that does not
+    cross the outline from edge to edge, two bend lines that cross. MeshError for a reader
+    that fails otherwise, crashes, or runs past its time or memory limit.
     """
+    pattern: FlatPattern = run_isolated(
+        "workbench.cad.dxf:flat_pattern_here",
+        (data, name, field, bend_layer),
+        name=name,
+        field=field,
+    )
+    return pattern
+
+
+def flat_pattern_here(data: bytes, name: str, field: str, bend_layer: str) -> FlatPattern:
+    """In the CAD worker: `read_flat_pattern`'s work."""
     doc = _load(data, name, field)
     scale, unit, notes = _units(doc)
+    dxf_checks.check_expansion(doc, name, field)
     items = _entities(doc.modelspace())
     curves, lines, skipped = [], [], 0
     for e, layer in items:
+        dxf_checks.check_entity(e, scale, name, field, layer)
         kind, dxftype = _bend_kind(layer, bend_layer), e.dxftype()
         if kind is not None:
             if dxftype == "LINE":
@@ -199,6 +223,7 @@ def read_flat_pattern(
             f"{bend_layer!r} or name the layer that holds them as the bend layer",
             field=field,
         )
+    dxf_checks.check_bend_count(len(lines), name, field)
     outline, holes, more = _outline(curves, name, field, unit, scale)
     if skipped:
         more.append(f"{skipped} curve(s) on the bend layers that are not LINEs ignored")

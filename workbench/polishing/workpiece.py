@@ -23,6 +23,9 @@ from workbench.polishing.choices import MESH_UNITS, MeshUnits
 #: in the wrong units (1000x too large or too small).
 MIN_DIAGONAL_M = 2e-3
 MAX_DIAGONAL_M = 20.0
+#: The mesh files read as a workpiece (besides STEP): trimesh would read more (a DXF as a 2D
+#: path, in this process and unbounded), so any other ending is refused by name.
+MESH_SUFFIXES = (".stl", ".obj", ".ply", ".off", ".glb", ".gltf")
 
 
 @dataclass(frozen=True)
@@ -54,9 +57,15 @@ def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
             f"workpiece file {name!r} is empty; give an STL, OBJ or PLY file with triangles"
         )
     if is_step(path):
-        return read_step_mesh(path.read_bytes(), name, "workpiece", tolerance)
+        return read_step_mesh(path.read_bytes(), name, None, tolerance)  # the caller's field
+    suffix = path.suffix.lower()
+    if suffix not in MESH_SUFFIXES:
+        raise MeshError(
+            f"workpiece file {name!r} is not a mesh file ({', '.join(MESH_SUFFIXES)}, .step,"
+            " .stp); give an STL, OBJ or PLY file, or a STEP file"
+        )
     try:
-        loaded = trimesh.load(str(path), force="mesh", process=True)
+        loaded = trimesh.load(str(path), file_type=suffix[1:], force="mesh", process=True)
     except Exception as exc:  # trimesh raises many types for unreadable files
         said = str(exc)  # trimesh's words may give the path it read: name it as `name` does
         if name != str(path):

@@ -174,6 +174,13 @@ BUDGETS = (
     "workbench.polishing.force_control.MAX_STEPS",
     "workbench.collision.shapes.SOLID_SIZE",
     "workbench.cad.brep_mesh.MAX_TRIANGLES",
+    "workbench.cad.step_checks.MAX_STEP_ENTITIES",
+    "workbench.cad.step_checks.MAX_STEP_NESTING",
+    "workbench.cad.step_checks.MAX_COORDINATE_MM",
+    "workbench.cad.dxf_checks.MAX_DXF_ENTITIES",
+    "workbench.cad.dxf_checks.MAX_EXPANDED_ENTITIES",
+    "workbench.cad.dxf_checks.MAX_SPLINE_DEGREE",
+    "workbench.cad.dxf_checks.MAX_BEND_LINES",
 )
 """The work budgets, each a named setting next to the work it bounds (the domain packages
 cannot import the project's modules): work whose estimate exceeds one is refused before it

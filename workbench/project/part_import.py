@@ -114,14 +114,13 @@ def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str)
 
 
 def _from_step(data: bytes, name: str, settings: PartImportSpec, where: str) -> dict[str, Any]:
-    from workbench.cad.sheet_brep import read_sheet_brep
-    from workbench.cad.step import read_step_shape
+    from workbench.cad.step import read_step_sheet
     from workbench.errors import InputError
     from workbench.sheetmetal.from_solid import recognise_part
 
     if settings.bend_layer not in (None, DEFAULT_BEND_LAYER):
         raise _setting("bend_layer", f"only for a DXF part file; {name!r} is a STEP: remove it")
-    brep = read_sheet_brep(read_step_shape(data, name, where), where)
+    brep = read_step_sheet(data, name, where)
     try:
         spec = recognise_part(brep, where=where, base=settings.base).spec
     except InputError as exc:
