@@ -1,5 +1,8 @@
 """Run inside a fresh virtual environment (tests/install/test_fresh_install.py): every import the
-package makes resolves there, and every example project installed with it opens and plans.
+package makes resolves there, and every example project installed with it opens and reads its
+files; each planner (motion, assembly, polishing, bending without and with a press) plans and
+exports its first example there. The other examples' plans run the same code and are checked in
+the main suite (tests/test_example_exports.py); planning all of them here again cost minutes.
 
 Usage: python fresh_check.py SOURCE_TREE. Prints one line per check and exits 1 on the first
 failure. It must import `workbench` from the environment, never from the source tree.
@@ -59,10 +62,18 @@ def main() -> int:
     if sorted(p.name for p in projects) != shipped:
         print(f"FAIL installed examples {[p.name for p in projects]} != source's {shipped}")
         return 1
+    planned: set[tuple[str, bool]] = set()
     for path in projects:
         wb = Workbench.open(path)
         native = wb.default_program_format()  # the robot's vendor's language
         for wf in wb.project.workflows():
+            _read_inputs(wb, wf)  # the part or workpiece files, STEP and DXF included
+            bending = wb.project.bending
+            kind = (wf, bending is not None and bending.press is not None)
+            if kind in planned:  # the same planner as an example above: read, not planned
+                print(f"ok {path.name} {wf}: opened and its files read")
+                continue
+            planned.add(kind)
             plan_workflow(wb, wf)
             for fmt in ("json", native):  # refused if the plan collides or breaks a limit
                 exported = wb.export_program(fmt, wf)
@@ -71,6 +82,14 @@ def main() -> int:
                     return 1
             print(f"ok {path.name} {wf}: planned and exported ({native}, json)")
     return 0
+
+
+def _read_inputs(wb: object, workflow: str) -> None:
+    """Read the files a workflow reads lazily: the bending part, the polishing workpiece."""
+    if workflow == "bending":
+        _ = wb.bending.part  # type: ignore[attr-defined]
+    elif workflow == "polishing":
+        _ = wb.polishing.surface  # type: ignore[attr-defined]
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 """A fresh install works: a new virtual environment, `pip install` of this tree (pyproject.toml
 alone, non-editable, as the Dockerfile installs it), then every example project opens and
-plans there (tests/install/fresh_check.py).
+reads its files there, and each planner plans and exports one example
+(tests/install/fresh_check.py).
 
 The machine's own packages are not visible in the venv, so a runtime import that
 pyproject.toml does not declare (networkx for trimesh's fix_normals, issue 23) fails here

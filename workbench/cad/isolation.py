@@ -207,14 +207,15 @@ _idle: list[_Worker] = []
 _lock = threading.Lock()
 
 
-def _take(memory: int) -> _Worker:
+def _take(memory: int) -> tuple[_Worker, bool]:
+    """Return a worker for a read and whether it was an idle one (which may have ended)."""
     with _lock:
         while _idle:
             worker = _idle.pop()
             if worker.proc.poll() is None and worker.memory == memory:
-                return worker
+                return worker, True
             worker.kill()
-    return _Worker(memory)
+    return _Worker(memory), False
 
 
 def _give_back(worker: _Worker) -> None:
@@ -254,9 +255,11 @@ def run_isolated(
     if not target.startswith(ALLOWED_MODULES):
         raise ValueError(f"not a CAD reader: {target}")
     seconds, memory = cad_seconds(), cad_memory_bytes()
-    worker = _take(memory)
+    worker, was_idle = _take(memory)
     status, detail = worker.call(target, args, seconds)
-    if status == "gone":  # an idle worker that ended between the check and the read
+    if status == "gone" or (status == "died" and was_idle):
+        # an idle worker that ended (or was being killed) before the read reached it: the file
+        # is blamed only when a fresh worker dies on it too
         worker = _Worker(memory)
         status, detail = worker.call(target, args, seconds)
     if status in ("ok", "error", "memory", "failed"):
