@@ -34,6 +34,7 @@ from workbench.kinematics.robot_library import preset_robot
 from workbench.service import (
     AssemblyService,
     BendingService,
+    CalibrationService,
     CollisionService,
     PolishingService,
     Workbench,
@@ -43,6 +44,7 @@ API = Path(__file__).resolve().parents[1] / "docs" / "api.md"
 PACKAGES = (
     "geometry",
     "kinematics",
+    "calibration",
     "motion",
     "motion.programs",
     "collision",
@@ -59,6 +61,7 @@ SERVICES = {
     "bending": BendingService,
     "assembly": AssemblyService,
     "polishing": PolishingService,
+    "calibration": CalibrationService,
 }
 SHORT = {p.split(".")[0] for p in PACKAGES} | {"errors"}
 FOREIGN = {"np", "trimesh", "pin", "fcl", "ruckig"}  # other libraries' names: not checked

@@ -17,6 +17,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "workbench"
 DOMAIN = (
     "geometry",
     "kinematics",
+    "calibration",
     "collision",
     "motion",
     "sheetmetal",
@@ -37,6 +38,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("batch",),
     ("geometry",),
     ("kinematics",),
+    ("calibration",),
     ("motion",),
     ("collision",),
     ("cad",),

@@ -6,6 +6,8 @@ from workbench.motion import SampledMotion
 from workbench.motion.programs import EXPORT_FORMATS, ExportedProgram, RobotProgram
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
+from workbench.service.calibration import CalibrationService
+from workbench.service.calibration_result import CalibrationResult
 from workbench.service.cell import CellBody
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan
@@ -20,6 +22,8 @@ __all__ = [
     "WORKFLOWS",
     "AssemblyService",
     "BendingService",
+    "CalibrationResult",
+    "CalibrationService",
     "CellBody",
     "CollisionService",
     "ExportedProgram",

@@ -32,6 +32,7 @@ from workbench.project.units import to_deg
 from workbench.service import program_edit, program_import, programs, project_imports, project_save
 from workbench.service.assembly import AssemblyService
 from workbench.service.bending import BendingService
+from workbench.service.calibration import CalibrationService, calibration_of
 from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
@@ -76,9 +77,7 @@ class Workbench:
         return cls(project_from_dict(data), base_dir=base_dir)
 
     def _load(self, project: Project) -> None:
-        check_named_files(
-            project, self.folders
-        )  # the lazily read files too: fail here, not at plan
+        check_named_files(project, self.folders)  # lazily read files too: fail here, not at plan
         setup = build_robot(project.robot.to_si(), project.tool.to_si(), self.folders, project.cad)
         cell = build_cell(project.cell.to_si(), self.folders, project.cad)
         cell += press_cell(None if project.bending is None else project.bending.press_si())
@@ -259,6 +258,8 @@ class Workbench:
     def polishing(self) -> PolishingService:
         """Return the polishing workflow of the open project (seed 004)."""
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
+
+    calibration: CalibrationService = property(calibration_of)  # type: ignore[assignment]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
