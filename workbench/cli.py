@@ -1,4 +1,4 @@
-"""The `workbench` command line: serve the GUI, check a project, export programs."""
+"""The `workbench` command line: serve the GUI, check a project, export programs, touch-ups."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from workbench import cli_touchup
 from workbench.errors import InputError, ServerError, WorkbenchError
 from workbench.project.paths import read_regular_file
 
@@ -115,6 +116,7 @@ def _parser() -> argparse.ArgumentParser:
     part.add_argument("--inner-radius", type=float, help="inner bend radius [mm]")
     part.add_argument("--k-factor", type=float, help="K for every bend (default: Table 1)")
     part.add_argument("--base", help="the base flange, e.g. F2 (STEP; default: the largest)")
+    cli_touchup.add_parser(sub)
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
@@ -366,6 +368,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _sweep(args)
         if args.command == "import-part":
             return _import_part(args)
+        if args.command == "touchup":
+            return cli_touchup.run(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

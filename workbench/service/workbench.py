@@ -39,6 +39,7 @@ from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
+from workbench.service.touchup import TouchupService
 
 
 @dataclass(frozen=True)
@@ -178,12 +179,9 @@ class Workbench:
         return self.link_poses(q)[-1] @ self._setup.T_flange_tcp
 
     def ik_solutions(self, T_world_tcp: ArrayLike) -> list[IKSolution]:
-        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first.
-
-        One per arm configuration and turn of the wide joints, labelled
-        'front/elbow up/no flip, J6 +1 turn' (the labels depend on the pose only);
-        `move_tcp` accepts them.
-        """
+        """Return every IK solution that puts the TCP at `T_world_tcp`, nearest first: one per
+        arm configuration and turn of the wide joints, labelled 'front/elbow up/no flip, J6 +1
+        turn' (the labels depend on the pose only); `move_tcp` accepts them."""
         T = check_transform(T_world_tcp, "T_world_tcp")
         setup = self._setup
         T_base_flange = (
@@ -260,6 +258,11 @@ class Workbench:
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
 
     calibration: CalibrationService = property(calibration_of)  # type: ignore[assignment]
+
+    @property
+    def touchup(self) -> TouchupService:
+        """Return the touch-up round trip: a program edited on the robot compared and applied."""
+        return self._workflow("touchup", TouchupService)  # type: ignore[no-any-return]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
