@@ -258,11 +258,8 @@ class Workbench:
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
 
     calibration: CalibrationService = property(calibration_of)  # type: ignore[assignment]
-
-    @property
-    def touchup(self) -> TouchupService:
-        """Return the touch-up round trip: a program edited on the robot compared and applied."""
-        return self._workflow("touchup", TouchupService)  # type: ignore[no-any-return]
+    # wb.touchup: the touch-up round trip, a program edited on the robot compared and applied
+    touchup: TouchupService = property(lambda wb: wb._workflow("touchup", TouchupService))  # type: ignore[assignment]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
