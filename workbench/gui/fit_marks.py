@@ -20,7 +20,7 @@ from workbench.gui.scene import place
 ROOT = "/fit"
 POINT_COLOR = (20, 160, 80)
 BAD_COLOR = (230, 40, 40)
-POINT_RADIUS = 0.006  # [m]
+POINT_RADIUS = 0.009  # [m]
 FRAME_AXES = 0.12  # [m]
 MM_PER_M = 1000.0  # display only
 LABEL_UP_M = 0.012  # [m] a label above its point

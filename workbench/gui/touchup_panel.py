@@ -39,7 +39,7 @@ def _n(v: float | None, digits: int = 2) -> str:
 def rows_markdown(report: Any) -> str:
     """Return the report's rows as a markdown table: each move's change in its work object
     (dx, dy, dz [mm], rotation [deg]) and whether it fits the work object's correction."""
-    head = "| Move | Wobj | dx | dy | dz [mm] | rot [deg] | |\n|---|---|---:|---:|---:|---:|---|\n"
+    head = "| Move | Wobj | dx mm | dy mm | dz mm | rot deg | |\n|---|---|---:|---:|---:|---:|---|\n"
     body = []
     for r in report.rows:
         dx, dy, dz = r.delta_mm if r.delta_mm is not None else (None, None, None)
@@ -48,7 +48,7 @@ def rows_markdown(report: Any) -> str:
         elif not r.moved:
             verdict = "same"
         else:
-            verdict = {None: "moved", True: "moved, fits", False: "**moved alone**"}[r.agrees]
+            verdict = {None: "moved", True: "fits", False: "**alone**"}[r.agrees]
         body.append(
             f"| {r.name} | {r.wobj} | {_n(dx)} | {_n(dy)} | {_n(dz)} | {_n(r.angle_deg, 3)}"
             f" | {verdict} |"
@@ -58,11 +58,12 @@ def rows_markdown(report: Any) -> str:
 
 def corrections_markdown(report: Any) -> str:
     """Return each work object's fitted correction (xyz [mm], rpy [deg] in its own frame), its
-    residuals and the targets that do not fit it."""
+    residuals and the targets that do not fit it; why none was fitted where targets moved."""
     out = []
     for c in report.corrections:
-        if not c.fitted:
+        if not c.fitted and any(r.moved and r.wobj == c.wobj for r in report.rows):
             out.append(f"Work object **{c.wobj}**: no correction fitted: {c.reason}")
+        if not c.fitted:
             continue
         xyz, rpy = transform_to_xyz_rpy(c.T_correction)
         out.append(
@@ -77,15 +78,16 @@ def corrections_markdown(report: Any) -> str:
 
 
 def changed_points(report: Any) -> tuple[dict[str, Any], dict[str, float], list[str]]:
-    """Return the moved targets' taught positions [m, world], their change [m] and the names
-    of those that fit no correction, for the 3D view."""
+    """Return the moved targets' taught positions [m, world], their change [m] and the labels
+    of those that fit no correction ("pick (alone)"), for the 3D view."""
     points, change, alone = {}, {}, []
     for r in report.rows:
         if r.moved and r.taught is not None and r.delta is not None:
-            points[r.name] = r.taught.T_world_tcp[:3, 3]
-            change[r.name] = float(np.linalg.norm(r.delta))
+            label = r.name if r.agrees is not False else f"{r.name} (alone)"
+            points[label] = r.taught.T_world_tcp[:3, 3]
+            change[label] = float(np.linalg.norm(r.delta))
             if r.agrees is False:
-                alone.append(r.name)
+                alone.append(label)
     return points, change, alone
 
 
