@@ -47,6 +47,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("project",),
     ("service",),
     ("gui",),
+    ("cli_calibrate",),
     ("cli",),
     ("__main__", "__init__"),
 )

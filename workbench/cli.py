@@ -1,4 +1,5 @@
-"""The `workbench` command line: serve the GUI, check a project, export programs, touch-ups."""
+"""The `workbench` command line: serve the GUI, check a project, export programs, calibrate,
+touch-ups."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from workbench import cli_touchup
+from workbench import cli_calibrate, cli_touchup
 from workbench.errors import InputError, ServerError, WorkbenchError
 from workbench.project.paths import read_regular_file
 
@@ -117,6 +118,7 @@ def _parser() -> argparse.ArgumentParser:
     part.add_argument("--k-factor", type=float, help="K for every bend (default: Table 1)")
     part.add_argument("--base", help="the base flange, e.g. F2 (STEP; default: the largest)")
     cli_touchup.add_parser(sub)
+    cli_calibrate.add_parser(sub)
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
@@ -370,6 +372,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _import_part(args)
         if args.command == "touchup":
             return cli_touchup.run(args)
+        if args.command == "calibrate":
+            return cli_calibrate.run(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

@@ -80,6 +80,9 @@ def test_exact_readings_give_the_tcp_and_zero_error() -> None:
     assert np.allclose(fit.T_flange_tcp[:3, 3], t, atol=1e-12)
     assert fit.max_error < 1e-12
     assert not fit.oriented and np.allclose(fit.T_flange_tcp[:3, :3], np.eye(3))
+    tilted = make_transform(Rotation.from_euler("y", 0.3).as_matrix(), [0.0, 0.0, 0.1])
+    kept = fit.keeping(tilted)  # the tool's orientation as it was, the position fitted
+    assert np.allclose(kept[:3, :3], tilted[:3, :3]) and np.allclose(kept[:3, 3], t)
 
 
 def test_four_near_identical_orientations_are_refused_naming_why() -> None:
@@ -131,6 +134,7 @@ def test_tcp_and_z_x_recovers_the_orientation() -> None:
     assert fit.oriented and fit.skew < 1e-9
     assert np.allclose(fit.T_flange_tcp[:3, :3], R_ft, atol=1e-9)
     assert np.allclose(fit.T_flange_tcp[:3, 3], t, atol=1e-12)
+    assert np.allclose(fit.keeping(np.eye(4)), fit.T_flange_tcp)  # measured: not kept
     only_z = calibrate_tcp(T, z_reading=T_z)  # ABB's TCP and Z: Z measured, X chosen across it
     assert np.allclose(only_z.T_flange_tcp[:3, 2], R_ft[:, 2], atol=1e-9)
 

@@ -271,3 +271,18 @@ def test_apply_changes_only_its_field_and_returns_the_old_project() -> None:
     assert wb.project.work_objects[0].pose.xyz == [400.0, 0.0, 100.0]
     wb.replace_project(previous)  # undo
     assert wb.project.model_dump(mode="json") == before
+
+
+def test_a_joint_outside_its_range_is_noted_in_the_summary(wb: Workbench) -> None:
+    # J4 turned a whole turn further: the same flange pose, the same frame, and a note that no
+    # real MZ07 shows that value.
+    text = (ROOT / "examples" / "calibration" / "fixture_3point.csv").read_text()
+    head, *rows = [line for line in text.splitlines() if not line.startswith("#")]
+    cells = rows[2].split(",")
+    cells[4] = f"{float(cells[4]) + 360.0:.3f}"
+    turned = "\n".join([head, rows[0], rows[1], ",".join(cells)])
+    plain = wb.calibration.work_object(text, name="fixture")
+    noted = wb.calibration.work_object(turned, name="fixture")
+    assert np.allclose(noted.T, plain.T, atol=1e-9)
+    assert "note: readings line 4: y j4 = " in noted.summary()
+    assert "note:" not in plain.summary()

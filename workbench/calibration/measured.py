@@ -31,7 +31,12 @@ def tcp_positions(model: RobotModel, q: object, T_flange_tcp: FloatArray) -> Flo
     return np.asarray(T[:, :3, :3] @ T_flange_tcp[:3, 3] + T[:, :3, 3])
 
 
+def transformed(points: object, T: FloatArray) -> FloatArray:
+    """Return points (n, 3) [m] moved by the transform T (4, 4): T p for each p."""
+    p = np.asarray(points, dtype=float)
+    return np.asarray(p @ T[:3, :3].T + T[:3, 3])
+
+
 def in_model_base(points: object, T_base_controller: FloatArray) -> FloatArray:
     """Return points (n, 3) [m] given in the controller's base frame in the model's base."""
-    p = np.asarray(points, dtype=float)
-    return np.asarray(p @ T_base_controller[:3, :3].T + T_base_controller[:3, 3])
+    return transformed(points, T_base_controller)

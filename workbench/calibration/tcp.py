@@ -69,9 +69,22 @@ class TcpFit:
         return float(np.mean(self.residuals))
 
     @property
+    def min_error(self) -> float:
+        """Return the smallest distance [m] of the fitted tip from the fixed point (Min error)."""
+        return float(np.min(self.residuals))
+
+    @property
     def max_error(self) -> float:
         """Return the largest distance [m] of the fitted tip from the fixed point (Max error)."""
         return float(np.max(self.residuals))
+
+    def keeping(self, T_flange_tcp: FloatArray) -> FloatArray:
+        """Return the TCP to store (4, 4) [m]: the fitted one, with the orientation of
+        `T_flange_tcp` (the tool's as it was) unless the orientation was measured."""
+        T = self.T_flange_tcp.copy()
+        if not self.oriented:
+            T[:3, :3] = np.asarray(T_flange_tcp, float)[:3, :3]
+        return T
 
     def tips(self, T_base_flange: FloatArray) -> FloatArray:
         """Return the fitted tip (n, 3) [m] in the base at flange poses (n, 4, 4)."""

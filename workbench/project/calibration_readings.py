@@ -22,9 +22,12 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
+from pydantic import TypeAdapter, ValidationError
 
 from workbench.errors import InputError
+from workbench.kinematics.robot_library import LIBRARY
 from workbench.project.models import Robot
+from workbench.project.program_io import BASE_WOBJ, Name
 from workbench.project.units import DEG, MM
 
 FloatArray = NDArray[np.float64]
@@ -42,6 +45,7 @@ class Readings:
     lines: tuple[int, ...]
     joints: FloatArray | None = None
     points: FloatArray | None = None
+    notes: tuple[str, ...] = ()  # joint values outside the robot's ranges (a wrong robot?)
 
     @property
     def kind(self) -> str:
@@ -51,7 +55,7 @@ class Readings:
 
 def _rows(text: str, source: str) -> list[tuple[int, list[str]]]:
     rows = []
-    for number, line in enumerate(text.splitlines(), 1):
+    for number, line in enumerate(text.removeprefix("\ufeff").splitlines(), 1):
         if line.strip() and not line.lstrip().startswith("#"):
             cells = next(csv.reader(io.StringIO(line)))
             rows.append((number, [c.strip() for c in cells]))
@@ -79,9 +83,11 @@ def _header(number: int, cells: list[str], source: str, dof: int | None) -> tupl
                 field=f"{source} line {number}",
             )
         return "joints", len(joints)
+    separated = next((c for c in (";", "\t") if c in cells[0]), None)
+    hint = "" if separated is None else f"; separate the values by commas, not {separated!r}"
     raise InputError(
         f"header {','.join(cells)!r}: give {expected} (joints [deg], as the controller shows"
-        " them) or label,x,y,z (TCP positions [mm] in the robot's base)",
+        f" them) or label,x,y,z (TCP positions [mm] in the robot's base){hint}",
         field=f"{source} line {number}",
     )
 
@@ -107,7 +113,8 @@ def _table(
     kind, width = _header(head_line, head, source, dof)
     if kind not in kinds:
         raise InputError(
-            f"this file needs label,x,y,z (points [mm]), not {kind}", field=f"{source} line 1"
+            f"this file needs label,x,y,z (points [mm]), not {kind}",
+            field=f"{source} line {head_line}",
         )
     unit = "deg" if kind == "joints" else "mm"
     labels: list[str] = []
@@ -116,7 +123,8 @@ def _table(
     for r, (number, cells) in enumerate(body):
         if len(cells) != width + 1:
             raise InputError(
-                f"{len(cells)} values but the header has {width + 1} columns ({','.join(head)})",
+                f"{len(cells) - 1} values after the label but the header names {width}"
+                f" ({','.join(head[1:])}); give one per column",
                 field=f"{source} line {number}",
             )
         label = cells[0]
@@ -148,12 +156,57 @@ def parse_readings(text: str, *, source: str, robot: Robot, dof: int) -> Reading
         return Readings(source, labels, lines, points=values * MM)
     convention = robot.convention()
     q = values * DEG
-    return Readings(
-        source, labels, lines, joints=q if convention is None else convention.to_model(q)
-    )
+    notes = _outside(values, _controller_limits(robot), labels, lines, source)
+    model = q if convention is None else convention.to_model(q)
+    return Readings(source, labels, lines, joints=model, notes=notes)
+
+
+def _controller_limits(robot: Robot) -> FloatArray | None:
+    """Return the robot's joint ranges (dof, 2) [deg, the controller's] (None: a URDF's)."""
+    if robot.preset is not None:
+        return np.asarray(LIBRARY[robot.preset].controller_limits_deg, float)
+    if robot.dh is not None:
+        return np.array([[r.min, r.max] for r in robot.dh], float)
+    return None
+
+
+def _outside(
+    values: FloatArray,
+    limits: FloatArray | None,
+    labels: tuple[str, ...],
+    lines: tuple[int, ...],
+    source: str,
+) -> tuple[str, ...]:
+    """Return a note per joint reading outside the robot's range [deg]: readings of a real
+    robot lie within it, so one outside says the robot or its convention is not the real one."""
+    if limits is None:
+        return ()
+    notes = []
+    for r, c in zip(*np.nonzero((values < limits[:, 0]) | (values > limits[:, 1])), strict=True):
+        lo, hi = limits[c]
+        notes.append(
+            f"{source} line {lines[r]}: {labels[r]} j{c + 1} = {values[r, c]:.3f} deg lies outside"
+            f" the robot's range [{lo:g}, {hi:g}] deg; is the project's robot the one measured?"
+        )
+    return tuple(notes)
 
 
 def parse_known(text: str, *, source: str) -> tuple[tuple[str, ...], FloatArray]:
     """Return (labels, points (n, 3) [m]) of a known-points CSV `label,x,y,z` [mm]."""
     _, labels, _, values = _table(text, source, None, ("points",))
     return labels, values * MM
+
+
+def work_object_name(name: str) -> str:
+    """Return `name` checked as a new or existing work object's name (InputError naming it)."""
+    try:
+        TypeAdapter(Name).validate_python(name)
+    except ValidationError:
+        raise InputError(
+            f"{name!r}: give 1 to 64 printable characters", field="work object name"
+        ) from None
+    if name == BASE_WOBJ:
+        raise InputError(
+            f"{name!r} is the robot base; choose another name", field="work object name"
+        )
+    return name

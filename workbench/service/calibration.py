@@ -22,12 +22,23 @@ from workbench.calibration import (
     three_point_frame,
 )
 from workbench.calibration.frame_fit import OUTLIER_TOLERANCE
-from workbench.calibration.measured import flange_poses, in_model_base, tcp_positions
+from workbench.calibration.measured import (
+    flange_poses,
+    in_model_base,
+    tcp_positions,
+    transformed,
+)
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import library_robot
 from workbench.project import Project, project_from_dict
-from workbench.project.calibration_readings import Readings, parse_known, parse_readings
-from workbench.project.units import matrix_to_pose
+from workbench.project.calibration_readings import (
+    Readings,
+    parse_known,
+    parse_readings,
+    work_object_name,
+)
+from workbench.project.common import Pose
+from workbench.project.units import matrix_to_pose, pose_to_matrix
 from workbench.service.calibration_result import (
     CalibrationResult,
     FloatArray,
@@ -87,21 +98,21 @@ class CalibrationService:
         )
         T_world_base = self.wb.setup.T_world_base
         tips = fit.tips(T[approach])
-        T_world_tcp = T_world_base @ T[approach[-1]] @ fit.T_flange_tcp
         tool = self.wb.project.tool
-        T_new = fit.T_flange_tcp.copy()
-        if not fit.oriented:  # the position measured, the orientation kept
-            T_new[:3, :3] = self.wb.setup.T_flange_tcp[:3, :3]
+        T_new = fit.keeping(self.wb.setup.T_flange_tcp)  # unmeasured orientation: kept
+        T_world_tcp = T_world_base @ T[approach[-1]] @ T_new
         return CalibrationResult(
             kind="tcp",
             name=tool.name,
             T=T_new,
+            T_previous=self.wb.setup.T_flange_tcp,
             T_world_frame=T_world_tcp,
             labels=tuple(labels[i] for i in approach),
-            points_world=tips @ T_world_base[:3, :3].T + T_world_base[:3, 3],
+            points_world=transformed(tips, T_world_base),
             residuals=fit.residuals,
             dropped=(),
-            lines=tcp_lines(fit, T_new, tool.name, tuple(labels[i] for i in approach), tool.tcp),
+            lines=tcp_lines(fit, T_new, tool.name, tuple(labels[i] for i in approach), tool.tcp)
+            + _notes(readings),
         )
 
     # -- work objects ---------------------------------------------------------------------
@@ -123,36 +134,39 @@ class CalibrationService:
         [m] dropped and named). The frame is in the world, as the project stores work objects."""
         if method not in WOBJ_METHODS:
             raise InputError(f"method {method!r}: give one of {', '.join(WOBJ_METHODS)}")
+        work_object_name(name)
         readings = self._readings(csv_text, source)
         measured = self._base_points(readings)
         T_world_base = self.wb.setup.T_world_base
+        stored = self._stored_wobj(name)
         if method == "3point":
             if known_csv is not None:
                 raise InputError("the 3-point method takes no known points; use method 'fit'")
             labels = (label.lower() for label in readings.labels)
             frame = three_point_frame(dict(zip(labels, measured, strict=True)))
             T_world = T_world_base @ frame.T
-            lines = three_point_lines(frame, name, readings.labels, T_world)
+            lines = three_point_lines(frame, name, readings.labels, T_world, stored)
             residuals = np.zeros(len(measured))
             dropped: tuple[str, ...] = ()
         else:
             fit = self._fit(readings, measured, known_csv, known_source, tolerance)
             T_world = T_world_base @ fit.T
-            lines = fit_lines(fit, f"work object {name!r}", T_world, self._stored_wobj(name))
+            lines = fit_lines(fit, f"work object {name!r}", T_world, stored)
             residuals, dropped = fit.residuals, fit.dropped
         return CalibrationResult(
             kind="work_object",
             name=name,
             T=T_world,
+            T_previous=None if stored is None else pose_to_matrix(stored),
             T_world_frame=T_world,
             labels=readings.labels,
-            points_world=measured @ T_world_base[:3, :3].T + T_world_base[:3, 3],
+            points_world=transformed(measured, T_world_base),
             residuals=residuals,
             dropped=dropped,
-            lines=lines,
+            lines=lines + _notes(readings),
         )
 
-    def _stored_wobj(self, name: str) -> Any:
+    def _stored_wobj(self, name: str) -> Pose | None:
         wobjs = self.wb.project.work_objects or []
         return next((w.pose for w in wobjs if w.name == name), None)
 
@@ -206,12 +220,14 @@ class CalibrationService:
             kind="base",
             name=robot.name,
             T=fit.T,
+            T_previous=self.wb.setup.T_world_base,
             T_world_frame=fit.T,
             labels=readings.labels,
-            points_world=measured @ fit.T[:3, :3].T + fit.T[:3, 3],
+            points_world=transformed(measured, fit.T),
             residuals=fit.residuals,
             dropped=fit.dropped,
-            lines=fit_lines(fit, f"robot {robot.name!r} base in the world", fit.T, robot.base),
+            lines=fit_lines(fit, f"robot {robot.name!r} base in the world", fit.T, robot.base)
+            + _notes(readings),
         )
 
     # -- apply ----------------------------------------------------------------------------
@@ -243,6 +259,10 @@ class CalibrationService:
 def calibration_of(wb: Any) -> CalibrationService:
     """Return the calibration service of Workbench `wb` (its `calibration` property)."""
     return CalibrationService(wb)
+
+
+def _notes(readings: Readings) -> tuple[str, ...]:
+    return tuple(f"  note: {note}" for note in readings.notes)
 
 
 def _pose_json(T: FloatArray) -> dict[str, list[float]]:

@@ -24,7 +24,8 @@ class CalibrationResult:
     """A calibration's result (SI: m).
 
     `kind`: "tcp", "work_object" or "base"; `name`: the tool, work object or robot it is for.
-    `T` (4, 4): what `apply` stores: T_flange_tcp, T_world_wobj or T_world_base.
+    `T` (4, 4): what `apply` stores: T_flange_tcp, T_world_wobj or T_world_base;
+    `T_previous` (4, 4): what the project holds there now (None: a new work object).
     `T_world_frame` (4, 4): the fitted frame in the world for the 3D view (the TCP at the last
     approach reading, the work object, the robot's base). `labels`, `points_world` (n, 3) and
     `residuals` (n,): the measured points in the world (a TCP's: the fitted tip at each
@@ -34,6 +35,7 @@ class CalibrationResult:
     kind: str
     name: str
     T: FloatArray
+    T_previous: FloatArray | None
     T_world_frame: FloatArray
     labels: tuple[str, ...]
     points_world: FloatArray
@@ -52,7 +54,7 @@ class CalibrationResult:
 
 
 def _xyz(v: object) -> str:
-    x, y, z = (float(c) + 0.0 for c in np.asarray(v, float))
+    x, y, z = (round(float(c), 3) + 0.0 for c in np.asarray(v, float))  # + 0.0: no "-0.000"
     return f"x {x:.3f}  y {y:.3f}  z {z:.3f}"
 
 
@@ -62,7 +64,7 @@ def pose_text(T: FloatArray) -> str:
 
 
 def _pose_text(pose: Pose) -> str:
-    r = ", ".join(f"{v + 0.0:.4f}" for v in pose.rpy)
+    r = ", ".join(f"{round(v, 4) + 0.0:.4f}" for v in pose.rpy)
     return f"{_xyz(pose.xyz)} mm, rpy [{r}] deg"
 
 
@@ -85,7 +87,7 @@ def tcp_lines(
         f"  TCP in the flange: {pose_text(T)}",
         f"  fixed point in the robot base: {_xyz(to_mm(fit.point))} mm",
         f"  mean error {float(to_mm(fit.mean_error)):.3f} mm, max error"
-        f" {float(to_mm(fit.max_error)):.3f} mm (the fitted tip's distance from the fixed point)",
+        f" {float(to_mm(fit.max_error)):.3f} mm, min error {float(to_mm(fit.min_error)):.3f} mm",
         f"  orientations turn at least {float(to_deg(fit.turn)):.1f} deg about every axis",
         _residuals(labels, fit.residuals, ()),
     ]
@@ -96,7 +98,11 @@ def tcp_lines(
 
 
 def three_point_lines(
-    frame: ThreePointFrame, name: str, labels: tuple[str, ...], T_world: FloatArray
+    frame: ThreePointFrame,
+    name: str,
+    labels: tuple[str, ...],
+    T_world: FloatArray,
+    stored: Pose | None,
 ) -> tuple[str, ...]:
     """Return the summary of a three-point work object `name` (its points' place in it)."""
     vendor = "ABB user frame X1, X2, Y1" if frame.method == "abb" else "KUKA/FANUC origin, X, Y"
@@ -105,6 +111,7 @@ def three_point_lines(
         f"work object {name!r}: 3-point method ({vendor})",
         f"  frame in the world: {pose_text(T_world)}",
         *(f"  {label} in the frame: {_xyz(to_mm(local[label.lower()]))} mm" for label in labels),
+        f"  the project's value now: {'none' if stored is None else _pose_text(stored)}",
     )
 
 
