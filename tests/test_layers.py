@@ -48,6 +48,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("service",),
     ("gui",),
     ("cli_calibrate",),
+    ("cli_touchup",),  # a command of the CLI in its own module (cli.py stays small)
     ("cli",),
     ("__main__", "__init__"),
 )

@@ -22,6 +22,7 @@ from workbench.kinematics.target_configuration import solve_configuration
 from workbench.motion.program import is_action, nearest_ik
 from workbench.motion.programs.controller_program import MoveInstr, RobotProgram, Target
 from workbench.motion.programs.formats import write_programs
+from workbench.project import project_from_dict
 from workbench.project.program_io import motion_limits, program_items, tool_data, work_objects
 from workbench.project.units import matrix_to_pose, pose_to_matrix
 from workbench.service import Workbench
@@ -34,13 +35,22 @@ WOBJ_POSE = {"xyz": [430.0, 0.0, 440.0], "rpy": [0.0, 0.0, 5.0]}
 CORRECTION = xyz_rpy_to_transform([0.0021, -0.0014, 0.0009], np.radians([0.25, -0.2, 0.6]))
 
 
-def cell_data() -> dict[str, Any]:
-    """Return the MZ07 cell with its pose targets stated in the work object `fixture`."""
+def cell_data(preset: str = "mz07") -> dict[str, Any]:
+    """Return the MZ07 cell with its pose targets stated in the work object `fixture`; another
+    library robot (`preset`) in its place takes the pose targets without their stored
+    configurations (the MZ07's) and without the MZ07's joint targets (home, start)."""
     data = json.loads((ROOT / "projects" / "mz07_cell.json").read_text())
     data["work_objects"] = [{"name": WOBJ, "pose": WOBJ_POSE}]
     for item in data["program"]["moves"]:
         if "pose" in item:
             item["wobj"] = WOBJ
+    if preset != "mz07":
+        data["robot"] = {"name": preset, "preset": preset, "base": data["robot"]["base"]}
+        program = data["program"]
+        program.pop("start", None)
+        program["moves"] = [m for m in program["moves"] if "joints" not in m]
+        for m in program["moves"]:
+            m.pop("configuration", None)
     return data
 
 
@@ -70,15 +80,16 @@ def _pose(T: np.ndarray) -> dict[str, list[float]]:
 
 
 @functools.cache
-def moved_program() -> tuple[Workbench, RobotProgram]:
+def moved_program(preset: str = "mz07") -> tuple[Workbench, RobotProgram]:
     """Return the moved cell's workbench and its program stated in the UNMOVED work object
     (the targets re-taught, the controller's work object as it was): every target's joints by
     IK in its stored configuration (no plan: the posts need targets, speeds and zones)."""
-    data = moved_data(cell_data())
+    data = moved_data(cell_data(preset))
     wb = Workbench.from_dict(data, base_dir=ROOT / "projects")
     project, model = wb.project, wb.robot
     tool = tool_data(project.tool)
-    orig = {w.name: w for w in work_objects(Workbench.from_dict(cell_data()).project)}
+    orig = {w.name: w for w in work_objects(project_from_dict(cell_data(preset)))}
+    q_prev = wb.setup.q0
     T_base_world = invert_transform(pose_to_matrix(project.robot.base))
     instructions: list[Any] = []
     for item in program_items(project, model.convention):
@@ -90,7 +101,11 @@ def moved_program() -> tuple[Workbench, RobotProgram]:
         else:
             T_base_tcp = T_base_world @ item.T_world_tcp
             T_flange = T_base_tcp @ invert_transform(tool.T_flange_tcp)
-            q = solve_configuration(model, T_flange, item.configuration, where=item.name)
+            if item.configuration is None:  # another robot: the solution nearest the last
+                q = nearest_ik(model, T_flange, q_prev, item.name)
+            else:
+                q = solve_configuration(model, T_flange, item.configuration, where=item.name)
+            q_prev = q
             T_wobj_tcp = invert_transform(orig[item.wobj].T_base_wobj) @ T_base_tcp
             target = Target.planned(item.name, q, model, T_wobj_tcp)
         kind = "joint" if item.type == "joint" else "linear"
@@ -127,11 +142,14 @@ def touched_up_files(
     alone: tuple[str, np.ndarray] | None = None,
     delete: str | None = None,
     add: tuple[str, str, np.ndarray] | None = None,
+    joints: tuple[str, np.ndarray] | None = None,
+    preset: str = "mz07",
 ) -> dict[str, str]:
     """Return the touched-up program as `fmt` files. `alone` (name, T in the work object):
     that target moved further; `delete`: that move left out; `add` (new name, after which
-    move, T in the work object of that move's target): a move inserted."""
-    wb, program = moved_program()
+    move, T in the work object of that move's target): a move inserted; `joints` (name, dq [rad, model]): that joint target re-taught by dq; `preset`: the cell with that library robot
+    (`cell_data`)."""
+    wb, program = moved_program(preset)
     out = []
     for ins in program.instructions:
         if isinstance(ins, MoveInstr):
@@ -139,6 +157,9 @@ def touched_up_files(
                 continue
             if alone is not None and ins.name == alone[0]:
                 ins = _shift(wb, program, ins, alone[1])
+            if joints is not None and ins.name == joints[0]:
+                q = ins.target.q + joints[1]
+                ins = dataclasses.replace(ins, target=dataclasses.replace(ins.target, q=q))
             out.append(ins)
             if add is not None and ins.name == add[1]:
                 new = _shift(wb, program, ins, add[2])

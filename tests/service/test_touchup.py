@@ -10,12 +10,13 @@ import pytest
 from tests.touchup_cell import CORRECTION, ROOT, WOBJ, cell_data, moved_data, touched_up_files
 from workbench.errors import InputError
 from workbench.geometry.transforms import xyz_rpy_to_transform
+from workbench.kinematics.robot_library import ROBOT_NAMES, library_robot
 from workbench.motion.programs.formats import PROGRAM_FORMATS
 from workbench.service import Workbench
 
-# the printed precision of the formats: 0.01 mm and 1e-6 of a quaternion (RAPID), 0.001 mm /
-# deg (KRL), 0.001 mm / deg (LS), joints to 1e-4 rad (URScript) and 0.001 deg (NACHI) through
-# a 0.6 m arm: all within 0.02 mm, 0.005 deg
+# the printed precision of the posts (RAPID: 8 significant digits of mm, quaternions to 1e-9;
+# KRL, LS: 1e-6 mm and deg; URScript joints 1e-9 rad, NACHI 1e-6 deg, through FK) is far
+# within these
 POSITION_TOL = 0.02e-3
 ANGLE_TOL = np.radians(0.005)
 PICK_ALONE = xyz_rpy_to_transform([0.003, 0.0, 0.0], [0.0, 0.0, 0.0])
@@ -51,6 +52,7 @@ def test_the_fitted_correction_is_the_fixtures_move(fmt: str, cell: Workbench) -
     assert all(report.row(n).agrees for n in MOVED)
     assert report.row("home").status == "same"
     assert wb.to_json() == before  # comparing changes nothing
+    assert report.notes == ()  # the controller's work object and tool are the project's
     assert "work object fixture: correction [2.100, -1.400, 0.900] mm" in report.summary()
 
 
@@ -137,6 +139,12 @@ def test_malformed_input_names_the_file_and_the_fix(cell: Workbench) -> None:
         wb.touchup.compare({"broken.mod": "MODULE x\n  PROC main()\n  ENDPROC\nENDMODULE\n"})
     with pytest.raises(InputError, match="no program file given"):
         wb.touchup.compare({})
+    with pytest.raises(InputError, match=r"broken\.ls.*check that it is a ls program"):
+        wb.touchup.compare({"broken.ls": "/PROG BROKEN\n/MN\n   1:  J P[7] 50% FINE ;\n/END\n"})
+    empty = cell_data()
+    del empty["program"]
+    with pytest.raises(InputError, match="no program moves to compare with"):
+        Workbench.from_dict(empty).touchup.compare(touched_up_files("krl"))
     with pytest.raises(InputError, match="mode"):
         wb.touchup.apply(wb.touchup.compare(touched_up_files("krl")), mode="wobj")
 
@@ -156,3 +164,50 @@ def test_apply_plans_again_and_checks_collisions() -> None:
     assert applied is not None and applied.plan is not None and applied.plan.ok
     assert wb.last_plan is applied.plan
     assert "collision-free" in applied.summary()
+
+
+@pytest.mark.parametrize("fmt", ["krl", "urscript"])
+def test_a_joint_target_re_taught_is_compared_through_fk_and_kept_as_taught(fmt: str) -> None:
+    wb = _wb()
+    dq = np.radians([1.0, -0.5, 0.0, 0.0, 0.3, 0.0])
+    report = wb.touchup.compare(touched_up_files(fmt, joints=("home", dq)))
+    home = report.row("home")
+    assert home.moved and home.wobj == "base" and home.agrees is None  # alone in the base
+    want = wb.tcp_pose(wb.robot.convention.to_model(np.radians([0, 90, 0, 0, -90, 0])) + dq)
+    np.testing.assert_allclose(home.taught.T_world_tcp, want, atol=1e-5)  # type: ignore[union-attr]
+    wb.touchup.apply(report, mode="work_object", plan=False)
+    taught = wb.robot.convention.to_controller(home.taught.q)  # type: ignore[union-attr]
+    home_move = wb.project.program.moves[-1]  # type: ignore[union-attr]
+    np.testing.assert_allclose(np.radians(home_move.joints), taught, atol=1e-9)
+    with pytest.raises(InputError, match="compare the program again"):
+        wb.touchup.apply(report, mode="targets", plan=False)  # the project changed since
+
+
+def test_a_program_without_its_names_is_matched_in_order(cell: Workbench) -> None:
+    # the NACHI program with its comments dropped (a pendant that keeps none): the moves by
+    # order and distance, the deleted one still found
+    ((name, text),) = touched_up_files("nachi", delete="lift").items()
+    bare = "\n".join(line for line in text.splitlines() if not line.startswith("'"))
+    report = cell.touchup.compare({name: bare + "\n"})
+    assert [r.status for r in report.rows].count("deleted") == 1
+    paired = [r for r in report.rows if r.planned is not None and r.taught is not None]
+    assert [r.planned.name for r in paired] == [  # type: ignore[union-attr]
+        "above_left", "pick", "above_right", "place", "retract", "home"
+    ]  # fmt: skip
+    c = report.correction
+    assert c is not None and c.outliers == ()
+    _close(c.T_correction, CORRECTION)
+
+
+@pytest.mark.slow  # a workbench per robot (about 0.5 s each)
+@pytest.mark.parametrize("preset", ROBOT_NAMES)
+def test_every_library_robot_in_its_own_language(preset: str) -> None:
+    # the vendor's base convention too (FANUC's world at J2 height: in_model_base)
+    fmt = library_robot(preset).program_format
+    files = touched_up_files(fmt, preset=preset, alone=("pick", PICK_ALONE))
+    wb = Workbench.from_dict(cell_data(preset), base_dir=ROOT / "projects")
+    report = wb.touchup.compare(files)
+    assert report.fmt == fmt and report.notes == ()
+    c = report.correction
+    assert c is not None and c.outliers == ("pick",)
+    _close(c.T_correction, CORRECTION)

@@ -46,6 +46,11 @@ def work_object_frames(project: Project) -> dict[str, FloatArray]:
     return frames
 
 
+def base_and_tool(project: Project) -> tuple[FloatArray, FloatArray]:
+    """Return the robot base in the world and the tool's TCP in the flange, (4, 4) [m] each."""
+    return pose_to_matrix(project.robot.base), pose_to_matrix(project.tool.tcp)
+
+
 def planned_targets(project: Project, model: RobotModel) -> list[PlannedTarget]:
     """Return the program's moves as `PlannedTarget`s: TCP pose in the world (a joint target's
     through FK and the project's tool), the work object, the index in `program.moves`."""

@@ -15,26 +15,32 @@ from workbench.motion.programs.formats import format_of, reader
 from workbench.motion.programs.touchup import (
     TouchupReport,
     TouchupSettings,
-    circular_notes,
     compare,
+    read_notes,
     taught_targets,
 )
 from workbench.project.io import project_from_dict
 from workbench.project.paths import size_limit
 from workbench.project.touchup import (
     TOUCHUP_MODES,
+    base_and_tool,
     planned_targets,
     touched_up_project,
     work_object_frames,
 )
-from workbench.project.units import pose_to_matrix
 
 if TYPE_CHECKING:
     from workbench.project.models import Project
-    from workbench.service.motion_plan import MotionPlan
+    from workbench.service.motion_plan import MotionPlan, Progress
     from workbench.service.workbench import Workbench
 
-__all__ = ["TOUCHUP_MODES", "TouchupApplied", "TouchupService"]
+__all__ = [
+    "TOUCHUP_MODES",
+    "TouchupApplied",
+    "TouchupReport",
+    "TouchupService",
+    "TouchupSettings",
+]  # the GUI takes the report and settings types from here (it imports only the service)
 
 
 @dataclass(frozen=True)
@@ -65,6 +71,7 @@ class TouchupService:
         self.settings = TouchupSettings()
         self.last_report: TouchupReport | None = None
         self.last_applied: TouchupApplied | None = None
+        self._basis: tuple[TouchupReport, str] | None = None
 
     def set_settings(self, settings: TouchupSettings) -> None:
         """Use other tolerances (`TouchupSettings`, m and rad) from the next `compare` on."""
@@ -103,8 +110,8 @@ class TouchupService:
             read = reader(fmt)(files)
             if project.robot.preset is not None:  # work objects as the controller states them
                 read = in_model_base(read, library_robot(project.robot.preset).T_base_controller)
-            T_world_base = pose_to_matrix(project.robot.base)
-            taught = taught_targets(read, wb.robot, T_world_base, pose_to_matrix(project.tool.tcp))
+            T_world_base, T_flange_tcp = base_and_tool(project)
+            taught = taught_targets(read, wb.robot, T_world_base, T_flange_tcp)
         except WorkbenchError as exc:
             raise InputError(
                 f"{exc}; check that it is a {fmt} program of this project's robot (or give the"
@@ -116,30 +123,49 @@ class TouchupService:
                 f"the program has no moves the reader understood; is it a {fmt} program?",
                 field=source,
             )
-        notes = [f"line {n}: {t!r} is not understood; left out" for n, t in read.unknown]
-        notes += circular_notes(read)
+        frames = work_object_frames(project)
+        notes = read_notes(read, frames, T_world_base, T_flange_tcp)
         report = compare(
             planned,
             taught,
-            work_object_frames(project),
+            frames,
             source=source,
             fmt=fmt,
             settings=self.settings,
             notes=notes,
         )
         self.last_report = report
+        self._basis = (report, self._program_of(project))
         return report
 
+    @staticmethod
+    def _program_of(project: Project) -> str:
+        program = project.program.model_dump_json() if project.program else ""
+        return program + str([w.model_dump_json() for w in project.work_objects or ()])
+
     def apply(
-        self, report: TouchupReport, *, mode: str = "work_object", plan: bool = True
+        self,
+        report: TouchupReport,
+        *,
+        mode: str = "work_object",
+        plan: bool = True,
+        progress: Progress | None = None,
     ) -> Project:
         """Apply `report` to the project in `mode` ("work_object": fold each shared correction
         into its work object, targets that do not fit kept as taught; "targets": every moved
         target as taught; "both") and return the previous project (undo:
-        `wb.replace_project(previous)`). Then plan the motion again and check it (`plan`),
-        kept with the notes as `last_applied`; a failed plan is reported there, not raised."""
+        `wb.replace_project(previous)`). Then plan the motion again and check it (`plan`;
+        `progress` as `wb.plan_motion`'s), kept with the notes as `last_applied`; a failed plan
+        is reported there, not raised."""
         wb = self._wb
         previous = wb.project.model_copy(deep=True)
+        basis = self._basis
+        if basis is None or basis[0] is not report or basis[1] != self._program_of(previous):
+            raise InputError(
+                "touch-up: the project's program or work objects changed since this comparison"
+                " (or it was made on another project); compare the program again, then apply",
+                field="report",
+            )
         data, notes = touched_up_project(previous, report, mode, wb.robot.convention)
         with wb._lock:  # the applied project keeps this touch-up (settings, report, result)
             wb.replace_project(project_from_dict(data, source=f"touch-up of {report.source}"))
@@ -148,7 +174,7 @@ class TouchupService:
         error = ""
         if plan:
             try:
-                result = wb.plan_motion()
+                result = wb.plan_motion(progress=progress)
             except WorkbenchError as exc:
                 error = str(exc)
         self.last_applied = TouchupApplied(mode, notes, result, error)

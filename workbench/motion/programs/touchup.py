@@ -27,6 +27,7 @@ SI inside (m, rad); `TouchupRow.delta_mm`, `angle_deg` and `summary()` are for d
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -38,14 +39,15 @@ from numpy.typing import NDArray
 from workbench.errors import InputError
 from workbench.geometry.rigid_fit import RigidFit, check_spread, fit_rigid, fit_rigid_robust
 from workbench.kinematics.model import RobotModel
-from workbench.motion.programs.controller_program import ReadMove, ReadProgram
+from workbench.motion.programs.controller_program import ReadProgram
 from workbench.motion.programs.readback import solve_moves
 
 FloatArray = NDArray[np.float64]
 
 MOVED_DISTANCE = 0.05e-3
-"""A target moved when its position changed by more than this [m] (above every format's
-printed precision: 0.01 mm in RAPID, KRL, LS; joints to 0.001 deg in URScript and NACHI)."""
+"""A target moved when its position changed by more than this [m]: well above what the
+workbench's own posts print (RAPID: 8 significant digits of mm, quaternions to 1e-9; KRL and
+LS: 1e-6 mm and deg; URScript joints 1e-9 rad; NACHI joints 1e-6 deg)."""
 MOVED_ANGLE = np.radians(0.05)
 """... or its orientation by more than this [rad]."""
 FIT_DISTANCE = 0.5e-3
@@ -243,13 +245,38 @@ def taught_targets(
     return out
 
 
-def circular_notes(read: ReadProgram) -> list[str]:
-    """Return a note per circular move: its end point is compared, its via point is not."""
-    return [
+def read_notes(
+    read: ReadProgram,
+    frames: Mapping[str, FloatArray],
+    T_world_base: FloatArray,
+    T_flange_tcp: FloatArray,
+    settings: TouchupSettings | None = None,
+) -> list[str]:
+    """Return what the comparison of `read` must say besides its rows: the lines the reader
+    did not understand, circular moves (their end compared, not their via), a work object or
+    tool of the program that differs from the project's (`frames`: the project's work objects
+    in the world; the targets are compared in the world all the same)."""
+    s = settings or TouchupSettings()
+    notes = [f"line {n}: {t!r} is not understood; left out" for n, t in read.unknown]
+    notes += [
         f"line {m.line} ({m.name}): a circular move; its end point is compared, its via point not"
         for m in read.moves
-        if isinstance(m, ReadMove) and m.via is not None
+        if m.via is not None
     ]
+    for w in read.work_objects:
+        if w.name in frames and _changed(frames[w.name], T_world_base @ w.T_base_wobj, s):
+            notes.append(
+                f"work object {w.name}: the program's differs from the project's (changed on"
+                " the controller?); its targets are compared where the program puts them"
+            )
+    for tool in {m.tool for m in read.moves}:
+        data = next((t for t in read.tools if t.name == tool), None)
+        if data is not None and _changed(T_flange_tcp, data.T_flange_tcp, s):
+            notes.append(
+                f"tool {tool}: the program's TCP differs from the project's; its pose targets are"
+                " that tool's, its joint targets are compared through the project's tool"
+            )
+    return notes
 
 
 # -- matching ----------------------------------------------------------------------------------
@@ -257,10 +284,16 @@ def circular_notes(read: ReadProgram) -> list[str]:
 _NOT_IDENT = re.compile(r"[^a-z0-9_]")
 
 
+def _ident(name: str) -> str:
+    """Return a name as a post writes it: lower case (FANUC, NACHI: upper), illegal
+    characters as _."""
+    return _NOT_IDENT.sub("_", name.lower())
+
+
 def _key(name: str) -> str:
-    """Return a name as the posts may have renamed it: lower case, illegal characters as _,
-    a numbering suffix ("_1", "_2": reserved or repeated names) dropped."""
-    return re.sub(r"_\d+$", "", _NOT_IDENT.sub("_", name.lower()))
+    """Return a name as the posts may have renamed it: `_ident`, a numbering suffix ("_1",
+    "_2": reserved or repeated names) dropped."""
+    return re.sub(r"_\d+$", "", _ident(name))
 
 
 def same_name(planned: str, taught: str) -> bool:
@@ -271,12 +304,33 @@ def same_name(planned: str, taught: str) -> bool:
     return a == b or (len(b) >= 8 and a.startswith(b))
 
 
-def _pair_cost(p: PlannedTarget, t: TaughtTarget, by_name: bool) -> float:
+RENAMED_COST = 0.5 * GAP_COST
+"""The alignment's cost of a pair whose names are the same only as renamed (`same_name`):
+exactly equal names pair first ("pt_2" with "pt_2", not with "pt_3")."""
+
+
+def pair_costs(
+    planned: Sequence[PlannedTarget], taught: Sequence[TaughtTarget], by_name: bool
+) -> FloatArray:
+    """Return the alignment's cost (n, m) of pairing each planned with each taught move: by
+    name, 0 (equal), `RENAMED_COST` (`same_name`) or 3 gaps (another move); by order, the
+    distance in units of `REPLACED_DISTANCE` (two gaps), a quarter gap more for another kind."""
     if by_name:
-        return 0.0 if same_name(p.name, t.name) else 3.0 * GAP_COST  # worse than 2 gaps
-    d = float(np.linalg.norm(p.T_world_tcp[:3, 3] - t.T_world_tcp[:3, 3]))
-    kind = 0.0 if (p.kind == "joint") == (t.kind == "joint") else 0.25 * GAP_COST
-    return 2.0 * GAP_COST * d / REPLACED_DISTANCE + kind
+        out = np.full((len(planned), len(taught)), 3.0 * GAP_COST)
+        for i, p in enumerate(planned):
+            for j, t in enumerate(taught):
+                if _ident(p.name) == _ident(t.name):
+                    out[i, j] = 0.0
+                elif same_name(p.name, t.name):
+                    out[i, j] = RENAMED_COST
+        return out
+    P = np.array([p.T_world_tcp[:3, 3] for p in planned]).reshape(-1, 3)
+    T = np.array([t.T_world_tcp[:3, 3] for t in taught]).reshape(-1, 3)
+    d = np.linalg.norm(P[:, None, :] - T[None, :, :], axis=2)
+    joint_p = np.array([p.kind == "joint" for p in planned], bool)
+    joint_t = np.array([t.kind == "joint" for t in taught], bool)
+    kind = 0.25 * GAP_COST * (joint_p[:, None] != joint_t[None, :])
+    return np.asarray(2.0 * GAP_COST * d / REPLACED_DISTANCE + kind)
 
 
 def names_kept(planned: Sequence[PlannedTarget], taught: Sequence[TaughtTarget]) -> bool:
@@ -292,26 +346,27 @@ def match_moves(
 ) -> list[tuple[int | None, int | None]]:
     """Return the alignment of the two move lists as (planned index, taught index) pairs in
     order; None on one side: a move deleted (taught None) or added (planned None) on the
-    pendant. By name where the format keeps names (`names_kept`), else by order and distance."""
-    by_name = names_kept(planned, taught)
-    n, m = len(planned), len(taught)
+    pendant. By name where the format keeps names (`names_kept`), else by order and distance:
+    the least total cost (`pair_costs`, `GAP_COST` a gap; Needleman-Wunsch)."""
+    pairs = pair_costs(planned, taught, names_kept(planned, taught))
+    n, m = pairs.shape
     cost = np.zeros((n + 1, m + 1))
     cost[:, 0] = np.arange(n + 1) * GAP_COST
     cost[0, :] = np.arange(m + 1) * GAP_COST
     for i in range(1, n + 1):
         for j in range(1, m + 1):
-            pair = cost[i - 1, j - 1] + _pair_cost(planned[i - 1], taught[j - 1], by_name)
-            cost[i, j] = min(pair, cost[i - 1, j] + GAP_COST, cost[i, j - 1] + GAP_COST)
+            cost[i, j] = min(
+                cost[i - 1, j - 1] + pairs[i - 1, j - 1],
+                cost[i - 1, j] + GAP_COST,
+                cost[i, j - 1] + GAP_COST,
+            )
     out: list[tuple[int | None, int | None]] = []
     i, j = n, m
     while i > 0 or j > 0:
-        if i > 0 and j > 0:
-            pair = cost[i - 1, j - 1] + _pair_cost(planned[i - 1], taught[j - 1], by_name)
-            if np.isclose(cost[i, j], pair):
-                out.append((i - 1, j - 1))
-                i, j = i - 1, j - 1
-                continue
-        if i > 0 and np.isclose(cost[i, j], cost[i - 1, j] + GAP_COST):
+        if i > 0 and j > 0 and np.isclose(cost[i, j], cost[i - 1, j - 1] + pairs[i - 1, j - 1]):
+            out.append((i - 1, j - 1))
+            i, j = i - 1, j - 1
+        elif i > 0 and np.isclose(cost[i, j], cost[i - 1, j] + GAP_COST):
             out.append((i - 1, None))
             i -= 1
         else:
@@ -362,36 +417,59 @@ def _in_wobj(T_world_wobj: FloatArray, T_world: FloatArray) -> FloatArray:
     return out
 
 
-def _agreeing(
+def _agreement(
     C: FloatArray, planned: Sequence[FloatArray], taught: Sequence[FloatArray], s: TouchupSettings
-) -> list[int]:
+) -> tuple[list[int], float]:
     """Return the indices of the targets that `C` maps onto their taught pose within the fit
-    tolerances (position and orientation)."""
-    return [
-        k
-        for k, (P, Q) in enumerate(zip(planned, taught, strict=True))
-        if np.linalg.norm(C[:3, :3] @ P[:3, 3] + C[:3, 3] - Q[:3, 3]) <= s.fit_distance
-        and rotation_angle(C[:3, :3] @ P[:3, :3], Q[:3, :3]) <= s.fit_angle
-    ]
+    tolerances (position and orientation), and the sum of their distances [m]."""
+    P, Q = np.asarray(planned), np.asarray(taught)  # (n, 4, 4)
+    moved = P[:, :3, 3] @ C[:3, :3].T + C[:3, 3]
+    dist = np.linalg.norm(moved - Q[:, :3, 3], axis=1)
+    # angle of (C_R P_R)^T Q_R: trace = sum of the elementwise product of C_R P_R and Q_R
+    cos = (np.einsum("ij,njk,nik->n", C[:3, :3], P[:, :3, :3], Q[:, :3, :3]) - 1.0) / 2.0
+    ok = (dist <= s.fit_distance) & (np.arccos(np.clip(cos, -1.0, 1.0)) <= s.fit_angle)
+    return [int(k) for k in np.flatnonzero(ok)], float(dist[ok].sum())
+
+
+MAX_TRIPLES = 220
+"""The consensus tries every triple of targets up to 12 targets (220 triples), beyond that
+this many, drawn with a fixed seed (the same report for the same programs)."""
+
+
+def _candidates(planned: Sequence[FloatArray], taught: Sequence[FloatArray]) -> list[FloatArray]:
+    """Return the rigid changes the consensus tries: each target's own (taught @ inv(planned):
+    a pose fixes one) and the least-squares change of the positions of each triple of targets
+    (the pendant may re-teach positions and leave a tool's orientation as it was)."""
+    out = [Q @ np.linalg.inv(P) for P, Q in zip(planned, taught, strict=True)]
+    n = len(planned)
+    triples = list(itertools.combinations(range(n), 3))
+    if len(triples) > MAX_TRIPLES:
+        rng = np.random.default_rng(0)
+        triples = [triples[k] for k in rng.choice(len(triples), MAX_TRIPLES, replace=False)]
+    src = np.array([P[:3, 3] for P in planned])
+    tgt = np.array([Q[:3, 3] for Q in taught])
+    for tri in triples:
+        try:
+            out.append(fit_rigid(src[list(tri)], tgt[list(tri)]).T)
+        except InputError:  # on one line: no change determined
+            continue
+    return out
 
 
 def consensus(
     planned: Sequence[FloatArray], taught: Sequence[FloatArray], settings: TouchupSettings
 ) -> list[int]:
-    """Return the largest set of targets that share one rigid change: each target's own change
-    (taught @ inv(planned): a pose fixes a rigid transform) tried on all, the one most agree
-    with kept (ties: the smaller summed distance). A least-squares fit alone can mask a target
-    moved alone by spreading its error over a few coplanar others; a full pose cannot."""
+    """Return the largest set of targets that share one rigid change: every candidate change
+    (`_candidates`) tried on all targets, the one most agree with kept, within the fit
+    tolerances in position and orientation (ties: the smaller summed distance). A
+    least-squares fit of all targets can mask a target moved alone by spreading its error over
+    a few coplanar others; a change fixed by a few targets cannot (RANSAC's idea, exhaustive
+    where the targets are few)."""
     best: list[int] = []
     best_cost = np.inf
-    for P, Q in zip(planned, taught, strict=True):
-        C = Q @ np.linalg.inv(P)
-        agree = _agreeing(C, planned, taught, settings)
-        cost = sum(
-            float(np.linalg.norm(C[:3, :3] @ planned[k][:3, 3] + C[:3, 3] - taught[k][:3, 3]))
-            for k in agree
-        )
-        if len(agree) > len(best) or (len(agree) == len(best) and cost < best_cost):
+    for C in _candidates(planned, taught):
+        agree, cost = _agreement(C, planned, taught, settings)
+        if len(agree) > len(best) or (len(agree) == len(best) and cost < best_cost - 1e-12):
             best, best_cost = agree, cost
     return best
 
@@ -422,7 +500,7 @@ def fit_work_object(
     except InputError as exc:
         return refused(str(exc))
     first = fit_rigid_robust(src[shared], tgt[shared], settings.fit_distance)
-    kept = _agreeing(first.T, planned, taught, settings)
+    kept, _ = _agreement(first.T, planned, taught, settings)
     try:
         fit = fit_rigid(src[kept], tgt[kept])
     except InputError as exc:
@@ -475,7 +553,7 @@ def compare(
 
 
 def _mm(v: float) -> str:
-    return f"{v * 1000.0:8.2f}"
+    return f"{round(v * 1000.0, 2) + 0.0:8.2f}"  # + 0.0: no "-0.00"
 
 
 def summary_lines(report: TouchupReport) -> list[str]:
@@ -486,15 +564,21 @@ def summary_lines(report: TouchupReport) -> list[str]:
         + (f" ({report.fmt})" if report.fmt else ""),
         f"{'move':<24} {'wobj':<12} {'dx':>8} {'dy':>8} {'dz':>8} {'angle':>7}  status",
     ]
+    still = {c.wobj for c in report.corrections if not c.moved}  # nothing to fit there
     for r in report.rows:
         if r.delta is None or r.angle is None:
             out.append(f"{r.name:<24} {r.wobj:<12} {'':>8} {'':>8} {'':>8} {'':>7}  {r.status}"
                        + (" on the pendant" if r.status in ("added", "deleted") else ""))  # fmt: skip
             continue
-        fit = "" if r.agrees is None else ("  fits" if r.agrees else "  does not fit")
+        fit = (
+            ""
+            if r.agrees is None or r.wobj in still
+            else ("  fits" if r.agrees else "  does not fit")
+        )
         dx, dy, dz = (_mm(v) for v in r.delta)
         out.append(
-            f"{r.name:<24} {r.wobj:<12} {dx} {dy} {dz} {np.degrees(r.angle):7.3f}  {r.status}{fit}"
+            f"{r.name:<24} {r.wobj:<12} {dx} {dy} {dz} {np.degrees(r.angle) + 0.0:7.3f}"
+            f"  {r.status}{fit}"
         )
     for c in report.corrections:
         out += correction_lines(c, report.settings)
