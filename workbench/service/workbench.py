@@ -53,8 +53,7 @@ class IKSolution:
 class Workbench:
     """One open project: its robot, tool and cell, the robot's state, and the checks on it.
 
-    Units are SI (m, rad). Every method raises a `WorkbenchError` subclass on bad input.
-    """
+    Units are SI (m, rad). Every method raises a `WorkbenchError` subclass on bad input."""
 
     def __init__(self, project: Project, *, base_dir: PathArg | None = None) -> None:
         self._lock = threading.RLock()
@@ -193,11 +192,9 @@ class Workbench:
     def move_tcp(
         self, T_world_tcp: ArrayLike, *, configuration: int | str | None = None
     ) -> NDArray[np.float64]:
-        """Move the TCP to `T_world_tcp` and return the new joints [rad].
-
-        `configuration` picks a solution by index or label; by default the one nearest the
-        current joints. Unreachable poses raise UnreachableError and the robot stays.
-        """
+        """Move the TCP to `T_world_tcp` and return the new joints [rad]. `configuration` picks a
+        solution by index or label; by default the one nearest the current joints. Unreachable
+        poses raise UnreachableError and the robot stays."""
         sols = self.ik_solutions(T_world_tcp)
         self.set_joints(pick_solution([(s.label, s.q) for s in sols], configuration))
         return self.joints
@@ -258,8 +255,11 @@ class Workbench:
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
 
     calibration: CalibrationService = property(calibration_of)  # type: ignore[assignment]
-    # wb.touchup: the touch-up round trip, a program edited on the robot compared and applied
-    touchup: TouchupService = property(lambda wb: wb._workflow("touchup", TouchupService))  # type: ignore[assignment]
+
+    @property
+    def touchup(self) -> TouchupService:
+        """Return the touch-up round trip: a program edited on the robot compared and applied."""
+        return self._workflow("touchup", TouchupService)  # type: ignore[no-any-return]
 
     # -- motion -----------------------------------------------------------------------
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
