@@ -39,7 +39,9 @@ def _n(v: float | None, digits: int = 2) -> str:
 def rows_markdown(report: Any) -> str:
     """Return the report's rows as a markdown table: each move's change in its work object
     (dx, dy, dz [mm], rotation [deg]) and whether it fits the work object's correction."""
-    head = "| Move | Wobj | dx mm | dy mm | dz mm | rot deg | |\n|---|---|---:|---:|---:|---:|---|\n"
+    head = (
+        "| Move | Wobj | dx mm | dy mm | dz mm | rot deg | |\n|---|---|---:|---:|---:|---:|---|\n"
+    )
     body = []
     for r in report.rows:
         dx, dy, dz = r.delta_mm if r.delta_mm is not None else (None, None, None)
@@ -158,7 +160,8 @@ class TouchupPanel:
             raise InputError("nothing compared yet; upload the edited program first")
         mode = MODES[str(self.mode.value)]
         with self.app.jobs.job("applying a touch-up"):
-            previous = self.wb.touchup.apply(report, mode=mode)
+            # then plans the program again, its progress in the banner
+            previous = self.wb.touchup.apply(report, mode=mode, progress=self.app.jobs.progress)
             self.app.undo.push(f"touch-up ({mode.replace('_', ' ')})", previous)
             self.app.rebuild()
         self.report = None
