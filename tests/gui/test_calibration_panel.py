@@ -57,6 +57,11 @@ def test_work_object_three_point_applied_and_undone(app: WorkbenchApp) -> None:
     assert np.allclose(result.T, T, atol=1e-7)
     assert panel.marks.labels == ["origin  0.00 mm", "x  0.00 mm", "y  0.00 mm", "table"]
     assert "3-point method" in panel.summary.content and not panel.apply.disabled
+    wb.replace_project(wb.project.model_copy(deep=True))  # as an import or a load does
+    with pytest.raises(InputError, match="changed since Compute"):
+        panel._on_apply(EVENT)
+    assert not wb.project.work_objects
+    _compute(app, "Work object", text, name="table", method="3point")
     panel._on_apply(EVENT)
     table = next(w for w in wb.project.work_objects if w.name == "table")
     assert np.allclose(table.pose.xyz, T[:3, 3] * 1000, atol=1e-3)
@@ -89,3 +94,11 @@ def test_work_object_fit_names_the_outlier_and_the_base_is_fitted(app: Workbench
     assert np.allclose(wb.project.robot.base.xyz, [10.0, -20.0, 0.0], atol=1e-3)
     panel._on_undo(EVENT)
     assert wb.project.robot.base.xyz == [0.0, 0.0, 0.0]
+    # Another project opened: the last result, its marks and the undo of the last one go.
+    _compute(app, "Robot base", point_csv(wb, labels, base_pts, np.random.default_rng(3)))
+    panel._on_apply(EVENT)
+    _compute(app, "Robot base", point_csv(wb, labels, base_pts, np.random.default_rng(4)))
+    assert panel.marks.nodes and app.undo.last is not None
+    app.open_file(ROOT / "projects" / "mz07_cell.json")
+    assert panel.result is None and not panel.marks.nodes and panel.apply.disabled
+    assert app.undo.last is None and panel.undo.disabled

@@ -211,8 +211,9 @@ class WorkbenchApp:
     def _replaced(self, upload_root: Path | None) -> None:
         old, self.upload_root = self.upload_root, upload_root
         self.undo.clear()  # another project: nothing of the last one to undo
-        if hasattr(self, "calibration"):
-            self.calibration.marks.clear()
+        if hasattr(self, "calibration"):  # results of the previous project: gone
+            self.calibration.clear()
+            self.touchup.clear()
         if old is not None and old != upload_root:
             project_upload.remove_folder(old)
         if self.picker is not None:

@@ -48,6 +48,7 @@ class CalibrationPanel:
         s = self.server = app.server
         g = s.gui
         self.result: Any = None
+        self.basis: Any = None  # the project the result was computed on
         self.marks = FitMarks(s)
         with g.add_folder("Calibration", expand_by_default=False):
             labels = tuple(KINDS)
@@ -131,7 +132,7 @@ class CalibrationPanel:
             result = cal.base(
                 readings, known_csv=self.known.text, known_source=self.known.label, **boxes
             )
-        self.result = result
+        self.result, self.basis = result, self.wb.project
         self.summary.content = "  \n".join(result.summary().splitlines())  # lines that wrap
         self.apply.disabled = False
         self.marks.show(
@@ -147,6 +148,12 @@ class CalibrationPanel:
         result = self.result
         if result is None:
             raise InputError("nothing computed yet; paste the readings and press Compute")
+        if self.wb.project is not self.basis:
+            raise InputError(
+                "the project changed since Compute (another apply, an import or a load); press"
+                " Compute again",
+                field="Apply to project",
+            )
         with self.app.jobs.job("applying a calibration"):
             previous = self.wb.calibration.apply(result)
             what = "calibration: " + FRAME_NAMES[result.kind].format(result.name)
@@ -160,6 +167,9 @@ class CalibrationPanel:
         what = self.app.undo_last()
         notify(self.server, event.client, "Undone", what, color="green")
 
-    def remove(self) -> None:
-        """Remove the marks (the widgets stay with the Project tab)."""
+    def clear(self) -> None:
+        """Forget the result and take its marks down (another project was opened)."""
+        self.result = self.basis = None
+        self.summary.content = ""
+        self.apply.disabled = True
         self.marks.clear()

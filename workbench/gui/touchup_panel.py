@@ -176,3 +176,10 @@ class TouchupPanel:
     def _on_undo(self, event: viser.GuiEvent) -> None:
         what = self.app.undo_last()
         notify(self.server, event.client, "Undone", what, color="green")
+
+    def clear(self) -> None:
+        """Forget the comparison and take its marks down (another project was opened)."""
+        self.report = None
+        self.summary.content = self.table.content = self.fits.content = ""
+        self.apply.disabled = True
+        self.marks.clear()
