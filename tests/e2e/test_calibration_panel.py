@@ -1,5 +1,6 @@
-"""The Project tab's Calibration folder in a real Chromium: TCP readings pasted, the fit shown
-(mean and max error, the points with their residuals in the 3D view), applied, undone.
+"""The Project tab's Calibration folder in a real Chromium: bad readings pasted and refused, TCP
+readings uploaded into the box, the fit shown (mean and max error, the points with their
+residuals in the 3D view), applied, undone.
 
 What the page shows is what the server uses: after Apply the server's tool TCP is the fitted
 one and the folder's "In use" line shows it; after Undo both are back. The readings are made by
@@ -81,7 +82,9 @@ def _paste(page, app: WorkbenchApp, text: str) -> None:  # type: ignore[no-untyp
     wait_for(lambda: app.calibration.readings.text == text, what="the readings on the server")
 
 
-def test_tcp_readings_pasted_fitted_applied_and_undone(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
+def test_tcp_readings_pasted_fitted_applied_and_undone(
+    page, app: WorkbenchApp, tmp_path: Path
+) -> None:  # type: ignore[no-untyped-def]
     _open_folder(page)
     panel, wb = app.calibration, app.wb
 
@@ -92,8 +95,16 @@ def test_tcp_readings_pasted_fitted_applied_and_undone(page, app: WorkbenchApp) 
     assert panel.result is None and _button(page, "Apply to project").is_disabled()
     close_notifications(page)
 
-    # Good readings: the fit, its errors on the page, its points and frame in the 3D view.
-    _paste(page, app, tcp_readings())
+    # Good readings uploaded from a file: the box shows them, the server holds them; then the
+    # fit, its errors on the page, its points and frame in the 3D view.
+    text = tcp_readings()
+    readings = tmp_path / "tcp_readings.csv"
+    readings.write_text(text.replace("\n", "\r\n"))  # as a Windows pendant export writes it
+    with page.expect_file_chooser() as fc:
+        _button(page, "Upload readings").click()
+    fc.value.set_files(str(readings))
+    wait_for(lambda: app.calibration.readings.text == text, what="the uploaded readings")
+    wait_for(lambda: _box(page, "Readings (CSV)").input_value() == text, what="the box filled")
     _button(page, "Compute").click()
     wait_for(lambda: panel.result is not None, what="the TCP fit")
     result = panel.result
