@@ -19,6 +19,7 @@ from workbench.gui import jobs as gui_jobs
 from workbench.gui import project_upload, uploads
 from workbench.gui.assembly_panel import AssemblyPanel
 from workbench.gui.bending_panel import BendingPanel
+from workbench.gui.calibration_panel import CalibrationPanel
 from workbench.gui.collision_panel import CollisionPanel
 from workbench.gui.import_panel import ImportPanel
 from workbench.gui.jog_panel import JogPanel
@@ -26,6 +27,7 @@ from workbench.gui.motion_panel import MotionPanel
 from workbench.gui.picker import Picker
 from workbench.gui.polishing_panel import PolishingPanel
 from workbench.gui.project_panel import ProjectPanel
+from workbench.gui.project_undo import ProjectUndo
 from workbench.gui.scene import CameraViews, RobotScene
 from workbench.gui.server_guard import (
     PINNED_VISER,
@@ -36,6 +38,7 @@ from workbench.gui.server_guard import (
     new_token,
 )
 from workbench.gui.timeline import Timeline
+from workbench.gui.touchup_panel import TouchupPanel
 from workbench.service import Workbench
 from workbench.service.memory import release_memory
 from workbench.service.project_files import open_into
@@ -127,6 +130,7 @@ class WorkbenchApp:
         self.save_folder = Path(save_folder if save_folder is not None else Path.cwd()).resolve()
         self.allowed = tuple(wb.folders.allowed)  # the folders allowed at start (--allow-dir)
         self.upload_root: Path | None = None  # the folder of the uploaded project in use
+        self.undo = ProjectUndo(lambda: self.wb)  # calibration and touch-up applies
         server.scene.set_up_direction("+z")
         server.scene.add_grid(
             "/grid", width=3.0, height=3.0, cell_size=0.1, plane="xy", position=(0.0, 0.0, 0.0005)
@@ -151,6 +155,8 @@ class WorkbenchApp:
         with self.project_tab:
             self.project_panel = ProjectPanel(self)
             self.import_panel = ImportPanel(self)
+            self.calibration = CalibrationPanel(self)
+            self.touchup = TouchupPanel(self)
 
     def _build_panels(self) -> None:
         with self.robot_tab:
@@ -192,8 +198,22 @@ class WorkbenchApp:
             open_into(self.wb, json_path, allowed=self.allowed, session=(root,), unsaved=True)
             self._replaced(root)
 
+    def undo_last(self) -> str:
+        """Undo the last calibration or touch-up applied (`project_undo.py`); return what."""
+
+        def replace(previous: object) -> None:
+            with self.jobs.job("undoing"):
+                self.wb.replace_project(previous)  # type: ignore[arg-type]
+                self.rebuild()
+
+        return self.undo.undo(replace)
+
     def _replaced(self, upload_root: Path | None) -> None:
         old, self.upload_root = self.upload_root, upload_root
+        self.undo.clear()  # another project: nothing of the last one to undo
+        if hasattr(self, "calibration"):  # results of the previous project: gone
+            self.calibration.clear()
+            self.touchup.clear()
         if old is not None and old != upload_root:
             project_upload.remove_folder(old)
         if self.picker is not None:
@@ -222,6 +242,8 @@ class WorkbenchApp:
                 self.project_panel.refresh()
             if hasattr(self, "import_panel"):
                 self.import_panel.refresh()
+            if hasattr(self, "calibration"):
+                self.calibration.refresh()
         release_memory()  # the replaced project's memory back to the OS
 
 
