@@ -310,3 +310,23 @@ def test_a_zip_lacking_a_file_or_without_a_project_is_refused(tmp_path: Path) ->
 def test_write_zip_round_trips_through_read_zip() -> None:
     files = [("p.json", b"{}"), ("files/a.stl", os.urandom(5000)), ("parts/b.dxf", b"0\nEOF")]
     assert read_zip(write_zip(files), "z.zip") == files
+
+
+@pytest.mark.slow  # about 5 s: a program of 374 items read and re-solved twice
+def test_the_cli_saves_with_files_rebase_or_copy(tmp_path: Path) -> None:
+    from workbench.cli import main
+
+    program = str(ROOT / "tests/golden_examples/polishing/urscript/polish.script")
+    project = str(PROJECTS / "step_cell.json")
+    for mode in ("rebase", "copy"):
+        out = tmp_path / mode / "cell.json"
+        out.parent.mkdir()
+        assert main(["import", project, program, "--out", str(out), "--files", mode]) == 0
+        paths = dict(named_files(Workbench.open(out).project))
+        where = (out.parent / paths["polishing.workpiece"]).resolve()
+        expected = (
+            ROOT / "web_assets/workpieces/panel.step"
+            if mode == "rebase"
+            else out.parent.resolve() / "files/panel.step"
+        )
+        assert where == expected.resolve()
