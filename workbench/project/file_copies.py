@@ -15,6 +15,7 @@ from workbench.errors import InputError
 
 
 def same_bytes(a: Path, b: Path) -> bool:
+    """Return whether files `a` and `b` hold the same bytes (False if either cannot be read)."""
     try:
         if a.stat().st_size != b.stat().st_size:
             return False
