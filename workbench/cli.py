@@ -16,6 +16,17 @@ from workbench.project.paths import read_regular_file
 DEFAULT_PROJECT = Path(__file__).resolve().parent.parent / "projects" / "mz07_cell.json"
 
 
+def _files_option(parser: argparse.ArgumentParser) -> None:
+    """Add --files: how a saved project names its files elsewhere (`Workbench.save`)."""
+    parser.add_argument(
+        "--files",
+        choices=["rebase", "copy"],
+        default="rebase",
+        help="saving to another folder: rebase the paths to name the same files (default),"
+        " or copy the files beside the saved project",
+    )
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="workbench", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -83,6 +94,7 @@ def _parser() -> argparse.ArgumentParser:
         help="default: by file name",
     )
     imp.add_argument("--out", help="project JSON to write (default: overwrite PROJECT)")
+    _files_option(imp)
     sweep = sub.add_parser(
         "sweep", help="search a workflow's plans: bending sequences x grasps x stations"
     )
@@ -107,6 +119,7 @@ def _parser() -> argparse.ArgumentParser:
     sweep.add_argument(
         "--out", help="project JSON to write with --use (default: overwrite PROJECT)"
     )
+    _files_option(sweep)
     part = sub.add_parser(
         "import-part", help="recognise a bent part (STEP) or flat pattern (DXF) as a part JSON"
     )
@@ -243,7 +256,7 @@ def _sweep(args: argparse.Namespace) -> int:
             )
             return 2
         wb.bending.use_plan(res.plans[args.use - 1])
-        path = wb.save(args.out or args.project)
+        path = wb.save(args.out or args.project, files=args.files)
         print(f"wrote {path}: plan {args.use} ({' '.join(res.plans[args.use - 1].sequence)})")
     return 0 if res.plans else 1
 
@@ -260,7 +273,7 @@ def _import(args: argparse.Namespace) -> int:
     notes = wb.import_program(files, args.format)
     for note in notes:
         print(f"note: {note}")
-    path = wb.save(args.out or args.project)
+    path = wb.save(args.out or args.project, files=args.files)
     moves = len(wb.project.program.moves) if wb.project.program else 0
     print(f"wrote {path}: program {wb.project.program.name} with {moves} items")  # type: ignore[union-attr]
     return 0

@@ -197,3 +197,77 @@ def test_a_server_without_a_project_opens_the_picker(browser) -> None:  # type: 
         context.close()
         app.timeline.close()
         server.stop()
+
+
+def _named_bytes(wb: Workbench) -> list[bytes]:
+    from workbench.service.project_files import named_files
+
+    return [wb.folders.resolve(p, w).read_bytes() for w, p in named_files(wb.project)]
+
+
+def _without_paths(wb: Workbench) -> dict[str, object]:
+    from workbench.service.project_files import named_fields
+
+    project = wb.project.model_copy(deep=True)
+    for _, path, model, attr in named_fields(project):
+        setattr(model, attr, "file" + Path(path).suffix)
+    return project.model_dump(mode="json")
+
+
+@pytest.mark.e2e
+def test_download_the_project_zip_upload_it_back_and_save_as_with_copies(  # type: ignore[no-untyped-def]
+    launch, tmp_path: Path
+) -> None:
+    """Issue 29 part 7: "Download project" gives a .zip of the JSON and every file it names;
+    "Upload" takes it back as the same project; Save as says where it writes and copies the
+    files beside the project when asked."""
+    from browser_helpers import save_screenshot
+
+    sums = _sums()
+    app, page = launch(PROJECTS / "step_cell.json")
+    work = tmp_path / "work"
+    work.mkdir()
+    app.save_folder = work
+    page.get_by_role("tab", name="Project").click()
+    app.project_panel.refresh()
+    page.get_by_text(f"Writes in {work}").first.wait_for()
+    before, files = _without_paths(app.wb), _named_bytes(app.wb)
+
+    with page.expect_download() as dl:
+        page.get_by_role("button", name="Download project (.zip)").click()
+    download = dl.value
+    assert download.suggested_filename == "step_cell.zip"
+    zpath = tmp_path / "step_cell.zip"
+    download.save_as(zpath)
+    with zipfile.ZipFile(zpath) as z:
+        assert z.namelist() == [
+            "step_cell.json",
+            "files/fixture_block.step",
+            "files/panel.step",
+        ]
+
+    close_notifications(page)
+    _upload(page, zpath)
+    wait_for(lambda: app.upload_root is not None, what="the zip uploaded and loaded")
+    assert app.wb.path is None
+    assert _without_paths(app.wb) == before  # the same project
+    assert _named_bytes(app.wb) == files  # with the same files
+
+    # Save as with "copy": the files land beside the project, and it reopens the same.
+    close_notifications(page)
+    page.get_by_role("combobox", name="Files when saving").click()
+    page.get_by_role("option", name="copy: beside the project", exact=True).click()
+    wait_for(lambda: app.project_panel._files() == "copy", what="copy chosen on the server")
+    _save_as(page, app, "portable")
+    target = work / "portable.json"
+    wait_for(lambda: app.wb.path == target, what="portable.json saved")
+    page.get_by_text("Saved", exact=True).first.wait_for()
+    save_screenshot(page, "project_zip.png")
+    again = Workbench.open(target)
+    assert _without_paths(again) == before and _named_bytes(again) == files
+    assert sorted(p.relative_to(work).as_posix() for p in work.rglob("*") if p.is_file()) == [
+        "files/fixture_block.step",
+        "files/panel.step",
+        "portable.json",
+    ]
+    assert _sums() == sums

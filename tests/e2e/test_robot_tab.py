@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -88,8 +89,10 @@ def test_upload_bad_project_shows_field_and_keeps_state(
 def test_download_gives_the_current_project(page, app: WorkbenchApp) -> None:  # type: ignore[no-untyped-def]
     page.get_by_role("tab", name="Project").click()
     with page.expect_download() as dl:
-        page.get_by_role("button", name="Download project JSON").click()
-    data = json.loads(Path(dl.value.path()).read_text())
+        page.get_by_role("button", name="Download project (.zip)").click()
+    with zipfile.ZipFile(dl.value.path()) as z:  # the JSON and the files it names (none here)
+        assert z.namelist() == [f"{app.wb.path.stem}.json"]
+        data = json.loads(z.read(z.namelist()[0]))
     assert data == json.loads(app.wb.to_json())
     assert data["robot"]["preset"] == "mz07"
 

@@ -8,6 +8,7 @@ the project that was saved, its named files byte for byte with the originals.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -63,7 +64,7 @@ def test_an_example_saved_elsewhere_reopens_the_same_project_with_the_same_files
     before, files = _dump_without_paths(wb), _files(wb)
     target = tmp_path / "elsewhere" / "mine.json"
     target.parent.mkdir()
-    saved = save_project_file(wb, target)
+    saved = save_project_file(wb, target, files="copy")  # rebase: test_project_portable
     again = Workbench.open(target)  # checks every file it names, the lazy ones too
     assert _dump_without_paths(again) == before
     assert _files(again) == files
@@ -153,13 +154,14 @@ def test_a_session_folder_is_copied_and_a_copy_never_replaces_another_file(
 
 
 def test_a_file_in_a_folder_allowed_at_start_is_named_absolutely(tmp_path: Path) -> None:
-    shared = Path(ROOT / "web_assets").resolve()  # allowed, but bundled: copied instead
+    shared = Path(ROOT / "web_assets").resolve()  # allowed, but bundled: rebased instead
     wb = Workbench.open(PROJECTS / "polishing_cell.json", allowed_dirs=[shared])
     target = tmp_path / "p" / "polish.json"
     target.parent.mkdir()
     wb.save(target)
     assert wb.project.polishing is not None
-    assert wb.project.polishing.workpiece == "files/panel.stl"
+    rebased = os.path.relpath(shared / "workpieces" / "panel.stl", target.parent.resolve())
+    assert wb.project.polishing.workpiece == rebased
     mine = Path.home() / ".cache" / "workbench-test-allowed"  # outside the temporary folder
     mine.mkdir(parents=True, exist_ok=True)
     try:

@@ -3,10 +3,15 @@
 - **Open example**: the example projects (`picker.py`), loaded from their files.
 - **Upload**: a project JSON, a .zip of the JSON and its meshes, or the JSON then each file it
   names (`project_upload.py`); relative paths resolve in the upload's own folder.
+- **Download project** gives a .zip of the JSON and every file it names (`Workbench.to_zip`),
+  which **Upload** takes back.
+- **Files when saving**: rebase (name the same files from the new folder) or copy (copy them
+  beside the saved project): `Workbench.save`'s `files`.
 - **Save** writes the file the project was opened from; an example (`projects/`) is read-only
   to it, and an uploaded project has no file yet: both need **Save as**.
 - **Save as** writes `name` atomically in the server's working folder (`workbench serve`'s
-  current folder); an existing file is replaced only with **Overwrite** ticked.
+  current folder, shown on the tab); an existing file is replaced only with **Overwrite**
+  ticked.
 
 Every load runs as the session's job: refused with "busy: ..." while a plan runs.
 """
@@ -24,6 +29,9 @@ from workbench.gui.notify import guarded, notify
 from workbench.gui.picker import Example, examples, is_example
 from workbench.service.project_files import save_target
 from workbench.service.project_save import SavedProject, save_project_file
+from workbench.service.project_zip import zip_stem
+
+FILE_CHOICES = ("rebase: the same files", "copy: beside the project")
 
 if TYPE_CHECKING:
     from workbench.gui.app import WorkbenchApp
@@ -49,11 +57,25 @@ class ProjectPanel:
             " each file it names",
         )
         self.pending = g.add_markdown("")
-        self.download = g.add_button("Download project JSON", icon=viser.Icon.DOWNLOAD)
+        self.download = g.add_button(
+            "Download project (.zip)",
+            icon=viser.Icon.DOWNLOAD,
+            hint="The project JSON and every file it names; Upload takes it back",
+        )
+        self.files = g.add_dropdown(
+            "Files when saving",
+            options=FILE_CHOICES,
+            initial_value=FILE_CHOICES[0],
+            hint="rebase: the saved project names the same files from its folder (copying only"
+            " what it could not read there); copy: every file copied beside it",
+        )
         self.save = g.add_button("Save", icon=viser.Icon.DEVICE_FLOPPY)
         with g.add_folder("Save as", expand_by_default=True):
+            self.where = g.add_markdown("")
             self.name = g.add_text(
-                "File name", initial_value="", hint="saved in the working folder"
+                "File name",
+                initial_value="",
+                hint="a plain name (.json is added), in the folder above",
             )
             self.overwrite = g.add_checkbox("Overwrite", initial_value=False)
             self.save_as = g.add_button("Save as")
@@ -82,7 +104,8 @@ class ProjectPanel:
             where = f"`{wb.path}` (an example: read-only to Save, use **Save as**)"
         else:
             where = f"`{wb.path}`"
-        self.info.content = f"**{wb.project.name}**  \n{where}  \nSave as writes in `{self.folder}`"
+        self.info.content = f"**{wb.project.name}**  \n{where}"
+        self.where.content = f"Writes in `{self.folder}`"
         self.save.disabled = wb.path is None or is_example(wb.path)
         self.save.label = f"Save to {wb.path.name}" if wb.path is not None else "Save"
         self.pending.content = self.staged.describe() if self.staged is not None else ""
@@ -170,8 +193,10 @@ class ProjectPanel:
     def _on_download(self, event: viser.GuiEvent) -> None:
         if event.client is None:
             return
-        name = (self.wb.project.name or "project").replace(" ", "_") + ".json"
-        event.client.send_file_download(name, self.wb.to_json().encode(), save_immediately=True)
+        with self.app.jobs.job("packing the project"):
+            data = self.wb.to_zip()
+        name = zip_stem(self.wb) + ".zip"
+        event.client.send_file_download(name, data, save_immediately=True)
 
     def _on_save(self, event: viser.GuiEvent) -> None:
         wb = self.wb
@@ -183,16 +208,22 @@ class ProjectPanel:
                 " new name"
             )
         with self.app.jobs.job("saving the project"):
-            saved = save_project_file(wb, wb.path)
+            saved = save_project_file(wb, wb.path, files=self._files())
         self._saved(event, saved)
 
     def _on_save_as(self, event: viser.GuiEvent) -> None:
         target = save_target(self.folder, str(self.name.value))
         with self.app.jobs.job("saving the project"):
-            saved = save_project_file(self.wb, target, overwrite=bool(self.overwrite.value))
+            saved = save_project_file(
+                self.wb, target, overwrite=bool(self.overwrite.value), files=self._files()
+            )
         self.overwrite.value = False  # type: ignore[misc]
         self.refresh()
         self._saved(event, saved)
+
+    def _files(self) -> str:
+        """Return the save mode chosen: "rebase" or "copy"."""
+        return str(self.files.value).split(":")[0]
 
     def _saved(self, event: viser.GuiEvent, saved: SavedProject) -> None:
         body = str(saved.path) + "".join(f"\n- {n}" for n in saved.notes)
@@ -209,7 +240,9 @@ class ProjectPanel:
             self.upload,
             self.pending,
             self.download,
+            self.files,
             self.save,
+            self.where,
             self.name,
             self.overwrite,
             self.save_as,

@@ -11,22 +11,15 @@ project replaces it, when its load fails, and at exit (`uploads.remove_all`).
 
 from __future__ import annotations
 
-import io
 import os
 import posixpath
-import re
-import stat
-import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from workbench.errors import InputError
 from workbench.gui import uploads
-from workbench.gui.server_guard import max_upload_bytes
 from workbench.service.project_files import named_files, parse_project
-
-MAX_MEMBERS = 2000  # files in an uploaded zip
-_PART = re.compile(r"[^\x00-\x1f\x7f/\\:]+")
+from workbench.service.project_zip import unpack_project_zip
 
 
 def new_folder() -> Path:
@@ -126,60 +119,15 @@ def stage_json(name: str, content: bytes) -> Staged:
         raise
 
 
-def _member_path(info: zipfile.ZipInfo) -> str:
-    name = info.filename.replace("\\", "/")
-    parts = [p for p in name.split("/") if p not in ("", ".")]
-    if name.startswith("/") or ".." in parts or not parts:
-        raise InputError(f"upload: the zip member {info.filename!r} leaves the zip's folder")
-    if not all(_PART.fullmatch(p) for p in parts) or any(len(p) > 200 for p in parts):
-        raise InputError(f"upload: the zip member {info.filename!r} has an unusable name")
-    mode = info.external_attr >> 16
-    if stat.S_ISLNK(mode):
-        raise InputError(f"upload: the zip member {info.filename!r} is a symlink; zip the file")
-    return "/".join(parts)
-
-
 def stage_zip(name: str, content: bytes) -> Staged:
-    """Unpack an uploaded .zip of a project and its files; InputError/ProjectError if unusable.
-
-    The project is the .json file nearest the zip's top that is a project (part files and
-    other JSON deeper down are its files).
-    """
-    try:
-        archive = zipfile.ZipFile(io.BytesIO(content))
-    except zipfile.BadZipFile:
-        raise InputError(f"upload: {name} is not a zip file") from None
-    members = [i for i in archive.infolist() if not i.is_dir()]
-    if len(members) > MAX_MEMBERS:
-        raise InputError(f"upload: {name} holds {len(members)} files, at most {MAX_MEMBERS}")
-    limit = max_upload_bytes()
-    if sum(i.file_size for i in members) > limit:
-        raise InputError(
-            f"upload: {name} unpacks to more than the upload limit of {limit >> 20} MB;"
-            " raise it with WORKBENCH_MAX_MESH_BYTES=BYTES"
-        )
-    paths = [_member_path(i) for i in members]
-    jsons = sorted((p.count("/"), p) for p in paths if p.lower().endswith(".json"))
-    if not jsons:
-        raise InputError(f"upload: {name} holds no project .json file")
-    top = [p for d, p in jsons if d == jsons[0][0]]
+    """Unpack an uploaded .zip of a project and its files into a new upload folder
+    (`service.project_zip`: every member checked first, the project the .json nearest the
+    top, a zip lacking a file refused whole); InputError/ProjectError if unusable."""
     root = new_folder()
     try:
-        for info, rel in zip(members, paths, strict=True):
-            target = root / rel
-            target.parent.mkdir(parents=True, exist_ok=True)
-            with archive.open(info) as src:
-                data = src.read(limit + 1)
-            if len(data) > info.file_size:  # the zip lied about a size
-                raise InputError(f"upload: {name}: {rel} is larger than the zip says")
-            target.write_bytes(data)
-        if len(top) > 1:
-            shown = ", ".join(top)
-            raise InputError(f"upload: {name} holds several project files ({shown}); keep one")
-        json_path = root / top[0]
-        project = parse_project(json_path.read_bytes(), source=f"{name}:{top[0]}")
-        rels = [p for _, p in named_files(project)]
-        return Staged(root, json_path, project.name, _missing(rels, json_path.parent, root))
+        json_path = unpack_project_zip(content, root, source=f"upload: {name}")
+        project = parse_project(json_path.read_bytes(), source=name)
+        return Staged(root, json_path, project.name, {})
     except BaseException:
         remove_folder(root)
         raise

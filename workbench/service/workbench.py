@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import threading
 from dataclasses import dataclass
 from pathlib import Path
@@ -12,7 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from workbench.collision import CollisionPolicy, ContactReport, RobotCollisionChecker
-from workbench.errors import InputError, JointLimitError, WorkbenchError
+from workbench.errors import JointLimitError, WorkbenchError
 from workbench.geometry.pose_check import check_transform
 from workbench.geometry.transforms import invert_transform
 from workbench.kinematics import DHRobot, RobotModel, Singularities
@@ -38,6 +37,7 @@ from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
+from workbench.service.project_zip import open_zip, project_zip
 from workbench.service.robot_setup import RobotSetup, build_robot
 from workbench.service.touchup import TouchupService
 from workbench.service.workflow_slot import WorkflowSlot
@@ -124,14 +124,15 @@ class Workbench:
         """Return the project as JSON text (as `save` writes it)."""
         return project_to_json(self.project)
 
-    def save(self, path: str | os.PathLike[str] | None = None, *, overwrite: bool = True) -> Path:
-        """Save the project atomically to `path` (default: its file) so that it opens and plans
-        from there (`service.project_save`: files rebased or copied beside it; an unopenable
-        result refused, nothing written), and make it the project's file; return the path."""
-        target = Path(path) if path is not None else self.path
-        if target is None:
-            raise InputError("save: no path given and the project was not opened from a file")
-        return project_save.save_project_file(self, target, overwrite=overwrite).path
+    def save(
+        self, path: PathArg | None = None, *, overwrite: bool = True, files: str = "rebase"
+    ) -> Path:
+        """Save atomically to `path` (default: its file), to open from there: `files` rebased or
+        copied beside it (`service.project_save`); it becomes the project's file; return it."""
+        return project_save.save_project_file(self, path, overwrite=overwrite, files=files).path
+
+    to_zip = project_zip  # a .zip of the JSON and every file it names
+    from_zip = classmethod(open_zip)  # the project of a .zip, unpacked in a folder
 
     # -- robot ------------------------------------------------------------------------
     @property
