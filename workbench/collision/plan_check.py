@@ -198,6 +198,7 @@ def check_motion(
     sampler: Callable[[FloatArray], FloatArray],
     acceleration: FloatArray | AccelerationBound,
     progress: Progress | None = None,
+    clearance: bool = True,
 ) -> EnginePathReport:
     """Return the collision report of a motion sampled at `times` [s] as q (N, dof) [rad].
 
@@ -207,7 +208,8 @@ def check_motion(
     ``acceleration * h**2 / 8`` needs a continuous velocity). Without a fast engine (exact
     mode or a fallback) every sample is checked exactly and `fallback` says why. A motion free
     of contact is then measured against `policy.margin` (`EnginePathReport.nearest`: the least
-    fcl distance over the samples and its pair, `clearance.plan_clearance`).
+    fcl distance over the samples and its pair, `clearance.plan_clearance`); with
+    `clearance` False it is not (`nearest` None: the caller asks `clearance.margin_kept`).
     """
     report = progress or (lambda f, m: None)
     eng, why = shared_engine(checker, policy, progress=lambda f, m: report(0.2 * f, m))
@@ -222,7 +224,7 @@ def check_motion(
     else:
         assert why is not None
         rep = dense_report(times, q, checker, why, progress=lambda f, m: report(0.2 + 0.7 * f, m))
-    if not rep.collision_free:
+    if not rep.collision_free or not clearance:
         return rep
     report(0.9, "clearance against the margin")
     near = plan_clearance(checker, times, q, margin=policy.margin, exempt=policy.exempt, engine=eng)
