@@ -35,7 +35,7 @@ from workbench.collision.clearance import check_margin, exempt_pairs, plan_clear
 from workbench.collision.engine import CollisionEngine, EnginePathReport
 from workbench.collision.path_check import AccelerationBound
 from workbench.collision.robot_checker import RobotCollisionChecker
-from workbench.errors import InputError, WorkbenchError
+from workbench.errors import InputError, PlanLimitError, WorkbenchError
 
 if TYPE_CHECKING:
     from workbench.motion import Trajectory
@@ -121,6 +121,8 @@ def engine(
                 cache_dir=key[3],
                 progress=progress,
             )
+        except PlanLimitError:
+            raise  # a plan's time limit or cancel, not a failed build: not kept
         except WorkbenchError as exc:
             found = exc
         checker.engines[key] = found
@@ -155,6 +157,8 @@ def shared_engine(
             )
     try:
         eng = engine(checker, policy, progress=progress)
+    except PlanLimitError:
+        raise
     except WorkbenchError as exc:
         return None, f"the {policy.mode} engine could not be built ({exc})"
     if eng.sdf is not None and not eng.sdf.signed:

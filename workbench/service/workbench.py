@@ -35,6 +35,7 @@ from workbench.service.bending import BendingService
 from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
+from workbench.service.plan_limits import limited
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.robot_setup import RobotSetup, build_robot
@@ -183,8 +184,7 @@ class Workbench:
 
         One per arm configuration and turn of the wide joints, labelled
         'front/elbow up/no flip, J6 +1 turn' (the labels depend on the pose only);
-        `move_tcp` accepts them.
-        """
+        `move_tcp` accepts them."""
         T = check_transform(T_world_tcp, "T_world_tcp")
         setup = self._setup
         T_base_flange = (
@@ -261,6 +261,7 @@ class Workbench:
         return self._workflow("polishing", PolishingService)  # type: ignore[no-any-return]
 
     # -- motion -----------------------------------------------------------------------
+    @limited("the motion plan")
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
         """Return the plan of the project's program from its start (not the current joints; IK in
         each target's stored configuration, stored where missing), kept as `last_plan`."""
