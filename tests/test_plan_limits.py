@@ -26,6 +26,9 @@ from workbench.sheetmetal.part import Flange
 ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = ROOT / "projects"
 LIBRARY = ("irb1200_7_70", "kr6_r900_2", "m10ia", "ur5e", "mz07")
+#: The seed cell's limit on each library robot [s]: the UR5e's plan ran past 290 s here (2
+#: cores shared by six jobs) in its transits' exact part-solid checks; it must end by it.
+LIMIT_S = 240.0
 
 
 def _example(name: str) -> dict[str, Any]:
@@ -232,6 +235,7 @@ def test_a_limit_ends_the_press_cycle_inside_its_detours() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.timeout(600)  # the plan's own limit (240 s) must be what ends a slow one
 @pytest.mark.parametrize("preset", LIBRARY)
 def test_the_seed_part_cell_plans_on_every_library_robot_within_its_limit(
     preset: str, tmp_path: Path
@@ -242,16 +246,19 @@ def test_the_seed_part_cell_plans_on_every_library_robot_within_its_limit(
 
     d = _example("seed_part_cell")
     d["robot"] = {"name": preset, "preset": preset, "base": d["robot"]["base"]}
-    d["bending"]["part_file"] = str(PROJECTS / "parts" / "seed_part.json")
-    d["planning"] = {"time_limit": 300.0}
+    (tmp_path / "parts").mkdir()
+    (tmp_path / "parts" / "seed_part.json").write_bytes(
+        (PROJECTS / "parts" / "seed_part.json").read_bytes()
+    )
+    d["planning"] = {"time_limit": LIMIT_S}
     path = tmp_path / f"seed_{preset}.json"
     path.write_text(json.dumps(d))
     t0 = time.perf_counter()
+    wb = Workbench.open(path)  # the project itself is sound: only the plan may say why not
     try:
-        wb = Workbench.open(path)
         summary = wb.bending.plan().summary()
     except WorkbenchError as exc:
-        summary = str(exc)
-        assert summary
-    assert time.perf_counter() - t0 < 300.0 + 60.0, summary
+        summary = f"{type(exc).__name__}: {exc}"
+    print(preset, round(time.perf_counter() - t0, 1), "s:", summary)
+    assert time.perf_counter() - t0 < LIMIT_S + 60.0, summary
     assert summary
