@@ -129,6 +129,22 @@ class PlanningError(WorkbenchError):
     """A planner or trajectory generator could not produce a valid motion."""
 
 
+class PlanLimitError(PlanningError):
+    """A plan ended by its time limit (`field`: the setting) or by cancel (`cancelled`).
+
+    Never caught as a verdict: a planner that turns a PlanningError into "no path here"
+    re-raises this one, so a limit ends the plan instead of changing it. Its field is the
+    setting's path at the project's top level, kept when a caller re-roots it (`within`)."""
+
+    def __init__(self, message: str = "", *, field: str | None = None, cancelled: bool = False):
+        super().__init__(message, field=field)
+        self.cancelled = cancelled
+
+    def _reroot(self, prefix: str) -> None:
+        if self.field is None:
+            super()._reroot(prefix)
+
+
 class CollisionError(WorkbenchError):
     """A requested state or motion is in collision where it must not be."""
 

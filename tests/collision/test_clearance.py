@@ -9,7 +9,7 @@ import pytest
 from block_cell import block_cell
 
 from workbench.collision import CollisionPolicy, check_motion
-from workbench.collision.clearance import Clearance, plan_clearance
+from workbench.collision.clearance import Clearance, margin_kept, plan_clearance
 from workbench.collision.engine import CollisionEngine
 from workbench.errors import InputError
 from workbench.service import Workbench
@@ -59,6 +59,37 @@ def test_least_distance_equals_fcl_over_every_pair_and_sample(
     assert got.pair == pair
     assert got.time == pytest.approx(t[got.index])
     assert 0.0 < got.distance < 0.3  # the tool approaches the block: a real figure
+
+
+@pytest.mark.parametrize("with_engine", [False, True])
+def test_margin_verdict_equals_the_least_distance_verdict(
+    wb: Workbench, spheres: CollisionEngine, with_engine: bool
+) -> None:
+    """Twin: `margin_kept` (fcl only under the margin, first violation ends it) gives the
+    verdict of `plan_clearance` (the exact least distance) for margins on either side of the
+    real clearance of each motion, with and without an exempt pair."""
+    eng = spheres if with_engine else None
+    rng = np.random.default_rng(3)
+    verdicts = set()
+    for trial in range(4):
+        qs = np.linspace(Q0, Q1 * rng.uniform(0.6, 1.2), 5)
+        exempt = [] if trial % 2 else [list(wb.checker.scene.pairs[0])]
+        least = plan_clearance(wb.checker, np.arange(5.0), qs, exempt=exempt, engine=eng)
+        for margin in (
+            0.0,
+            least.distance * 0.5,
+            least.distance * 0.999,
+            least.distance * 1.001,
+            0.45,
+        ):
+            margin = min(margin, 0.5)
+            want = plan_clearance(
+                wb.checker, np.arange(5.0), qs, margin=margin, exempt=exempt, engine=eng
+            ).keeps_margin
+            got = margin_kept(wb.checker, qs, margin=margin, exempt=exempt, engine=eng)
+            assert got == want, (trial, margin, least.distance)
+            verdicts.add(got)
+    assert verdicts == {True, False}  # both verdicts were met
 
 
 def test_exempt_pair_is_left_out_and_listed(wb: Workbench) -> None:

@@ -160,6 +160,7 @@ def plan_move(
     report(0.3, f"{name}: planning ({planner})")
     if planner == "joint_rrt_connect":
         opts = dict(options)
+        opts.setdefault("progress", lambda f, m: report(0.3 + 0.4 * f, f"{name}: {m}"))
         space = cell.carry_space(
             name,
             cell_size,

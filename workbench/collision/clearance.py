@@ -154,6 +154,45 @@ def plan_clearance(
     return Clearance(float(best), pairs[k], float(t[i]), i, m, ex)
 
 
+def margin_kept(
+    checker: RobotCollisionChecker,
+    q: FloatArray,
+    *,
+    margin: float,
+    exempt: Iterable[Iterable[str]] = (),
+    engine: CollisionEngine | None = None,
+) -> bool:
+    """Return ``plan_clearance(...).keeps_margin`` of samples q (N, dof) [rad], measuring less.
+
+    The same bounds, but only the (sample, pair) whose bound is under `margin` are asked of
+    fcl (nearest first), and the first closer than `margin` ends it: a search that only needs
+    the verdict (a planner's every extension) skips the exact least distance, the same verdict
+    (`tests/collision/test_clearance.py` checks it against `plan_clearance`).
+    """
+    m = check_margin(margin)
+    skip = {frozenset(p) for p in exempt_pairs(exempt)}
+    qs = np.atleast_2d(np.asarray(q, float))
+    scene = checker.scene
+    pairs = list(scene.pairs)
+    keep = np.array([frozenset(p) not in skip for p in pairs], bool)
+    if not len(qs) or not keep.any() or m <= 0.0:
+        return True  # nothing measured, or no margin: every distance is >= 0
+    lower = _lower_bounds(checker, qs, engine)
+    lower[:, ~keep] = np.inf
+    flat = lower.ravel()
+    near = np.flatnonzero(flat < m)
+    placed = -1
+    for f in near[np.argsort(flat[near], kind="stable")]:
+        i, k = divmod(int(f), len(pairs))
+        if i != placed:
+            scene.place(checker.world_poses(qs[i]))
+            placed = i
+        a, b = pairs[k]
+        if scene.collides(a, b) or scene.distance(a, b) < m:
+            return False
+    return True
+
+
 def _lower_bounds(
     checker: RobotCollisionChecker, qs: FloatArray, engine: CollisionEngine | None
 ) -> FloatArray:

@@ -35,7 +35,7 @@ from workbench.collision.clearance import check_margin, exempt_pairs, plan_clear
 from workbench.collision.engine import CollisionEngine, EnginePathReport
 from workbench.collision.path_check import AccelerationBound
 from workbench.collision.robot_checker import RobotCollisionChecker
-from workbench.errors import InputError, WorkbenchError
+from workbench.errors import InputError, PlanLimitError, WorkbenchError
 
 if TYPE_CHECKING:
     from workbench.motion import Trajectory
@@ -121,6 +121,8 @@ def engine(
                 cache_dir=key[3],
                 progress=progress,
             )
+        except PlanLimitError:
+            raise  # a plan's time limit or cancel, not a failed build: not kept
         except WorkbenchError as exc:
             found = exc
         checker.engines[key] = found
@@ -155,6 +157,8 @@ def shared_engine(
             )
     try:
         eng = engine(checker, policy, progress=progress)
+    except PlanLimitError:
+        raise
     except WorkbenchError as exc:
         return None, f"the {policy.mode} engine could not be built ({exc})"
     if eng.sdf is not None and not eng.sdf.signed:
@@ -198,6 +202,7 @@ def check_motion(
     sampler: Callable[[FloatArray], FloatArray],
     acceleration: FloatArray | AccelerationBound,
     progress: Progress | None = None,
+    clearance: bool = True,
 ) -> EnginePathReport:
     """Return the collision report of a motion sampled at `times` [s] as q (N, dof) [rad].
 
@@ -207,7 +212,8 @@ def check_motion(
     ``acceleration * h**2 / 8`` needs a continuous velocity). Without a fast engine (exact
     mode or a fallback) every sample is checked exactly and `fallback` says why. A motion free
     of contact is then measured against `policy.margin` (`EnginePathReport.nearest`: the least
-    fcl distance over the samples and its pair, `clearance.plan_clearance`).
+    fcl distance over the samples and its pair, `clearance.plan_clearance`); with
+    `clearance` False it is not (`nearest` None: the caller asks `clearance.margin_kept`).
     """
     report = progress or (lambda f, m: None)
     eng, why = shared_engine(checker, policy, progress=lambda f, m: report(0.2 * f, m))
@@ -222,7 +228,7 @@ def check_motion(
     else:
         assert why is not None
         rep = dense_report(times, q, checker, why, progress=lambda f, m: report(0.2 + 0.7 * f, m))
-    if not rep.collision_free:
+    if not rep.collision_free or not clearance:
         return rep
     report(0.9, "clearance against the margin")
     near = plan_clearance(checker, times, q, margin=policy.margin, exempt=policy.exempt, engine=eng)

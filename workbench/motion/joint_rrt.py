@@ -9,6 +9,7 @@ configurations are (a bound on how far any checked point moves, [m]). The assemb
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import Protocol
 
 import numpy as np
@@ -17,6 +18,9 @@ from numpy.typing import ArrayLike, NDArray
 from workbench.errors import CollisionError, InputError, PlanningError
 
 FloatArray = NDArray[np.float64]
+
+#: Least time [s] between two progress reports of a search (each also checks a time limit).
+PROGRESS_S = 0.25
 
 
 class JointSpace(Protocol):
@@ -115,13 +119,16 @@ def plan_joint_rrt_connect(
     max_nodes: int = 20000,
     range_: float | None = None,
     shortcut_iterations: int = 50,
+    progress: Callable[[float, str], None] | None = None,
 ) -> tuple[FloatArray, int]:
     """Return (joints (K, dof) [rad] from q_start to q_goal, tree nodes) by RRT-Connect.
 
     seed: rng seed; max_time [s]; range_: extension step [m] of the travel bound Σ|Δq|·w
     (default 1/10 of the bound across the joint limits); samples are uniform within the
     joint limits. Raises CollisionError if an end is not valid (saying what touches),
-    PlanningError if no path is found in time.
+    PlanningError if no path is found in time. `progress(fraction of max_nodes, message)` is
+    called at the start and then at most every `PROGRESS_S` while the trees grow: a caller's
+    time limit or cancel raising there ends the search (`workbench.plan_limit`).
     """
     qs, qg = (np.asarray(q, float).reshape(-1) for q in (q_start, q_goal))
     for name, q in (("q_start", qs), ("q_goal", qg)):
@@ -140,8 +147,13 @@ def plan_joint_rrt_connect(
     if space.motion_free(qs, qg):
         return np.stack([qs, qg]), 2
     ta, tb = _Tree(qs), _Tree(qg)
-    t0 = time.perf_counter()
-    while time.perf_counter() - t0 < max_time and ta.n + tb.n < max_nodes:
+    t0 = shown = time.perf_counter()
+    report = progress or (lambda f, m: None)
+    report(0.0, "joint-space RRT-Connect")
+    while (now := time.perf_counter()) - t0 < max_time and ta.n + tb.n < max_nodes:
+        if now - shown >= PROGRESS_S:
+            shown = now
+            report((ta.n + tb.n) / max_nodes, f"joint-space RRT-Connect, {ta.n + tb.n} nodes")
         q = rng.uniform(lo, hi)
         status, i = _extend(ta, q, space, step)
         if status != _TRAPPED:

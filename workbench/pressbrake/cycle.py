@@ -34,7 +34,7 @@ from workbench.geometry.transforms import invert_transform
 from workbench.kinematics.model import RobotModel
 from workbench.kinematics.path_ik import follow_path
 from workbench.motion.sampled import SampledMotion
-from workbench.motion.trajectory import Trajectory, smooth_joint_path
+from workbench.motion.trajectory import Trajectory, sample_count, smooth_joint_path
 from workbench.pressbrake.bend_eval import home_branch
 from workbench.pressbrake.bend_setup import (
     Body,
@@ -360,6 +360,7 @@ class _PressScene:
 
 
 def _frame_times(traj: Trajectory, dt: float) -> F64:
+    sample_count(traj.duration, dt, "the bending cycle")  # the budget, before the frames
     grid = np.arange(0.0, traj.duration, dt)
     marks = np.asarray(traj.waypoint_times, float)
     return np.unique(np.concatenate([grid, marks, [traj.duration]]))
@@ -398,7 +399,11 @@ def check_cycle(
         part, steps, path, scene, model, T_world_base, T_flange_tcp, checker, policy
     )
     path, q_wp, transits = route_transits(
-        path, q_wp, spaces.of_phase, lambda q: T_world_base @ model.fk(q) @ T_flange_tcp
+        path,
+        q_wp,
+        spaces.of_phase,
+        lambda q: T_world_base @ model.fk(q) @ T_flange_tcp,
+        lambda f, m: report(0.1 + 0.1 * f, f"checking the moves between stations: {m}"),
     )
     spaces.path = path  # the same phases, in the same order, with the detours' waypoints
     report(0.2, "the jerk-limited trajectory")
@@ -412,7 +417,8 @@ def check_cycle(
     wp_times = _WaypointTimes.of(traj, path)
     frame_ctx = _FrameContext(part, steps, cell, path, scene, wp_times, q_wp, _FoldCache(part))
     part_frames = _part_frames(frame_ctx, times, q, T_tcp)
-    hits = _part_hits(part_frames, times, q, traj, path, spaces)
+    report(0.35, f"checking the part against the press and the cell in {len(times)} frames")
+    hits = _part_hits(part_frames, times, q, traj, path, spaces, report)
     report(0.55, "checking the robot against the part where it rests")
     robot_part = _robot_vs_resting_part(
         checker, path, part_frames.phase, q, part_frames.T_world_part, part_frames.states
@@ -547,10 +553,18 @@ def _part_hits(
     traj: Trajectory,
     path: CyclePath,
     spaces: _TransitSpaces,
+    report: Progress,
 ) -> list[PartHit | None]:
     """Return, per frame, the part's first collision (None: free): at the frame, or, carried,
-    on the way to the next frame."""
-    hits = check_states(part_frames.states, part_frames.T_world_part, part_frames.obstacles)
+    on the way to the next frame; `report` each batch of frames checked."""
+    n = len(times)
+    hits = check_states(
+        part_frames.states,
+        part_frames.T_world_part,
+        part_frames.obstacles,
+        progress=lambda k: report(0.35 + 0.15 * k / n, f"the part checked in {k} of {n} frames"),
+    )
+    report(0.5, "the carried part between frames")
     between = carried_hits_between(
         times,
         q,

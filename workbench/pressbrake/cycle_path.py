@@ -52,6 +52,10 @@ def follow_fractions(steps: int = FOLLOW_STEPS) -> NDArray[np.float64]:
     return np.linspace(0.0, 1.0, max(2, steps) + 1)
 
 
+#: The cycle's checked frames' spacing [s] (`CycleCell.frame_dt`).
+FRAME_DT = 0.05
+
+
 @dataclass(frozen=True, eq=False)
 class CycleCell:
     """The cycle's cell, SI: the press; where the blank lies (T_world_part of the flat blank
@@ -77,7 +81,7 @@ class CycleCell:
     settle: float = 0.3
     release: float = 0.3
     follow_steps: int = FOLLOW_STEPS
-    frame_dt: float = 0.05
+    frame_dt: float = FRAME_DT
     line_step: float = LINE_STEP
     via_home: bool = True
 

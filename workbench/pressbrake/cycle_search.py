@@ -63,8 +63,9 @@ def sweep_context(
     try:
         grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
     except InputError as exc:
-        said = exc.detail if exc.field == "grasp grid" else str(exc)
-        raise InputError(said, field="bending.grasp_grid") from None
+        said = exc.detail if exc.field in ("grasp grid", "grasp spacing") else str(exc)
+        where = ".spacing" if exc.field == "grasp spacing" else ""
+        raise InputError(said, field=f"bending.grasp_grid{where}") from None
     return SweepContext(
         part_spec,
         press,

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import shapely
+from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.pressbrake.grasp import Grasp
@@ -20,6 +21,10 @@ from workbench.sheetmetal.part import SheetMetalPart
 
 #: Most candidates a search takes (each is checked by IK at every bend it could serve).
 MAX_GRASPS = 2000
+MAX_GRID_POINTS = 100_000
+"""Most points the sequence search's grasp grid looks at, over the flanges' bounding boxes
+(each is tested against the flange's outline, one by one: a million take about ten seconds),
+counted from `bending.grasp_grid.spacing` before any is made."""
 
 
 @dataclass(frozen=True)
@@ -45,12 +50,15 @@ def grasp_grid(
 ) -> list[Grasp]:
     """Return the candidate grasps of `part` (see the module docstring).
 
-    InputError when `spacing` is not positive or the grid holds more than `MAX_GRASPS`.
+    InputError when `spacing` is not positive, the flanges' boxes hold more than
+    `MAX_GRID_POINTS` grid points (counted before any is made) or the grid more than
+    `MAX_GRASPS` candidates.
     """
     if not (np.isfinite(spacing) and spacing > 0):
         raise InputError(f"must be > 0 m, got {spacing!r}", field="grasp spacing")
     out: list[Grasp] = []
     names = [f.name for f in part.flanges] if flanges is None else list(flanges)
+    _check_grid_points(part, names, spacing)
     for name in names:
         poly = part.flanges[part.flange_index(name)].polygon
         shape = shapely.Polygon(poly)
@@ -76,3 +84,28 @@ def grasp_grid(
             field="grasp grid",
         )
     return out
+
+
+def _grid_points(extents: NDArray[np.float64], spacing: float) -> float:
+    """Return how many points `np.arange(lo + spacing / 2, hi, spacing)` makes per axis of
+    each box of `extents` (K, 2) [m], multiplied per box and summed (a float: no overflow)."""
+    per_axis = np.maximum(np.ceil(extents / spacing - 0.5), 0.0)
+    return float(np.prod(per_axis, axis=1).sum())
+
+
+def _check_grid_points(part: SheetMetalPart, names: Sequence[str], spacing: float) -> None:
+    """Refuse a grid of more than `MAX_GRID_POINTS` points, naming the least spacing that fits."""
+    polys = [part.flanges[part.flange_index(n)].polygon for n in names]
+    extents = np.array([p.max(axis=0) - p.min(axis=0) for p in polys], float).reshape(-1, 2)
+    n = _grid_points(extents, spacing)
+    if n <= MAX_GRID_POINTS:
+        return
+    least = spacing
+    while _grid_points(extents, least) > MAX_GRID_POINTS:
+        least *= 1.05
+    raise InputError(
+        f"{spacing * 1e3:g} mm makes {n:.3g} grid points on the flanges, above the budget of "
+        f"{MAX_GRID_POINTS:,} (workbench.pressbrake.grasp_grid.MAX_GRID_POINTS); use a spacing "
+        f"of at least {least * 1e3:.2g} mm",
+        field="grasp spacing",
+    )

@@ -11,7 +11,7 @@ over the whole flange and would meet a punch whose flank is a degree off the fla
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import fcl
@@ -73,6 +73,10 @@ def _solid_hits(state: FoldedState, T_world_part: F64, obstacles: Obstacles, idx
     return shape.mesh is not None and bool(winding_number(shape.mesh, p)[0] > 0.5)
 
 
+#: Frames `check_states` checks between two progress reports (each about 0.1 s here).
+PROGRESS_FRAMES = 100
+
+
 def frame_hits(
     state: FoldedState, T_world_part: F64, obstacles: Obstacles
 ) -> list[tuple[int, int, int]]:
@@ -94,14 +98,18 @@ def check_states(
     states: Sequence[FoldedState],
     T_world_part: F64,
     obstacles: Sequence[Obstacles],
+    progress: Callable[[int], None] | None = None,
 ) -> list[PartHit | None]:
     """Return, per frame, the first collision of the part (None when free).
 
     Frame i: the part folded as `states[i]` at `T_world_part[i]` (4, 4) [m] among
-    `obstacles[i]` (what the press and cell are at that instant).
+    `obstacles[i]` (what the press and cell are at that instant). `progress(frames done)`
+    every `PROGRESS_FRAMES` frames.
     """
     out: list[PartHit | None] = []
     for state, T, obs in zip(states, T_world_part, obstacles, strict=True):
+        if progress is not None and len(out) % PROGRESS_FRAMES == 0:
+            progress(len(out))
         keep = [(fl, o) for _, fl, o in frame_hits(state, T[None], obs)]
         if not keep:
             out.append(None)

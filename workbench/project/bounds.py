@@ -158,6 +158,10 @@ LINEAR_TOLERANCE_MM = (0.001, 10.0)
 ANGULAR_TOLERANCE_DEG = (0.5, 60.0)
 """STEP tessellation: the largest angle between the normals of neighbouring triangles on one face [deg]."""
 
+# -- planning ------------------------------------------------------------------------------------------
+PLAN_TIME_S_OPEN = (0.0, 86_400.0)
+"""planning.time_limit: how long one workflow's planning may run [s]: > 0, at most a day."""
+
 # -- work budgets (refused before the work starts, with the estimate) ---------------------------------
 LATENCY_MAX_CYCLES = 100
 """Polishing: latency x control rate, in whole control cycles (the orientation loop's
@@ -181,6 +185,7 @@ BUDGETS = (
     "workbench.cad.dxf_checks.MAX_EXPANDED_ENTITIES",
     "workbench.cad.dxf_checks.MAX_SPLINE_DEGREE",
     "workbench.cad.dxf_checks.MAX_BEND_LINES",
+    "workbench.pressbrake.grasp_grid.MAX_GRID_POINTS",
 )
 """The work budgets, each a named setting next to the work it bounds (the domain packages
 cannot import the project's modules): work whose estimate exceeds one is refused before it

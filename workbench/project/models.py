@@ -40,6 +40,7 @@ from workbench.project.common import (
     StrictModel,
     ToolSize3mm,
 )
+from workbench.project.planning import PlanningSpec
 from workbench.project.polishing import PolishingSpec
 from workbench.project.target_configuration import ConfigurationSpec, check_turns
 from workbench.project.units import DEG, MM, pose_to_matrix
@@ -434,6 +435,7 @@ class Project(StrictModel):
     work_objects: Annotated[list[io_.WorkObjectSpec], Field(max_length=B.MAX_ITEMS)] | None = None
     io: io_.IOSpec | None = None  # digital I/O, gripper, sync signals
     cad: CadSpec | None = None  # STEP tessellation tolerances; absent: 0.05 mm, 5 deg
+    planning: PlanningSpec | None = None  # each workflow's planning time limit; absent: 600 s
 
     @model_validator(mode="after")
     def _references(self) -> Project:

@@ -16,7 +16,9 @@ from pydantic import AfterValidator, Field, model_validator
 
 from workbench.errors import InputError
 from workbench.geometry.polygon import signed_area
+from workbench.motion.trajectory import MAX_SAMPLES
 from workbench.pressbrake.airbend import air_bend_radius
+from workbench.pressbrake.cycle_path import FRAME_DT
 from workbench.pressbrake.die import Die
 from workbench.pressbrake.press import (
     BackGauge,
@@ -207,6 +209,38 @@ class PressSpec(StrictModel):
         default_factory=lambda: [300.0, 80.0]
     )
     beam_height: PressFrameMM = 250.0
+
+    @model_validator(mode="after")
+    def _ram_frames(self) -> PressSpec:
+        """Refuse a ram speed whose stroke takes more checked frames of the cycle
+        (`pressbrake.cycle_path.FRAME_DT` apart) than one trajectory may have
+        (`motion.trajectory.MAX_SAMPLES`), naming the least speed that fits: the work is
+        counted here, before a cycle allocates its frames."""
+        longest = FRAME_DT * (MAX_SAMPLES - 2)  # [s] of one stroke
+        v_depth = self.die.v_opening / 2.0 / np.tan(self.die.angle * DEG / 2.0)
+        strokes = {
+            "approach_speed": self.ram.open,
+            "bending_speed": v_depth,
+            "return_speed": self.ram.open + v_depth,
+        }
+        problems: list[tuple[Loc, str, object]] = []
+        for name, stroke in strokes.items():
+            speed = getattr(self.ram, name)
+            if stroke / speed > longest:
+                problems.append(
+                    (
+                        ("ram", name),
+                        f"{speed:g} mm/s takes {stroke / speed:.3g} s over its {stroke:.3g} mm"
+                        f" stroke: {stroke / speed / FRAME_DT:.3g} checked frames every"
+                        f" {FRAME_DT:g} s, above the budget of {MAX_SAMPLES:,}"
+                        " (workbench.motion.trajectory.MAX_SAMPLES); use at least"
+                        f" {stroke / longest:.2g} mm/s",
+                        speed,
+                    )
+                )
+        if problems:
+            raise field_error(problems)
+        return self
 
     @model_validator(mode="after")
     def _unique_stations(self) -> PressSpec:

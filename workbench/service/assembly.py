@@ -33,6 +33,7 @@ from workbench.project.assembly import AssemblyPartSI, AssemblySI, AssemblySpec,
 from workbench.project.cad import step_tolerance
 from workbench.project.program_io import program_settings
 from workbench.service.mesh_files import load_mesh_file
+from workbench.service.plan_limits import limited
 from workbench.service.robot_setup import build_robot
 from workbench.service.section import SectionService
 
@@ -176,6 +177,7 @@ class AssemblyService(SectionService[AssemblySpec]):
         return self.cell.interference(name, T)
 
     # -- planning ------------------------------------------------------------------------
+    @limited("the assembly part plan")
     def plan_part(
         self,
         name: str,
@@ -199,6 +201,7 @@ class AssemblyService(SectionService[AssemblySpec]):
         self.last_part_plan = plan
         return plan
 
+    @limited("the assembly sequence")
     def plan_sequence(
         self,
         parts: list[str] | None = None,

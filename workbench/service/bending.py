@@ -36,6 +36,7 @@ from workbench.pressbrake.transfer_plan import placements, plan_transfer
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.project.program_io import program_settings
 from workbench.service import bending_process as process
+from workbench.service.plan_limits import limited
 from workbench.service.section import SectionService
 from workbench.sheetmetal import FoldedState, OBBTree, SheetMetalPart
 from workbench.sheetmetal.check_cost import CheckCost, check_cost
@@ -184,6 +185,7 @@ class BendingService(SectionService[BendingSpec]):
         si = self.si()
         return transfer_poses(si.transfer, si.die, last, self.part, si.grasp)
 
+    @limited("the bending plan")
     def plan(self, *, progress: Progress | None = None) -> BendingResult:
         """Plan the project's bending.
 
@@ -191,9 +193,8 @@ class BendingService(SectionService[BendingSpec]):
         (`BendingCycle`: pick, every bend with the ram and back-gauge, regrips, transfer,
         pallet; every frame checked; `bending_process.plan_cycle`). Without: each bend placed
         on the die and the checked transfer to the pallet (`BendingPlan`,
-        `pressbrake.transfer_plan.plan_transfer`). `progress(fraction, message)` reports the
-        stages. Either is a `BendingResult`.
-        """
+        `pressbrake.transfer_plan.plan_transfer`), a `BendingResult`. `progress(fraction,
+        message)` reports the stages; `cancel()` or `planning.time_limit` ends it."""
         plan: BendingResult
         si = self.si()
         if si.press is not None:

@@ -40,6 +40,7 @@ from workbench.project.paths import shown_path
 from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
+from workbench.service.plan_limits import limited
 from workbench.service.section import SectionService
 
 if TYPE_CHECKING:
@@ -185,12 +186,12 @@ class PolishingService(SectionService[PolishingSpec]):
         return self.si.control
 
     # -- path ------------------------------------------------------------------------------
+    @limited("the polishing path")
     def plan_path(self, *, progress: Progress | None = None) -> PolishingPath:
         """Return the `PolishingPath` of the section's pattern, step and spacing (world, m).
 
         The path lies on the fitted surface; its coverage is measured for `tool_radius`.
-        Kept as `last_path`.
-        """
+        Kept as `last_path`; `cancel()` or `planning.time_limit` ends it."""
         report = progress or (lambda f, m: None)
         si = self.si
         report(0.0, "loading and fitting the workpiece")
@@ -231,6 +232,7 @@ class PolishingService(SectionService[PolishingSpec]):
         return tool_frames(p.commanded, p.path.tool_z, self.T_world_workpiece[:3, 0])
 
     # -- robot motion ----------------------------------------------------------------------
+    @limited("the polishing motion")
     def plan_motion(
         self, *, dt: float | None = None, progress: Progress | None = None
     ) -> MotionPlan:
@@ -239,8 +241,7 @@ class PolishingService(SectionService[PolishingSpec]):
         IK in one arm configuration (the one nearest the current joints at the first point);
         unreachable points are named (`UnreachableError`). The trajectory starts at the first
         lead-in point. Samples every `dt` [s] (default: at most ~600 samples) are checked
-        for limits and collisions. Kept as `last_motion`; `export_program` writes it.
-        """
+        for limits and collisions. Kept as `last_motion`; `export_program` writes it."""
         report = progress or (lambda f, m: None)
         pp = self._path()
         setup = self.wb.setup

@@ -35,6 +35,7 @@ from workbench.service.calibration import CalibrationService
 from workbench.service.cell import CellBody, build_cell, press_cell
 from workbench.service.collision_engine import CollisionService
 from workbench.service.motion_plan import MotionPlan, Progress, plan_project
+from workbench.service.plan_limits import limited
 from workbench.service.polishing import PolishingService
 from workbench.service.project_files import check_named_files
 from workbench.service.project_zip import open_zip, project_zip
@@ -252,6 +253,7 @@ class Workbench:
     )
 
     # -- motion -----------------------------------------------------------------------
+    @limited("the motion plan")
     def plan_motion(self, *, dt: float = 0.01, progress: Progress | None = None) -> MotionPlan:
         """Return the plan of the project's program from its start (not the current joints; IK in
         each target's stored configuration, stored where missing), kept as `last_plan`."""
