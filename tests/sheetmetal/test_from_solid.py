@@ -13,6 +13,7 @@ Refusals name the face: a block, a fillet, B-spline faces, a second thickness.
 from __future__ import annotations
 
 import functools
+import json
 
 import numpy as np
 import pytest
@@ -46,8 +47,19 @@ def _recognised(name: str, base: str | None = None) -> tuple[SheetBrep, Recognis
 
 
 def _base_index(p: Profile) -> int:
-    """Return the profile index of the largest flange (the default base; first on ties)."""
-    return int(np.argmax(np.round(np.asarray(p.runs) * 1e6)))
+    """Return the profile index of the default base, by brute force over the chain of flanges:
+    the fewest bends to the farthest end, then the most bends (an inner flange), then the
+    longest run, then the first."""
+    n = len(p.runs)
+    return min(
+        range(n),
+        key=lambda i: (
+            max(abs(i - j) for j in range(n)),
+            -sum(0 <= j < n for j in (i - 1, i + 1)),
+            -round(p.runs[i] * 1e6),
+            i,
+        ),
+    )
 
 
 @pytest.mark.parametrize("name", sorted(PROFILES))
@@ -228,3 +240,23 @@ def test_solids_that_are_not_sheet_metal_are_refused_naming_the_face(
     brep = brep_of_step(step_of(make()))  # type: ignore[operator]
     with pytest.raises(MeshError, match=message):
         recognise_part(brep, where="test")
+
+
+@pytest.mark.parametrize("name", ["u_channel", "pan", "seed_part"])
+def test_the_default_base_is_the_hand_written_parts_base(name: str) -> None:
+    """The rule a recognised part's base follows (`central_flange`) picks, on the bend tree of
+    each hand-written example part, the flange its author made the base (the first); the old
+    rule, the largest flange, picks the U-channel's tall flange A instead."""
+    from pathlib import Path
+
+    from workbench.sheetmetal.from_solid import central_flange
+
+    spec = json.loads(
+        (Path(__file__).parents[2] / "projects" / "parts" / f"{name}.json").read_text()
+    )
+    names = [f["name"] for f in spec["flanges"]]
+    joined = [[b["parent"], b["child"]] for b in spec["bends"]]
+    areas = [shapely.Polygon(f["polygon"]).area * 1e-6 for f in spec["flanges"]]
+    assert central_flange(names, joined, areas) == names[0]
+    # the order given does not matter: reversed lists give the same base
+    assert central_flange(names[::-1], joined[::-1], areas[::-1]) == names[0]

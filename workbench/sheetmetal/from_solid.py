@@ -2,8 +2,11 @@
 
 `sheet_faces` (solid_faces.py) finds the flanges and bends; here they become the part model:
 
-- the base is the largest flange (or a named one); the other flanges hang from it through the
-  bends (a tree: a closed ring of bends is refused);
+- the base is a named flange or, by default, the centre of the bend tree: the flange with the
+  fewest bends to its farthest flange (ties: the most bends of its own, then the largest, then
+  the lowest name), so a U-channel's base is its web whichever flange is the largest, as a
+  hand-written part names it (docs/sheetmetal.md, "One part, one plan"); the other flanges
+  hang from it through the bends (a tree: a closed ring of bends is refused);
 - each flange's frame has z along its top face's outward normal and its polygon on the
   mid-surface: the top face's outer loop projected there. The base's top is the side most of
   its bends turn towards (ties: the side facing the model's +x, +y or +z, whichever the normal
@@ -146,6 +149,34 @@ def _child_polygon(
     return (pts - pts[0]) @ np.array([[d[0], -d[1]], [d[1], d[0]]]), across
 
 
+def central_flange(names: list[str], joined: list[list[str]], areas: list[float]) -> str:
+    """Return the default base: the centre of the bend tree (the flange whose farthest flange
+    is the fewest bends away), ties broken by most bends, then largest area (to `TOL`², m²),
+    then the first name. `joined`: per bend, the two flange names it joins."""
+    near: dict[str, set[str]] = {n: set() for n in names}
+    for a, b in joined:
+        near[a].add(b)
+        near[b].add(a)
+
+    def farthest(start: str) -> int:
+        seen, ring, hops = {start}, [start], 0
+        while ring:
+            ring = [m for n in ring for m in sorted(near[n]) if m not in seen]
+            seen.update(ring)
+            hops += 1 if ring else 0
+        return hops if len(seen) == len(names) else len(names)  # unjoined: refused later
+
+    return min(
+        names,
+        key=lambda n: (
+            farthest(n),
+            -len(near[n]),
+            -round(areas[names.index(n)] / TOL**2),
+            names.index(n),
+        ),
+    )
+
+
 def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> RecognisedPart:
     """Return the part recognised in `brep` (SI); MeshError names the face and `where` when it
     is not a sheet-metal part, InputError names `base` when no flange has that name."""
@@ -155,8 +186,7 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
     faces_of = {n: (f.first, f.second) for n, f in zip(names, sf.flanges, strict=True)}
     joined = _joins(brep, sf, {i: n for n, pair in faces_of.items() for i in pair}, where)
     if base is None:
-        areas = [brep.faces[f.first - 1].area for f in sf.flanges]
-        base = names[int(np.argmax(np.round(np.asarray(areas) / TOL**2)))]
+        base = central_flange(names, joined, [brep.faces[f.first - 1].area for f in sf.flanges])
     elif base not in names:
         raise InputError(
             f"no flange {base!r}; the part's flanges are {', '.join(names)}", field="base"
