@@ -129,7 +129,9 @@ def _parser() -> argparse.ArgumentParser:
     part.add_argument("--bend-layer", help="the DXF layer of the bend lines (default BEND)")
     part.add_argument("--inner-radius", type=float, help="inner bend radius [mm]")
     part.add_argument("--k-factor", type=float, help="K for every bend (default: Table 1)")
-    part.add_argument("--base", help="the base flange, e.g. F2 (STEP; default: the largest)")
+    part.add_argument(
+        "--base", help="the base flange, e.g. F2 (STEP; default: the centre of the bend tree)"
+    )
     cli_calibrate.add_parser(sub)
     cli_touchup.add_parser(sub)
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
