@@ -24,6 +24,7 @@ __all__ = [
     "StepTolerance",
     "faces_of",
     "is_step",
+    "mesh_step_shape",
     "read_step_mesh",
     "read_step_shape",
     "step_properties",
@@ -119,7 +120,12 @@ def read_step_mesh(data: bytes, name: str, field: str, tolerance: StepTolerance)
     MeshError naming `field` for a file that is not STEP, unreadable, holds no face (only
     curves or points), or does not tessellate (`tessellate`).
     """
-    shape = read_step_shape(data, name, field)
+    return mesh_step_shape(read_step_shape(data, name, field), name, field, tolerance)
+
+
+def mesh_step_shape(shape: Any, name: str, field: str, tolerance: StepTolerance) -> trimesh.Trimesh:
+    """Return the tessellated shape [mm] read from the STEP file `name` (`read_step_mesh`'s
+    second half: MeshError naming `field` when it holds no face or does not tessellate)."""
     if not faces_of(shape):
         raise MeshError(
             f"{field}: STEP file {name!r} holds no surfaces or solids (only curves or points);"
