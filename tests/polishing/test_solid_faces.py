@@ -189,3 +189,21 @@ def test_full_plan_and_export_with_faces(tmp_path: Path, slab_file: Path) -> Non
     plan = wb.polishing.plan_motion()
     assert plan.ok, plan.summary()
     assert wb.polishing.robot_programs(plan)
+
+
+def test_cli_lists_picks_and_saves(
+    tmp_path: Path, slab_file: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from workbench.cli import main
+    from workbench.project.io import load_project
+
+    project = _project(tmp_path, slab_file, None)
+    allow = ["--allow-dir", str(REPO), "--allow-dir", str(slab_file.parent)]
+    out = tmp_path / "picked.json"
+    assert main(["polishing-faces", str(project), "--pick", "5", "--out", str(out), *allow]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[5].startswith("* 5: plane, 24000.0 mm² at (0.0, 0.0, 20.0) mm")
+    assert sum(line.startswith("*") for line in lines) == 1
+    assert load_project(out).polishing.faces == [5]  # type: ignore[union-attr]
+    assert main(["polishing-faces", str(project), "--pick", "9", "--out", str(out), *allow]) == 2
+    assert "polishing.faces: face 9" in capsys.readouterr().err

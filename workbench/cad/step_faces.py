@@ -50,7 +50,7 @@ class StepFace:
 
     def label(self) -> str:
         """Return the face as the list shows it: "3: plane, 1200 mm² at (…)"."""
-        c = ", ".join(f"{x:.1f}" for x in self.centroid)
+        c = ", ".join(f"{round(x, 1) + 0.0:.1f}" for x in self.centroid)  # no "-0.0"
         return f"{self.index}: {self.kind}, {self.area:.1f} mm² at ({c}) mm"
 
 
@@ -82,7 +82,7 @@ def face_table(shape: Any) -> tuple[StepFace, ...]:
         if kind == GeomAbs_Plane:
             d = surface.Plane().Axis().Direction()
             sign = -1.0 if face.Orientation() == TopAbs_REVERSED else 1.0
-            normal = (sign * d.X(), sign * d.Y(), sign * d.Z())
+            normal = (sign * d.X() + 0.0, sign * d.Y() + 0.0, sign * d.Z() + 0.0)  # no -0.0
         out.append(
             StepFace(
                 index=i,
