@@ -15,7 +15,8 @@ from numpy.typing import NDArray
 from workbench.errors import InputError, WorkbenchError
 from workbench.gui.fields import NumberField, format_number, schema_range
 from workbench.gui.handles import Removable
-from workbench.gui.notify import guarded
+from workbench.gui.notify import guarded, notify
+from workbench.gui.polishing_faces import FacesChecklist
 from workbench.gui.program_download import ProgramDownload
 from workbench.gui.progress import busy
 from workbench.gui.uploads import WORKPIECES, safe_name
@@ -72,6 +73,8 @@ class PolishingPanel:
         self.units = g.add_dropdown(
             "Units", options=self.svc.mesh_units, initial_value=spec.units, hint="of the mesh file"
         )
+        # A STEP solid's faces to polish (none listed for a mesh file).
+        self.faces = FacesChecklist(app.server, self.svc, guard, self._on_faces)
         self.pattern = g.add_dropdown(
             "Pattern", options=self.svc.patterns, initial_value=spec.pattern
         )
@@ -251,13 +254,36 @@ class PolishingPanel:
             raise InputError(
                 f"workpiece {name!r}: give an STL, OBJ, PLY or STEP file (the face to polish)"
             )
+        picked = None
         with WORKPIECES.new_file(self.app.wb, name, up.content) as path:
-            self.svc.load_workpiece(path, units=str(self.units.value))
+            try:
+                self.svc.load_workpiece(path, units=str(self.units.value))
+            except WorkbenchError as exc:
+                if exc.field != "polishing.faces":
+                    raise
+                picked = self.svc.suggested_faces(path)  # a closed solid: a first pick
+                self.svc.set_faces(picked, path)
+        self.faces.rebuild()
+        if picked is not None:
+            notify(
+                self.server,
+                event.client,
+                "Polishing",
+                f"{name} is a solid: face {picked[0]} (its largest) is picked; tick the faces"
+                " to polish under Faces to polish",
+                color="blue",
+            )
         self._show_workpiece()
         self.path_info.content = ""
         self.sim_info.content = ""
         self.sim_button.disabled = True
         self.download.disabled = True
+
+    def _on_faces(self) -> None:
+        """The service took new faces to polish: show the new surface, drop old results."""
+        self._show_workpiece()
+        self._clear_results()
+        self.plan_button.disabled = False
 
     def _on_parameter(self, event: viser.GuiEvent) -> None:
         if event.client is None:
@@ -364,6 +390,8 @@ class PolishingPanel:
         for f in self.fields:
             f.remove()
         self.fields.clear()
+        if getattr(self, "faces", None) is not None:
+            self.faces.remove()
         for h in [*self.plots, *self.nodes.values(), *self.handles]:
             h.remove()
         if getattr(self, "root", None) is not None:

@@ -9,6 +9,7 @@ A mixin of `PolishingService` (kept apart for the service's size): it uses the s
 from __future__ import annotations
 
 from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from workbench.cad.step import is_step
@@ -22,8 +23,6 @@ from workbench.project.paths import shown_path
 from workbench.project.polishing import PolishingSpec, _validated
 
 if TYPE_CHECKING:
-    from pathlib import Path
-
     from workbench.service.workbench import Workbench
 
 
@@ -43,41 +42,52 @@ class SolidFaces:
 
         def load_workpiece(self, path: Any = None, *, units: str | None = None) -> Any: ...
 
-    def faces(self) -> tuple[StepFace, ...]:
-        """Return every face of the workpiece's STEP file: index, surface type, area [mm²],
-        centroid [mm] (the file's frame) and a planar face's normal (`StepFace`).
+    def faces(self, path: str | Path | None = None) -> tuple[StepFace, ...]:
+        """Return every face of the workpiece's STEP file (or of `path`): index, surface type,
+        area [mm²], centroid [mm] (the file's frame) and a planar face's normal (`StepFace`).
 
         InputError naming `polishing.workpiece` when the workpiece is a mesh file."""
-        if self._fitted is not None and self._fitted.solid is not None:
+        if path is None and self._fitted is not None and self._fitted.solid is not None:
             return self._fitted.solid.faces
-        spec = self.spec
-        if not is_step(spec.workpiece):
+        file = str(self.spec.workpiece if path is None else path)
+        if not is_step(file):
             raise InputError(
-                f"{shown_path(spec.workpiece)!r} is a mesh file: it has no faces to pick; "
+                f"{shown_path(file)!r} is a mesh file: it has no faces to pick; "
                 "give a STEP file to polish some of its faces",
                 field="polishing.workpiece",
             )
-        real = self._resolve(spec.workpiece)
+        real = self._resolve(file)
         tol = step_tolerance(self.wb.project.cad)
         try:
-            read = read_step_faces(real.read_bytes(), shown_path(spec.workpiece), "workpiece", tol)
+            read = read_step_faces(real.read_bytes(), shown_path(file), "workpiece", tol)
         except WorkbenchError as exc:
             raise exc.within("polishing.workpiece") from exc
         return read.faces
 
-    def set_faces(self, faces: Sequence[int] | None) -> None:
-        """Polish the faces `faces` (indices into `faces()`) of the STEP solid; None: the whole
-        file. The workpiece is loaded again with them; on an error (`polishing.faces` out of
-        range, empty, repeated, or a mesh file) the section and workpiece stay as they were."""
+    def set_faces(self, faces: Sequence[int] | None, path: str | Path | None = None) -> None:
+        """Polish the faces `faces` (indices into `faces()`) of the STEP solid (of the file
+        `path`, which becomes the workpiece); None: the whole file. The workpiece is loaded
+        again; on an error (`polishing.faces` out of range, empty, repeated, or a mesh file)
+        the section and workpiece stay as they were."""
         spec = self.spec
-        old = spec.faces
+        old = (spec.workpiece, spec.faces)
         new = _validated({**spec.model_dump(), "faces": None if faces is None else list(faces)})
+        spec.workpiece = spec.workpiece if path is None else str(path)
         spec.faces = new.faces
         try:
             self.load_workpiece()
         except WorkbenchError:
-            spec.faces = old
+            spec.workpiece, spec.faces = old
             raise
+
+    def suggested_faces(self, path: str | Path | None = None) -> list[int]:
+        """Return a first pick for a solid (the user changes it): its largest face, of faces
+        within 1 % of that area the highest in the world (a slab's top, not its bottom)."""
+        faces = self.faces(path)
+        big = max(f.area for f in faces)
+        R = self.spec.to_si().T_world_workpiece[:3, :3]
+        best = max((f for f in faces if f.area >= 0.99 * big), key=lambda f: (R @ f.centroid)[2])
+        return [best.index]
 
     def plan_checker(self) -> RobotCollisionChecker:
         """Return the checker plans use: the project's, or with a solid workpiece the cell plus
