@@ -207,3 +207,18 @@ def test_cli_lists_picks_and_saves(
     assert load_project(out).polishing.faces == [5]  # type: ignore[union-attr]
     assert main(["polishing-faces", str(project), "--pick", "9", "--out", str(out), *allow]) == 2
     assert "polishing.faces: face 9" in capsys.readouterr().err
+
+
+def test_suggested_face_and_a_new_solid_file(tmp_path: Path, slab_file: Path) -> None:
+    wb = _open(tmp_path, slab_file)
+    wb.project.polishing.workpiece = str(REPO / "web_assets/workpieces/panel.stl")
+    # The slab's top and bottom have the same area: the top (higher in the world) is suggested.
+    picked = wb.polishing.suggested_faces(slab_file)
+    assert picked == [_top(wb.polishing.faces(slab_file))]
+    with pytest.raises(InputError, match="indices 0 to 5"):
+        wb.polishing.set_faces([7], slab_file)
+    assert wb.project.polishing.workpiece.endswith("panel.stl")  # refused: nothing changed
+    wb.polishing.set_faces(picked, slab_file)
+    assert wb.project.polishing.workpiece == str(slab_file)
+    assert wb.project.polishing.faces == picked
+    assert wb.polishing.report.n_faces == 2  # the top face's two triangles
