@@ -153,6 +153,7 @@ def test_pick_the_faces_of_a_step_solid(launch, tmp_path: Path) -> None:  # type
     top.first.click()
     wait_for(lambda: app.wb.project.polishing.faces == [5], what="the picked face")
     page.get_by_text("Workpiece").first.wait_for()
+    wait_for(lambda: "solid" in app.polishing.nodes, what="the whole solid drawn")
     page.get_by_role("button", name="Plan path").click()
     wait_for(lambda: svc.last_path is not None, timeout=60, what="the path on the server")
     proc = svc.last_path.path.points[svc.last_path.path.is_process]

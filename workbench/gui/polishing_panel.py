@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 
 MM = 1e-3
 SURFACE_COLOR = (120, 170, 220)
+SOLID_COLOR = (150, 150, 150)  # the rest of a STEP solid whose faces are polished
 PATH_COLOR = (30, 60, 200)
 AXIS_COLOR = (240, 140, 20)
 LEAD_IN_COLOR = (20, 170, 60)
@@ -190,6 +191,21 @@ class PolishingPanel:
                 faces.astype(np.uint32),
                 color=SURFACE_COLOR,
                 side="double",
+                cast_shadow=False,
+                receive_shadow=False,
+            ),
+        )
+        solid = self.svc.solid_mesh()  # a STEP solid: drawn whole, the picked faces over it
+        self._set_node(
+            "solid",
+            None
+            if solid is None
+            else lambda: self.server.scene.add_mesh_simple(
+                "/polishing/solid",
+                solid[0].astype(np.float32),
+                solid[1].astype(np.uint32),
+                color=SOLID_COLOR,
+                opacity=0.6,
                 cast_shadow=False,
                 receive_shadow=False,
             ),

@@ -12,6 +12,9 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+from numpy.typing import NDArray
+
 from workbench.cad.step import is_step
 from workbench.cad.step_faces import StepFace, read_step_faces
 from workbench.collision.robot_checker import RobotCollisionChecker
@@ -79,6 +82,14 @@ class SolidFaces:
         except WorkbenchError:
             spec.workpiece, spec.faces = old
             raise
+
+    def solid_mesh(self) -> tuple[NDArray[np.float64], NDArray[np.int64]] | None:
+        """Return (vertices [m], faces) of the whole solid in the world for display, or None
+        when the workpiece is a surface file (no faces picked)."""
+        fitted = self._fitted
+        if fitted is None or fitted.solid is None:
+            return None
+        return np.asarray(fitted.solid.mesh.vertices), np.asarray(fitted.solid.mesh.faces)
 
     def suggested_faces(self, path: str | Path | None = None) -> list[int]:
         """Return a first pick for a solid (the user changes it): its largest face, of faces
