@@ -191,6 +191,7 @@ def test_full_plan_and_export_with_faces(tmp_path: Path, slab_file: Path) -> Non
     assert wb.polishing.robot_programs(plan)
 
 
+@pytest.mark.slow  # opens the cell's workbench (~1 s)
 def test_cli_lists_picks_and_saves(
     tmp_path: Path, slab_file: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -209,6 +210,7 @@ def test_cli_lists_picks_and_saves(
     assert "polishing.faces: face 9" in capsys.readouterr().err
 
 
+@pytest.mark.slow  # opens the cell's workbench (~1 s)
 def test_suggested_face_and_a_new_solid_file(tmp_path: Path, slab_file: Path) -> None:
     wb = _open(tmp_path, slab_file)
     wb.project.polishing.workpiece = str(REPO / "web_assets/workpieces/panel.stl")
