@@ -50,6 +50,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     (
         "cli_calibrate",
         "cli_touchup",
+        "cli_polishing",
     ),  # commands of the CLI in their own modules (cli.py stays small)
     ("cli",),
     ("__main__", "__init__"),

@@ -9,7 +9,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from workbench import cli_calibrate, cli_touchup
+from workbench import cli_calibrate, cli_polishing, cli_touchup
 from workbench.errors import InputError, ServerError, WorkbenchError
 from workbench.project.paths import read_regular_file
 
@@ -134,6 +134,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     cli_calibrate.add_parser(sub)
     cli_touchup.add_parser(sub)
+    cli_polishing.add_parser(sub)
     cache = sub.add_parser("cache", help="the disk cache of distance fields and sphere fits")
     cache_sub = cache.add_subparsers(dest="cache_command", required=True)
     cache_sub.add_parser(
@@ -389,6 +390,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return cli_calibrate.run(args)
         if args.command == "touchup":
             return cli_touchup.run(args)
+        if args.command == "polishing-faces":
+            return cli_polishing.run(args)
         return _check(args)
     except WorkbenchError as exc:
         first = str(exc).strip().splitlines()

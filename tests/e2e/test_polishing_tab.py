@@ -123,3 +123,40 @@ def test_upload_a_workpiece_and_refuse_a_bad_one(launch, tmp_path: Path) -> None
     wait_for(lambda: svc.report.n_faces == len(mesh.faces), what="the new workpiece")
     page.get_by_text(f"{len(mesh.faces)} triangles").first.wait_for()
     assert app.wb.project.polishing.workpiece.endswith("coarse.stl")
+
+
+def test_pick_the_faces_of_a_step_solid(launch, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    import json
+    import shutil
+
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox
+    from OCP.gp import gp_Pnt
+
+    from workbench.cad.step import write_step
+
+    box = BRepPrimAPI_MakeBox(gp_Pnt(-100, -60, 0), 200.0, 120.0, 20.0).Shape()
+    (tmp_path / "slab.step").write_bytes(write_step(box, "slab"))
+    shutil.copy(ROOT / "web_assets/parts/fixture_block.step", tmp_path / "fixture_block.step")
+    data = json.loads((ROOT / "projects/step_cell.json").read_text())
+    for obj in data["cell"]["objects"]:
+        if "path" in obj:
+            obj["path"] = "fixture_block.step"
+    data["polishing"]["workpiece"] = "slab.step"  # a closed solid, no faces picked yet
+    (tmp_path / "slab_cell.json").write_text(json.dumps(data))
+
+    app, page = launch(tmp_path / "slab_cell.json")
+    svc = app.wb.polishing
+    page.get_by_role("tab", name="Polishing").click()
+    page.get_by_text("closed STEP solid").first.wait_for()  # why it is not loaded yet
+    page.get_by_text("6 faces; tick the ones to polish").first.wait_for()
+    top = page.get_by_text("5: plane, 24000 mm²")
+    top.first.click()
+    wait_for(lambda: app.wb.project.polishing.faces == [5], what="the picked face")
+    page.get_by_text("Workpiece").first.wait_for()
+    wait_for(lambda: "solid" in app.polishing.nodes, what="the whole solid drawn")
+    page.get_by_role("button", name="Plan path").click()
+    wait_for(lambda: svc.last_path is not None, timeout=60, what="the path on the server")
+    proc = svc.last_path.path.points[svc.last_path.path.is_process]
+    assert np.allclose(proc[:, 2], 0.340 + 0.020, atol=1e-6)  # on the slab's top face
+    steady_picture(lambda: canvas_png(page))
+    save_screenshot(page, "polishing_faces.png")

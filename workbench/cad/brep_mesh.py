@@ -74,7 +74,8 @@ def tessellate(shape: Any, linear_tolerance: float, angular_tolerance: float) ->
     welded, so a closed solid gives a watertight mesh with outward normals. The exact surface
     normals at the vertices, on the side the triangles face, are in
     ``mesh.vertex_attributes["surface_normals"]`` (V, 3) (a vertex on an edge between faces
-    gets one face's; the polishing fit uses them). MeshError when
+    gets one face's; the polishing fit uses them); each triangle's face (its index in
+    `faces_of`) in ``mesh.face_attributes["step_face"]``. MeshError when
     a face cannot be tessellated, the tolerance cannot be reached, or the mesh would exceed
     `MAX_TRIANGLES`.
     """
@@ -98,8 +99,8 @@ def tessellate(shape: Any, linear_tolerance: float, angular_tolerance: float) ->
             f" {linear_tolerance:g} mm asked for, after {REMESH_TRIES} tries; raise the linear"
             " tolerance (the project's 'cad' section) or repair the part's surfaces"
         )
-    vertices, normals, triangles, offset = [], [], [], 0
-    for face, reversed_, matrix, tri in meshed:
+    vertices, normals, triangles, face_ids, offset = [], [], [], [], 0
+    for k, (face, reversed_, matrix, tri) in enumerate(meshed):  # every face, in faces_of order
         n = tri.NbNodes()
         pts = np.array([tri.Node(i).Coord() for i in range(1, n + 1)], dtype=float)
         if matrix is not None:
@@ -110,12 +111,14 @@ def tessellate(shape: Any, linear_tolerance: float, angular_tolerance: float) ->
         vertices.append(pts)
         normals.append(_surface_normals(face, tri, matrix, pts, idx))
         triangles.append(idx + offset)
+        face_ids.append(np.full(len(idx), k))
         offset += n
     mesh = _welded(
         np.concatenate(vertices),
         np.concatenate(normals),
         np.concatenate(triangles),
         1e-4 * linear_tolerance,
+        np.concatenate(face_ids),
     )
     mesh.metadata["deflection_mm"] = reached
     return mesh
@@ -174,9 +177,10 @@ def _surface_normals(
     return -n if np.einsum("ij,ij->", n[triangles[:, 0]], area_normals) < 0 else n
 
 
-def _welded(vertices: F64, normals: F64, faces: I64, tol: float) -> trimesh.Trimesh:
+def _welded(vertices: F64, normals: F64, faces: I64, tol: float, face_ids: I64) -> trimesh.Trimesh:
     """Return the mesh with vertices closer than `tol` merged and collapsed triangles dropped;
-    the exact surface normals in ``vertex_attributes["surface_normals"]``."""
+    the exact surface normals in ``vertex_attributes["surface_normals"]``, each triangle's
+    B-rep face (its index in `faces_of`) in ``face_attributes["step_face"]``."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
@@ -192,6 +196,7 @@ def _welded(vertices: F64, normals: F64, faces: I64, tol: float) -> trimesh.Trim
         vertices[first],
         f[keep],
         vertex_attributes={"surface_normals": normals[first]},
+        face_attributes={"step_face": face_ids[keep]},
         process=False,
     )
 

@@ -153,10 +153,17 @@ def read_step_mesh(
         field=field,
         fix=f", raise the tolerances ({linear:g} mm, the project's 'cad' section)",
     )
+    return mesh_from_arrays(arrays)
+
+
+def mesh_from_arrays(arrays: dict[str, Any]) -> trimesh.Trimesh:
+    """Return the mesh `mesh_arrays` sent back from the worker (each triangle's B-rep face index
+    in ``face_attributes["step_face"]``)."""
     mesh = trimesh.Trimesh(
         arrays["vertices"],
         arrays["faces"],
         vertex_attributes={"surface_normals": arrays["surface_normals"]},
+        face_attributes={"step_face": arrays["step_face"]},
         process=False,
     )
     mesh.metadata["deflection_mm"] = arrays["deflection_mm"]
@@ -172,7 +179,9 @@ def read_step_sheet(data: bytes, name: str, field: str) -> SheetBrep:
     return brep
 
 
-def _checked_shape(data: bytes, name: str, field: str | None) -> Any:
+def checked_shape(data: bytes, name: str, field: str | None) -> Any:
+    """In the CAD worker: the shape of STEP file `data`, refused when it holds no face or
+    reaches beyond the cell (MeshError naming `field`)."""
     shape = read_step_shape(data, name, field)
     if not faces_of(shape):
         raise MeshError(
@@ -206,10 +215,16 @@ def mesh_arrays(
     whose estimate exceeds `brep_mesh.MAX_TRIANGLES` is refused; each solid's mesh must be
     closed and point outwards (`step_checks.check_closed`), and so must the whole mesh of a file
     that declares a solid but gives none (its shell does not close)."""
+    return shape_arrays(checked_shape(data, name, field), data, name, field, linear, angular)
+
+
+def shape_arrays(
+    shape: Any, data: bytes, name: str, field: str, linear: float, angular: float
+) -> dict[str, Any]:
+    """In the CAD worker: `mesh_arrays` of the shape already read from STEP file `data`."""
     from OCP.TopAbs import TopAbs_SOLID
     from OCP.TopExp import TopExp_Explorer
 
-    shape = _checked_shape(data, name, field)
     estimate = step_checks.estimate_triangles(shape, linear, angular)
     max_triangles = brep_mesh.MAX_TRIANGLES
     if estimate > max_triangles:
@@ -240,12 +255,13 @@ def mesh_arrays(
         "faces": np.asarray(mesh.faces, dtype=np.int64),
         "surface_normals": np.asarray(mesh.vertex_attributes["surface_normals"], dtype=float),
         "deflection_mm": float(mesh.metadata["deflection_mm"]),
+        "step_face": np.asarray(mesh.face_attributes["step_face"], dtype=np.int64),
     }
 
 
 def sheet_brep(data: bytes, name: str, field: str) -> SheetBrep:
     """In the CAD worker: the `SheetBrep` [m] of STEP file `data`."""
-    return read_sheet_brep(_checked_shape(data, name, field), field)
+    return read_sheet_brep(checked_shape(data, name, field), field)
 
 
 def write_step(shape: Any, name: str) -> bytes:

@@ -44,6 +44,7 @@ class RobotCollisionChecker:
         cell: list[tuple[Solid, NDArray[np.float64]]] = (),  # type: ignore[assignment]
         q_reference: NDArray[np.float64] | None = None,
         link_names: list[str] | None = None,
+        ignore: list[tuple[str, str]] = (),  # type: ignore[assignment]
     ) -> None:
         self.robot = robot
         n = robot.dof
@@ -70,7 +71,8 @@ class RobotCollisionChecker:
             if frozenset((a, b)) not in adjacent
         ]
         # The base never moves: it is bolted to whatever it stands on.
-        ignore = [(names[0], s.name) for s, _ in cell]
+        # `ignore`: further (moving, static) pairs never checked (a tool in contact by design).
+        ignore = [(names[0], s.name) for s, _ in cell] + list(ignore)
         probe = CollisionScene(moving, [], self_pairs=candidates)
         q0 = np.zeros(n) if q_reference is None else np.asarray(q_reference, float)
         home = probe.check(self._poses(q0), distance=False)

@@ -15,7 +15,8 @@ from numpy.typing import NDArray
 from workbench.errors import InputError, WorkbenchError
 from workbench.gui.fields import NumberField, format_number, schema_range
 from workbench.gui.handles import Removable
-from workbench.gui.notify import guarded
+from workbench.gui.notify import guarded, notify
+from workbench.gui.polishing_faces import FacesChecklist
 from workbench.gui.program_download import ProgramDownload
 from workbench.gui.progress import busy
 from workbench.gui.uploads import WORKPIECES, safe_name
@@ -26,6 +27,7 @@ if TYPE_CHECKING:
 
 MM = 1e-3
 SURFACE_COLOR = (120, 170, 220)
+SOLID_COLOR = (150, 150, 150)  # the rest of a STEP solid whose faces are polished
 PATH_COLOR = (30, 60, 200)
 AXIS_COLOR = (240, 140, 20)
 LEAD_IN_COLOR = (20, 170, 60)
@@ -72,6 +74,8 @@ class PolishingPanel:
         self.units = g.add_dropdown(
             "Units", options=self.svc.mesh_units, initial_value=spec.units, hint="of the mesh file"
         )
+        # A STEP solid's faces to polish (none listed for a mesh file).
+        self.faces = FacesChecklist(app.server, self.svc, guard, self._on_faces)
         self.pattern = g.add_dropdown(
             "Pattern", options=self.svc.patterns, initial_value=spec.pattern
         )
@@ -191,6 +195,21 @@ class PolishingPanel:
                 receive_shadow=False,
             ),
         )
+        solid = self.svc.solid_mesh()  # a STEP solid: drawn whole, the picked faces over it
+        self._set_node(
+            "solid",
+            None
+            if solid is None
+            else lambda: self.server.scene.add_mesh_simple(
+                "/polishing/solid",
+                solid[0].astype(np.float32),
+                solid[1].astype(np.uint32),
+                color=SOLID_COLOR,
+                opacity=0.6,
+                cast_shadow=False,
+                receive_shadow=False,
+            ),
+        )
         self._clear_path_nodes()
 
     def _show_path(self, pp: PolishingPath) -> None:
@@ -251,13 +270,36 @@ class PolishingPanel:
             raise InputError(
                 f"workpiece {name!r}: give an STL, OBJ, PLY or STEP file (the face to polish)"
             )
+        picked = None
         with WORKPIECES.new_file(self.app.wb, name, up.content) as path:
-            self.svc.load_workpiece(path, units=str(self.units.value))
+            try:
+                self.svc.load_workpiece(path, units=str(self.units.value))
+            except WorkbenchError as exc:
+                if exc.field != "polishing.faces":
+                    raise
+                picked = self.svc.suggested_faces(path)  # a closed solid: a first pick
+                self.svc.set_faces(picked, path)
+        self.faces.rebuild()
+        if picked is not None:
+            notify(
+                self.server,
+                event.client,
+                "Polishing",
+                f"{name} is a solid: face {picked[0]} (its largest) is picked; tick the faces"
+                " to polish under Faces to polish",
+                color="blue",
+            )
         self._show_workpiece()
         self.path_info.content = ""
         self.sim_info.content = ""
         self.sim_button.disabled = True
         self.download.disabled = True
+
+    def _on_faces(self) -> None:
+        """The service took new faces to polish: show the new surface, drop old results."""
+        self._show_workpiece()
+        self._clear_results()
+        self.plan_button.disabled = False
 
     def _on_parameter(self, event: viser.GuiEvent) -> None:
         if event.client is None:
@@ -364,6 +406,8 @@ class PolishingPanel:
         for f in self.fields:
             f.remove()
         self.fields.clear()
+        if getattr(self, "faces", None) is not None:
+            self.faces.remove()
         for h in [*self.plots, *self.nodes.values(), *self.handles]:
             h.remove()
         if getattr(self, "root", None) is not None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -9,22 +10,26 @@ import numpy as np
 import trimesh
 from numpy.typing import ArrayLike, NDArray
 
-from workbench.cad.step import StepTolerance
+from workbench.cad.step import StepTolerance, is_step
+from workbench.errors import InputError
 from workbench.polishing.bezier import BezierSurface, fit_bezier_triangles
 from workbench.polishing.chart import SurfaceChart, build_chart
 from workbench.polishing.choices import MeshUnits
+from workbench.polishing.solid_workpiece import SolidWorkpiece, load_solid_workpiece
 from workbench.polishing.workpiece import WorkpieceReport, load_workpiece
 
 
 @dataclass(frozen=True)
 class FittedWorkpiece:
     """The workpiece `mesh` in the world frame [m], the checks of its file (`report`), its
-    planar `chart` and the quadratic Bézier `surface` fitted to it."""
+    planar `chart` and the quadratic Bézier `surface` fitted to it; `solid`: the STEP solid
+    whose picked faces `mesh` is (None when the whole file is the surface)."""
 
     mesh: trimesh.Trimesh
     report: WorkpieceReport
     chart: SurfaceChart
     surface: BezierSurface
+    solid: SolidWorkpiece | None = None
 
 
 def fit_workpiece(
@@ -33,6 +38,7 @@ def fit_workpiece(
     T_world_workpiece: ArrayLike,
     tolerance: StepTolerance | None = None,
     name: str | None = None,
+    faces: Sequence[int] | None = None,
 ) -> FittedWorkpiece:
     """Return the `FittedWorkpiece` of the mesh file `path` read in `units`, placed at
     `T_world_workpiece` (4, 4) [m]; a STEP file is tessellated with `tolerance`.
@@ -43,9 +49,21 @@ def fit_workpiece(
 
     Raises `MeshError` for a missing, empty or non-mesh file or a part in the wrong units
     (`load_workpiece`; messages name the file `name`, default `path`), and the chart's errors
-    for a part that folds over (`build_chart`)."""
-    mesh, report = load_workpiece(path, units=units, tolerance=tolerance, name=name)
+    for a part that folds over (`build_chart`). `faces`: the STEP solid's faces to polish
+    (`load_solid_workpiece`; None: the whole file is the surface)."""
     T = np.asarray(T_world_workpiece, dtype=float)
+    solid = None
+    if faces is None:
+        mesh, report = load_workpiece(path, units=units, tolerance=tolerance, name=name)
+    else:
+        mesh, report, solid = load_solid_workpiece(path, faces, T, tolerance, name)
+    if solid is None and report.is_watertight and is_step(path):
+        raise InputError(
+            f"workpiece {name or str(path)!r} is a closed STEP solid: its faces face every way;"
+            " pick the faces to polish (`faces`: indices from `workbench polishing-faces` or"
+            " the Polishing tab); the rest of the solid is then an obstacle",
+            field="faces",
+        )
     mesh.apply_transform(T)
     chart = build_chart(mesh)
     normals = chart.vertex_normals
@@ -54,7 +72,7 @@ def fit_workpiece(
         normals = _oriented(np.asarray(exact) @ T[:3, :3].T, chart.vertex_normals)
         mesh.vertex_attributes["surface_normals"] = normals
     surface = fit_bezier_triangles(mesh, vertex_normals=normals)
-    return FittedWorkpiece(mesh, report, chart, surface)
+    return FittedWorkpiece(mesh, report, chart, surface, solid)
 
 
 def _oriented(exact: NDArray[np.float64], area: NDArray[np.float64]) -> NDArray[np.float64]:

@@ -47,7 +47,8 @@ class WorkpieceReport:
     warnings: tuple[str, ...]
 
 
-def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
+def check_file(path: Path, name: str) -> None:
+    """MeshError when the workpiece file `path` (named `name`) is missing or empty."""
     if not path.is_file():
         raise MeshError(
             f"workpiece file {name!r} does not exist; give the path of an STL, OBJ or PLY file"
@@ -56,6 +57,10 @@ def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
         raise MeshError(
             f"workpiece file {name!r} is empty; give an STL, OBJ or PLY file with triangles"
         )
+
+
+def _read(path: Path, tolerance: StepTolerance, name: str) -> trimesh.Trimesh:
+    check_file(path, name)
     if is_step(path):
         return read_step_mesh(path.read_bytes(), name, None, tolerance)  # the caller's field
     suffix = path.suffix.lower()
@@ -221,7 +226,14 @@ def load_workpiece(
                 field="units",
             )
         units = "mm"
-    raw = _read(p, tolerance or StepTolerance(), shown)
+    return scaled_workpiece(_read(p, tolerance or StepTolerance(), shown), units, str(p), shown)
+
+
+def scaled_workpiece(
+    raw: trimesh.Trimesh, units: MeshUnits, path: str, shown: str
+) -> tuple[trimesh.Trimesh, WorkpieceReport]:
+    """Return `raw` (in the file's `units`) in metres, cleaned and reported (`load_workpiece`'s
+    second half; `shown` names the file in errors)."""
     raw_diag = _diagonal(np.asarray(raw.vertices))
     chosen, scale, warnings = _choose_scale(raw_diag, units, shown)
     scaled = trimesh.Trimesh(
@@ -230,4 +242,4 @@ def load_workpiece(
         vertex_attributes=dict(raw.vertex_attributes),
         process=False,
     )
-    return inspect_mesh(scaled, path=str(p), units=chosen, scale=scale, warnings=tuple(warnings))
+    return inspect_mesh(scaled, path=path, units=chosen, scale=scale, warnings=tuple(warnings))

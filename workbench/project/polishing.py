@@ -2,7 +2,8 @@
 
 Millimetres, degrees, newtons and seconds, as in the rest of the file; the contact
 stiffness is in N/m (seed 004 prints N/m², a typo). The workpiece is a mesh file (STL,
-OBJ or PLY) relative to the project file, placed in the world at `pose`.
+OBJ or PLY) or a STEP file relative to the project file, placed in the world at `pose`;
+`faces` picks the faces of a STEP solid to polish (the rest of the solid is an obstacle).
 """
 
 from __future__ import annotations
@@ -121,8 +122,10 @@ class ContactSpec(StrictModel):
 class PolishingSpec(StrictModel):
     """The `polishing` section (mm, deg, N, s)."""
 
-    workpiece: str  # mesh file (STL, OBJ, PLY), relative to the project file
+    workpiece: str  # mesh file (STL, OBJ, PLY) or STEP, relative to the project file
     units: MeshUnits = "mm"  # units of the mesh file
+    faces: list[int] | None = None
+    # a STEP solid's faces to polish (indices, `workbench polishing-faces`); None: the whole file
     pose: Pose = Field(default_factory=Pose)  # workpiece frame in the world
     pattern: Pattern = "spiral"
     step: Annotated[float, B.span(B.PATH_STEP_MM, "mm")] = 2.0
@@ -157,6 +160,24 @@ class PolishingSpec(StrictModel):
             )
         return v
 
+    @field_validator("faces")
+    @classmethod
+    def _some_faces(cls, v: list[int] | None) -> list[int] | None:
+        if v is None:
+            return v
+        if not v:
+            raise ValueError(
+                "is empty: pick at least one face of the STEP solid (indices from `workbench "
+                "polishing-faces` or the Polishing tab), or remove the field to polish the "
+                "whole file"
+            )
+        if min(v) < 0:
+            raise ValueError(f"face indices count from 0, got {min(v)}")
+        if len(set(v)) != len(v):
+            twice = sorted({i for i in v if v.count(i) > 1})
+            raise ValueError(f"face {twice[0]} is picked twice; list each face once")
+        return v
+
     @model_validator(mode="after")
     def _feed_below_limit(self) -> PolishingSpec:
         if self.feed > self.controller.max_speed:
@@ -183,6 +204,7 @@ class PolishingSpec(StrictModel):
         return PolishingSI(
             workpiece=s.workpiece,
             units=s.units,
+            faces=None if s.faces is None else tuple(s.faces),
             T_world_workpiece=pose_to_matrix(s.pose),
             pattern=s.pattern,
             step=s.step * MM,
@@ -260,6 +282,7 @@ class PolishingSI:
 
     workpiece: str  # mesh file, relative to the project file
     units: MeshUnits
+    faces: tuple[int, ...] | None  # a STEP solid's faces to polish; None: the whole file
     T_world_workpiece: F64 = field(repr=False)
     pattern: Pattern
     step: float  # [m]

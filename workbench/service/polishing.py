@@ -41,6 +41,7 @@ from workbench.project.polishing import PolishingSI, PolishingSpec
 from workbench.project.program_io import motion_limits, tool_data
 from workbench.service.motion_plan import MotionPlan, plan_from_trajectory
 from workbench.service.plan_limits import limited
+from workbench.service.polishing_faces import SolidFaces
 from workbench.service.section import SectionService
 
 if TYPE_CHECKING:
@@ -52,7 +53,7 @@ Progress = Callable[[float, str], None]
 F64 = NDArray[np.float64]
 
 
-class PolishingService(SectionService[PolishingSpec]):
+class PolishingService(SectionService[PolishingSpec], SolidFaces):
     """`Workbench.polishing`: the polishing workflow of the open project (SI units)."""
 
     section = "polishing"
@@ -88,10 +89,9 @@ class PolishingService(SectionService[PolishingSpec]):
     ) -> WorkpieceReport:
         """Load and check the workpiece; return its `WorkpieceReport` (lengths in m).
 
-        Default: the section's `workpiece` and `units`. A new `path`/`units` is written into
-        the section only when it loads. Raises `MeshError` naming `polishing.workpiece` for a
-        missing, empty or non-mesh file and `polishing.units` for a part in the wrong units.
-        """
+        Default: the section's `workpiece`, `units`, `faces` (a new `path`: the whole file),
+        written into the section only when it loads. `MeshError` naming `polishing.workpiece`
+        for a missing, empty or non-mesh file, `.units` for wrong units, `.faces` (the field)."""
         spec = self.spec
         file = spec.workpiece if path is None else str(path)
         u = spec.units if units is None else units
@@ -100,15 +100,15 @@ class PolishingService(SectionService[PolishingSpec]):
         real = self._resolve(file)  # InputError naming polishing.workpiece if it leaves
         try:
             tol = step_tolerance(self.wb.project.cad)
-            fitted = fit_workpiece(real, u, self.T_world_workpiece, tol, shown_path(file))  # type: ignore[arg-type]
-        except WorkbenchError as exc:
-            # The loader names the units field; anything else is about the file.
+            faces = spec.faces if path is None else None
+            fitted = fit_workpiece(real, u, self.T_world_workpiece, tol, shown_path(file), faces)  # type: ignore[arg-type]
+        except WorkbenchError as exc:  # the loader names units and faces; else: the file
             raise exc.within(
-                "polishing" if exc.field == "units" else "polishing.workpiece"
+                "polishing" if exc.field in ("units", "faces") else "polishing.workpiece"
             ) from exc
         # Commit only what loaded: a bad file leaves the previous workpiece in place.
         if path is not None:
-            spec.workpiece = str(path)
+            spec.workpiece, spec.faces = str(path), None
         if units is not None:
             spec.units = u  # type: ignore[assignment]
         self._fitted = fitted
@@ -261,7 +261,7 @@ class PolishingService(SectionService[PolishingSpec]):
             motion.program,
             motion.trajectory,
             setup,
-            self.wb.checker,
+            self.plan_checker(),
             policy=self.wb.collision_policy,
             dt=motion.sample_dt(dt),
             validate_dt=motion.validate_dt,
