@@ -34,6 +34,7 @@ SERVICE_MAX_LINES = 300
 #: packages: `errors` at the bottom, the file and cache helpers and Ray's session, the batch runner.
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("errors",),
+    ("env_setting",),
     ("atomic_file", "disk_cache", "bounded_cache", "ray_session", "plan_limit"),
     ("batch",),
     ("geometry",),

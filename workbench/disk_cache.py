@@ -13,6 +13,7 @@ import os
 import stat
 from pathlib import Path
 
+from workbench.env_setting import env_value
 from workbench.errors import InputError
 
 CACHE_LIMIT_ENV = "WORKBENCH_CACHE_MAX_BYTES"
@@ -28,13 +29,7 @@ def cache_root() -> Path:
 
 def cache_limit_bytes() -> int:
     """Return the size limit of one cache folder [bytes] ($WORKBENCH_CACHE_MAX_BYTES, default 1 GiB)."""
-    raw = os.environ.get(CACHE_LIMIT_ENV)
-    if raw is None:
-        return DEFAULT_CACHE_LIMIT
-    try:
-        value = int(raw)
-    except ValueError:
-        raise InputError(f"{CACHE_LIMIT_ENV}: {raw!r} is not a whole number of bytes") from None
+    value = env_value(CACHE_LIMIT_ENV, DEFAULT_CACHE_LIMIT, int, "a whole number of bytes")
     if value < 0:
         raise InputError(f"{CACHE_LIMIT_ENV}: {value} must be >= 0 bytes")
     return value

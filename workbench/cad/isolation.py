@@ -43,6 +43,7 @@ from pathlib import Path
 from typing import Any
 
 from workbench import errors
+from workbench.env_setting import env_value
 from workbench.errors import InputError, MeshError, WorkbenchError
 
 DEFAULT_SECONDS = 60.0
@@ -73,13 +74,7 @@ _HEADER = struct.Struct("<Q")
 
 def cad_seconds() -> float:
     """Return the time limit of one CAD read [s] (`WORKBENCH_CAD_SECONDS`, default 60)."""
-    raw = os.environ.get("WORKBENCH_CAD_SECONDS")
-    if raw is None:
-        return DEFAULT_SECONDS
-    try:
-        value = float(raw)
-    except ValueError:
-        raise InputError(f"WORKBENCH_CAD_SECONDS: {raw!r} is not a number of seconds") from None
+    value = env_value("WORKBENCH_CAD_SECONDS", DEFAULT_SECONDS, float, "a number of seconds")
     if not 0 < value <= 86400:
         raise InputError(f"WORKBENCH_CAD_SECONDS: {value:g} must lie in (0, 86400] s")
     return value
@@ -87,13 +82,7 @@ def cad_seconds() -> float:
 
 def cad_memory_bytes() -> int:
     """Return the memory limit of a CAD reader [bytes] (`WORKBENCH_CAD_MEMORY_BYTES`)."""
-    raw = os.environ.get("WORKBENCH_CAD_MEMORY_BYTES")
-    if raw is None:
-        return DEFAULT_MEMORY_BYTES
-    try:
-        value = int(raw)
-    except ValueError:
-        raise InputError(f"WORKBENCH_CAD_MEMORY_BYTES: {raw!r} is not a whole number") from None
+    value = env_value("WORKBENCH_CAD_MEMORY_BYTES", DEFAULT_MEMORY_BYTES, int, "a whole number")
     if value < MIN_MEMORY_BYTES:
         raise InputError(
             f"WORKBENCH_CAD_MEMORY_BYTES: {value} is below {MIN_MEMORY_BYTES} (1 GiB), too little"

@@ -19,13 +19,13 @@ a member that unpacks to more than it declares is refused before the excess is h
 from __future__ import annotations
 
 import io
-import os
 import re
 import stat
 import zipfile
 from collections.abc import Iterable
 from pathlib import Path
 
+from workbench.env_setting import env_value
 from workbench.errors import InputError
 from workbench.project.paths import MiB, read_regular_file, size_limit
 
@@ -43,13 +43,7 @@ _DATE = (2000, 1, 1, 0, 0, 0)  # every member's time: the same project gives the
 def zip_limit(setting: str) -> int:
     """Return the zip limit `setting` ('members', 'bytes', 'ratio') in effect."""
     env, default = ZIP_LIMITS[setting]
-    raw = os.environ.get(env)
-    if raw is None:
-        return default
-    try:
-        value = int(raw)
-    except ValueError:
-        raise InputError(f"{env}: {raw!r} is not a whole number") from None
+    value = env_value(env, default, int, "a whole number")
     if value <= 0:
         raise InputError(f"{env}: {value} must be positive")
     return value

@@ -25,6 +25,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from workbench.env_setting import env_value
 from workbench.errors import InputError, MeshError, ProjectError, WorkbenchError
 
 PathArg = str | os.PathLike[str]
@@ -67,13 +68,7 @@ def shown_path(path: object) -> str:
 def size_limit(kind: str) -> int:
     """Return the largest file of `kind` ('project', 'part', 'urdf', 'mesh') read [bytes]."""
     env, default = SIZE_LIMITS[kind]
-    raw = os.environ.get(env)
-    if raw is None:
-        return default
-    try:
-        value = int(raw)
-    except ValueError:
-        raise InputError(f"{env}: {raw!r} is not a whole number of bytes") from None
+    value = env_value(env, default, int, "a whole number of bytes")
     if value <= 0:
         raise InputError(f"{env}: {value} must be a positive number of bytes")
     return value
