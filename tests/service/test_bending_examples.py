@@ -119,9 +119,9 @@ def test_the_seed_parts_saved_cycle_goes_round_where_the_straight_move_is_blocke
     seen: dict[str, Any] = {}
     route = cycle_module.route_transits
 
-    def spy(path: Any, q: Any, space_of: Any, fk: Any) -> Any:
+    def spy(path: Any, q: Any, space_of: Any, fk: Any, *rest: Any) -> Any:
         seen.update(path=path, q=q, space_of=space_of)
-        out = route(path, q, space_of, fk)
+        out = route(path, q, space_of, fk, *rest)  # rest: the plan limit's progress
         seen.update(new_path=out[0], new_q=out[1])
         return out
 
