@@ -48,6 +48,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("project",),
     ("service",),
     ("gui",),
+    ("cli_options",),  # options the commands share
     (
         "cli_calibrate",
         "cli_touchup",

@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from workbench import cli_calibrate, cli_polishing, cli_touchup
+from workbench.cli_options import add_allow_dir
 from workbench.errors import InputError, ServerError, WorkbenchError
 from workbench.project.paths import read_regular_file
 
@@ -141,13 +142,7 @@ def _parser() -> argparse.ArgumentParser:
         "clear", help="remove every cache entry ($WORKBENCH_CACHE, default ~/.cache/workbench)"
     )
     for p in (serve, check, export, imp, sweep):
-        p.add_argument(
-            "--allow-dir",
-            action="append",
-            default=[],
-            metavar="DIR",
-            help="a folder the project's files may lie in besides its own (repeat)",
-        )
+        add_allow_dir(p)
     return parser
 
 

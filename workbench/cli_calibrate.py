@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from workbench.cli_options import add_allow_dir
 from workbench.errors import InputError
 from workbench.project.paths import read_regular_file
 from workbench.project.units import MM
@@ -41,13 +42,7 @@ def add_parser(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None
             "--apply", action="store_true", help="store the result in the project and write it"
         )
         p.add_argument("--out", help="project JSON to write with --apply (default: PROJECT)")
-        p.add_argument(
-            "--allow-dir",
-            action="append",
-            default=[],
-            metavar="DIR",
-            help="a folder the project's files may lie in besides its own (repeat)",
-        )
+        add_allow_dir(p)
     for p in (wobj, base):
         p.add_argument(
             "--known",

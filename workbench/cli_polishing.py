@@ -7,6 +7,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from workbench.cli_options import add_allow_dir
 from workbench.errors import InputError
 
 
@@ -19,13 +20,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
     p.add_argument("project", help="project JSON with a polishing section on a STEP file")
     p.add_argument("--pick", help="the face indices to polish, e.g. 5 or 3,5 (with --out)")
     p.add_argument("--out", help="the project JSON to write with --pick (may be PROJECT)")
-    p.add_argument(
-        "--allow-dir",
-        action="append",
-        default=[],
-        metavar="DIR",
-        help="a folder the project's files may lie in besides its own (repeat)",
-    )
+    add_allow_dir(p)
     return p
 
 

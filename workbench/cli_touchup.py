@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from workbench.cli_options import add_allow_dir
 from workbench.errors import InputError
 from workbench.project.paths import read_regular_file
 
@@ -35,13 +36,7 @@ def add_parser(sub: Any) -> argparse.ArgumentParser:
         " not fit kept as taught; targets: every moved target as taught; both",
     )
     p.add_argument("--out", help="the project JSON to write with --apply (may be PROJECT)")
-    p.add_argument(
-        "--allow-dir",
-        action="append",
-        default=[],
-        metavar="DIR",
-        help="a folder the project's files may lie in besides its own (repeat)",
-    )
+    add_allow_dir(p)
     return p
 
 
