@@ -130,9 +130,7 @@ def _parser() -> argparse.ArgumentParser:
     part.add_argument("--bend-layer", help="the DXF layer of the bend lines (default BEND)")
     part.add_argument("--inner-radius", type=float, help="inner bend radius [mm]")
     part.add_argument("--k-factor", type=float, help="K for every bend (default: Table 1)")
-    part.add_argument(
-        "--base", help="the base flange, e.g. F2 (STEP; default: the centre of the bend tree)"
-    )
+    part.add_argument("--base", help="the base flange, e.g. F2 (STEP; default: the largest)")
     cli_calibrate.add_parser(sub)
     cli_touchup.add_parser(sub)
     cli_polishing.add_parser(sub)

@@ -14,8 +14,7 @@ The optional section `bending.part_import` (mm) sets what the file does not say:
   only; a STEP accepts the default, which saves before 2026-12 wrote into every part_import);
 - `inner_radius` [mm]: a DXF's bends without their own; for a STEP it must match every bend;
 - `k_factor`: K for every bend (default: Table 1 from r/t);
-- `base`: the flange whose frame is the part frame (STEP; default: the centre of the bend
-  tree, `sheetmetal.from_solid.central_flange`: a U-channel's web, as a hand-written part has).
+- `base`: the flange whose frame is the part frame (STEP; default: the largest flange).
 """
 
 from __future__ import annotations
@@ -186,11 +185,9 @@ def import_part(
     shown = f"{where} ({name})"
     if kind == "STEP":
         spec = _from_step(data, name, settings, shown)
-        why = "bending.part_import.base" if settings.base else "the centre of the bend tree"
         note = (
             f"recognised from the STEP solid {name!r}: {len(spec['flanges'])} flanges, "
-            f"{len(spec['bends'])} bends; base {spec['flanges'][0]['name']} ({why}; flanges "
-            "named F1, F2, ... in the file's face order)"
+            f"{len(spec['bends'])} bends"
         )
     elif kind == "DXF":
         spec = _from_dxf(data, name, settings, shown)

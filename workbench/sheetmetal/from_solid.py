@@ -2,14 +2,10 @@
 
 `sheet_faces` (solid_faces.py) finds the flanges and bends; here they become the part model:
 
-- the base is a named flange or, by default, the centre of the bend tree: the flange with the
-  fewest bends to its farthest flange (ties: the most bends of its own, then the largest, then
-  the lowest name), so a U-channel's base is its web whichever flange is the largest, as a
-  hand-written part names it (docs/sheetmetal.md, "One part, one plan"); the other flanges
-  hang from it through the bends (a tree: a closed ring of bends is refused);
+- the base is the largest flange (or a named one); the other flanges hang from it through the
+  bends (a tree: a closed ring of bends is refused);
 - each flange's frame has z along its top face's outward normal and its polygon on the
-  mid-surface; the base's x runs along its first bend's line with that bend on its low-y side
-  (`_bend_axes`), so the same part however it lies in the file gives the same model: the top face's outer loop projected there. The base's top is the side most of
+  mid-surface: the top face's outer loop projected there. The base's top is the side most of
   its bends turn towards (ties: the side facing the model's +x, +y or +z, whichever the normal
   is closest to); a child's top is the face joined to its parent's top through the bend's
   cylinder, so a bend whose inner cylinder meets the parent's top is "up";
@@ -53,19 +49,6 @@ def _model_axes(z: NDArray[np.float64]) -> NDArray[np.float64]:
     e = np.eye(3)[int(np.argmin(np.abs(z) + 1e-12 * np.arange(3)))]
     x = e - np.dot(e, z) * z
     x /= np.linalg.norm(x)
-    return np.column_stack([x, np.cross(z, x), z])
-
-
-def _bend_axes(
-    z: NDArray[np.float64], along: NDArray[np.float64], toward: NDArray[np.float64]
-) -> NDArray[np.float64]:
-    """Return (3, 3) columns x, y, z: x along the base's first bend line (`along`, unit),
-    signed so that y = z × x points from that bend (`toward`: from a point of its axis to the
-    base's centre) into the base, which puts the first bend on the base's low-y side: the
-    same polygon and bend edges however the part lies in the file."""
-    x = along - np.dot(along, z) * z
-    x /= np.linalg.norm(x)
-    x = x if np.dot(np.cross(z, x), toward) > 0 else -x
     return np.column_stack([x, np.cross(z, x), z])
 
 
@@ -132,15 +115,13 @@ def _joins(
 
 
 def _base_polygon(
-    brep: SheetBrep, top: int, t: float, bend: int
+    brep: SheetBrep, top: int, t: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
-    """Return the base's T_model_part (4, 4), x along cylinder face `bend`'s axis
-    (`_bend_axes`), and its polygon (from its lowest-then-leftmost corner, bounding box at the
-    origin) with the face across each edge."""
-    face, cyl = brep.faces[top - 1], brep.faces[bend - 1]
-    assert face.normal is not None and face.origin is not None and face.loop is not None
-    assert cyl.axis is not None and cyl.origin is not None
-    R = _bend_axes(face.normal, cyl.axis, face.loop.mean(axis=0) - cyl.origin)
+    """Return the base's T_model_part (4, 4) and its polygon (from its lowest-then-leftmost
+    corner, bounding box at the origin) with the face across each edge."""
+    face = brep.faces[top - 1]
+    assert face.normal is not None and face.origin is not None
+    R = _model_axes(face.normal)
     o = face.origin - 0.5 * t * face.normal
     pts, across = _loop_2d(brep, top, R, o)
     lo = pts.min(axis=0)
@@ -165,34 +146,6 @@ def _child_polygon(
     return (pts - pts[0]) @ np.array([[d[0], -d[1]], [d[1], d[0]]]), across
 
 
-def central_flange(names: list[str], joined: list[list[str]], areas: list[float]) -> str:
-    """Return the default base: the centre of the bend tree (the flange whose farthest flange
-    is the fewest bends away), ties broken by most bends, then largest area (to `TOL`², m²),
-    then the first name. `joined`: per bend, the two flange names it joins."""
-    near: dict[str, set[str]] = {n: set() for n in names}
-    for a, b in joined:
-        near[a].add(b)
-        near[b].add(a)
-
-    def farthest(start: str) -> int:
-        seen, ring, hops = {start}, [start], 0
-        while ring:
-            ring = [m for n in ring for m in sorted(near[n]) if m not in seen]
-            seen.update(ring)
-            hops += 1 if ring else 0
-        return hops if len(seen) == len(names) else len(names)  # unjoined: refused later
-
-    return min(
-        names,
-        key=lambda n: (
-            farthest(n),
-            -len(near[n]),
-            -round(areas[names.index(n)] / TOL**2),
-            names.index(n),
-        ),
-    )
-
-
 def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> RecognisedPart:
     """Return the part recognised in `brep` (SI); MeshError names the face and `where` when it
     is not a sheet-metal part, InputError names `base` when no flange has that name."""
@@ -202,16 +155,15 @@ def recognise_part(brep: SheetBrep, *, where: str, base: str | None = None) -> R
     faces_of = {n: (f.first, f.second) for n, f in zip(names, sf.flanges, strict=True)}
     joined = _joins(brep, sf, {i: n for n, pair in faces_of.items() for i in pair}, where)
     if base is None:
-        base = central_flange(names, joined, [brep.faces[f.first - 1].area for f in sf.flanges])
+        areas = [brep.faces[f.first - 1].area for f in sf.flanges]
+        base = names[int(np.argmax(np.round(np.asarray(areas) / TOL**2)))]
     elif base not in names:
         raise InputError(
             f"no flange {base!r}; the part's flanges are {', '.join(names)}", field="base"
         )
     near = [b for b, j in zip(sf.bends, joined, strict=True) if base in j]
     top = {base: _base_top(brep, faces_of[base], [b.inner for b in near], [b.outer for b in near])}
-    if not near:
-        raise MeshError(f"flange {base} is joined to no bend; name another base", field=where)
-    T, pts, across = _base_polygon(brep, top[base], t, near[0].inner)
+    T, pts, across = _base_polygon(brep, top[base], t)
     polys = {base: (pts, across)}
     bends: list[dict[str, Any]] = []
     frontier = [base]
