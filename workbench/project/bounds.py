@@ -20,6 +20,8 @@ from pydantic import GetCoreSchemaHandler, GetJsonSchemaHandler
 from pydantic.json_schema import JsonSchemaValue
 from pydantic_core import CoreSchema, core_schema
 
+from workbench.cad.isolation import SETTINGS as CAD_READER_BOUNDS
+
 # -- the cell -------------------------------------------------------------------------------------
 CELL_HALF_EXTENT_MM = 100_000.0
 """Largest absolute x, y or z of any position, in the world or a local frame [mm] (a 200 m cube)."""
@@ -177,14 +179,7 @@ BUDGETS = (
     "workbench.polishing.process_path.MAX_PATH_POINTS",
     "workbench.polishing.force_control.MAX_STEPS",
     "workbench.collision.shapes.SOLID_SIZE",
-    "workbench.cad.brep_mesh.MAX_TRIANGLES",
-    "workbench.cad.step_checks.MAX_STEP_ENTITIES",
-    "workbench.cad.step_checks.MAX_STEP_NESTING",
-    "workbench.cad.step_checks.MAX_COORDINATE_MM",
-    "workbench.cad.dxf_checks.MAX_DXF_ENTITIES",
-    "workbench.cad.dxf_checks.MAX_EXPANDED_ENTITIES",
-    "workbench.cad.dxf_checks.MAX_SPLINE_DEGREE",
-    "workbench.cad.dxf_checks.MAX_BEND_LINES",
+    *CAD_READER_BOUNDS,  # the CAD readers' bounds, sent to their worker with every read
     "workbench.pressbrake.grasp_grid.MAX_GRID_POINTS",
 )
 """The work budgets, each a named setting next to the work it bounds (the domain packages
