@@ -27,8 +27,10 @@ ROOT = Path(__file__).resolve().parents[1]
 PROJECTS = ROOT / "projects"
 LIBRARY = ("irb1200_7_70", "kr6_r900_2", "m10ia", "ur5e", "mz07")
 #: The seed cell's limit on each library robot [s]: the UR5e's plan ran past 290 s here (2
-#: cores shared by six jobs) in its transits' exact part-solid checks; it must end by it.
-LIMIT_S = 240.0
+#: cores shared by six jobs) in its transits' exact part-solid checks; it must end by it. The
+#: other robots plan in 16-29 s here; one that takes longer under load ends by the limit too,
+#: which the test accepts as "says why" (a minute proves the bound as well as four did).
+LIMIT_S = 60.0
 
 
 def _example(name: str) -> dict[str, Any]:
@@ -235,7 +237,7 @@ def test_a_limit_ends_the_press_cycle_inside_its_detours() -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.timeout(600)  # the plan's own limit (240 s) must be what ends a slow one
+@pytest.mark.timeout(300)  # the plan's own limit (60 s) must be what ends a slow one
 @pytest.mark.parametrize("preset", LIBRARY)
 def test_the_seed_part_cell_plans_on_every_library_robot_within_its_limit(
     preset: str, tmp_path: Path

@@ -268,16 +268,23 @@ def _box(path: Path) -> None:
 def test_every_example_saved_in_place_and_elsewhere_plans_from_a_fresh_process(
     tmp_path: Path,
 ) -> None:
+    """The copies saved elsewhere are planned from a fresh process (no file cached); the ones
+    saved in place reopen as the same project with the same files, which plans the same (the
+    planners are deterministic: test_plan_determinism), so they are not planned twice."""
     tree = _tree(tmp_path)
     meshes = tree / "web_assets"
     saved: list[Path] = []
     for example in EXAMPLES:
         in_place = tree / "projects" / example.name
-        Workbench.open(in_place, allowed_dirs=[meshes]).save()
+        opened = Workbench.open(in_place, allowed_dirs=[meshes])
+        before, files = _dump_without_paths(opened), _files(opened)
+        opened.save()
+        again = Workbench.open(in_place, allowed_dirs=[meshes])
+        assert _dump_without_paths(again) == before and _files(again) == files, example.name
         elsewhere = tmp_path / "elsewhere" / example.stem / example.name
         elsewhere.parent.mkdir(parents=True)
         Workbench.open(example).save(elsewhere)
-        saved += [in_place, elsewhere]
+        saved.append(elsewhere)
     script = (
         "import sys\n"
         "from workbench import Workbench\n"
