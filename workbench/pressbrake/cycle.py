@@ -52,6 +52,7 @@ from workbench.pressbrake.cycle_path import (
     T_part_tcp,
     cycle_path,
 )
+from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
 from workbench.pressbrake.press_check import PartHit, check_states
 from workbench.pressbrake.press_signals import PressEvent, press_events
@@ -364,6 +365,36 @@ def _frame_times(traj: Trajectory, dt: float) -> F64:
     grid = np.arange(0.0, traj.duration, dt)
     marks = np.asarray(traj.waypoint_times, float)
     return np.unique(np.concatenate([grid, marks, [traj.duration]]))
+
+
+def cycle_die_placements(
+    part: SheetMetalPart,
+    steps: list[CycleStep],
+    cell: CycleCell,
+    *,
+    model: RobotModel,
+    T_world_base: F64,
+    T_flange_tcp: F64,
+) -> tuple[tuple[DiePlacement, ...], str]:
+    """Return each bend of the cycle against its back-gauge stop, as `check_cycle` plans it:
+    the step's grasp and station, the joints of the cycle's own inverse kinematics (the home
+    branch, one configuration for the whole cycle), and the configuration's label.
+
+    UnreachableError names the cycle's first waypoint the robot cannot reach (any of them:
+    the plan needs them all). No collision check: that is the plan's.
+    """
+    path = cycle_path(part, steps, cell)
+    branch = home_branch(model, cell.q_home)
+    q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
+    starts = {ph.bend: ph.start for ph in path.phases if ph.kind == "bend"}
+    out = []
+    for k, b in enumerate(part.bends):
+        i = starts[k]  # the stop: where the bend's phase starts
+        T_tcp = path.waypoints[i].T_world_tcp
+        assert T_tcp is not None  # a stop at the die is a pose, never home
+        T_part = cell.press.T_world_die @ path.bend_poses[k][0].T_die_part
+        out.append(DiePlacement(b.name, k, T_part, T_tcp, q_wp[i]))
+    return tuple(out), label
 
 
 def check_cycle(

@@ -20,8 +20,9 @@ from workbench.kinematics.model import RobotModel
 from workbench.pressbrake.airbend import short_flanges
 from workbench.pressbrake.bend_eval import fitting_station
 from workbench.pressbrake.bend_setup import Body
-from workbench.pressbrake.cycle import BendingCycle, check_cycle
+from workbench.pressbrake.cycle import BendingCycle, check_cycle, cycle_die_placements
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.grasp import Grasp
 from workbench.pressbrake.press import PressBrake
 from workbench.sheetmetal.part import SheetMetalPart
@@ -87,4 +88,17 @@ class CycleRobot:
             policy=self.policy,
             cell_bodies=self.cell_bodies,
             progress=progress,
+        )
+
+    def die_placements(
+        self, part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell
+    ) -> tuple[tuple[DiePlacement, ...], str]:
+        """Return each bend against its stop as `check_cycle` plans it (`cycle_die_placements`)."""
+        return cycle_die_placements(
+            part,
+            steps,
+            cell,
+            model=self.model,
+            T_world_base=self.T_world_base,
+            T_flange_tcp=self.T_flange_tcp,
         )

@@ -165,7 +165,11 @@ class BendingService(SectionService[BendingSpec]):
         return bend_on_die(step, len(self.part.bends))
 
     def die_part_pose(self, step: int) -> NDArray[np.float64]:
-        """Return T_world_part (4, 4) [m] with bend `step` on the die (`sheetmetal.die`)."""
+        """Return T_world_part (4, 4) [m] with bend `step` on the die: with a press, against
+        its stop as the cycle puts it (the step's station and grasp); without, on the
+        section's die (`pressbrake.die`)."""
+        if self.si().press is not None:
+            return process.die_part_pose(self, step)
         return die_part_pose(self.part, step, self.si().die, self.grasp)
 
     def world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -174,10 +178,15 @@ class BendingService(SectionService[BendingSpec]):
         return world_tcp(self.wb.robot, setup.T_world_base, setup.T_flange_tcp, q)
 
     def placements(self) -> tuple[tuple[DiePlacement, ...], str]:
-        """Return each bend's die placement with one arm configuration, and its label.
+        """Return each bend's die placement with one arm configuration, and its label: with a
+        press, as the cycle's plan holds it against its stop (the project's steps, the
+        cycle's inverse kinematics: what Plan uses); without, on the section's die with its
+        grasp.
 
-        Raises UnreachableError naming the bend the robot cannot hold on the die.
+        Raises UnreachableError naming the bend (the cycle's waypoint) the robot cannot reach.
         """
+        if self.si().press is not None:
+            return process.die_placements(self)
         return placements(self.wb.setup, self.part, self.si().die, self.grasp, self.wb.setup.q0)
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:

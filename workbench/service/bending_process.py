@@ -10,14 +10,18 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+import numpy as np
+from numpy.typing import NDArray
+
 from workbench.batch import check_engine
 from workbench.errors import InputError
 from workbench.pressbrake.bend_eval import SweepContext
 from workbench.pressbrake.cycle import BendingCycle
-from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.cycle_path import CycleCell, CycleStep, T_world_part_on_die
 from workbench.pressbrake.cycle_plan import CycleRobot, checked_press, default_steps
 from workbench.pressbrake.cycle_search import search_cycles
 from workbench.pressbrake.cycle_search import sweep_context as search_context
+from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.press import PressBrake
 from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
 from workbench.project.bending import BendingSI, BendStepSI
@@ -26,6 +30,7 @@ if TYPE_CHECKING:
     from workbench.service.bending import BendingService
 
 Progress = Callable[[float, str], None]
+F64 = NDArray[np.float64]
 
 
 def press_of(si: BendingSI) -> PressBrake:
@@ -105,6 +110,17 @@ def cycle_steps(svc: BendingService) -> list[CycleStep]:
 def plan_cycle(svc: BendingService, progress: Progress | None = None) -> BendingCycle:
     """Return the planned and checked cycle of the project's sequence and steps."""
     return cycle_robot(svc).check_cycle(svc.part, cycle_steps(svc), cycle_cell(svc), progress)
+
+
+def die_placements(svc: BendingService) -> tuple[tuple[DiePlacement, ...], str]:
+    """Return each bend of the project's cycle against its stop, as `plan_cycle` plans it."""
+    return cycle_robot(svc).die_placements(svc.part, cycle_steps(svc), cycle_cell(svc))
+
+
+def die_part_pose(svc: BendingService, k: int) -> F64:
+    """Return T_world_part (4, 4) [m] of the cycle's bend k against its stop."""
+    si = svc.si()
+    return T_world_part_on_die(svc.part, k, cycle_steps(svc)[k], press_of(si))
 
 
 def search(
