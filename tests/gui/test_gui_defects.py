@@ -1,0 +1,54 @@
+"""The logic behind the GUI defects of issue 30 part 4 (their browser checks:
+tests/e2e/test_gui_defects.py): notifications in plain text, tooltips that follow the range."""
+
+from __future__ import annotations
+
+import socket
+from collections.abc import Iterator
+
+import pytest
+import viser
+
+from workbench.gui.fields import NumberField
+from workbench.gui.notify import plain_text
+
+
+def test_notifications_drop_markdown_marks_and_keep_the_words() -> None:
+    md = "**Collision**: `bending.press` needs a [press](https://example.org/p)  \nnext"
+    assert plain_text(md) == "Collision: bending.press needs a press (https://example.org/p)\nnext"
+    # what is not markdown stays: a lone asterisk, underscores in a name, a product
+    for text in ("3 * 4 mm", "u_channel_cell", "__init__", "a*b*c", "50 % of [0, 1] s"):
+        assert plain_text(text) == text
+    # the twin: no mark of the three kinds survives, whatever is nested
+    nested = "**a `b` [c](d)** and **e**"
+    out = plain_text(nested)
+    assert "**" not in out and "`" not in out and "](" not in out
+    assert out == "a b c (d) and e"
+
+
+@pytest.fixture
+def server() -> Iterator[viser.ViserServer]:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = int(s.getsockname()[1])
+    srv = viser.ViserServer(host="127.0.0.1", port=port, verbose=False)
+    yield srv
+    srv.stop()
+
+
+def test_the_tooltip_follows_the_range_allowed_now(server: viser.ViserServer) -> None:
+    state: dict[str, float | None] = {"max": None}
+
+    def allowed() -> str:
+        return (
+            "none until a motion is planned" if state["max"] is None else f"[0, {state['max']}] s"
+        )
+
+    field = NumberField(server, "Time [s]", get=lambda: 0.0, put=lambda v: None, allowed=allowed)
+    assert field.text.hint == "allowed none until a motion is planned"
+    state["max"] = 2.5
+    field.refresh()
+    assert field.text.hint == "allowed [0, 2.5] s"
+    given = NumberField(server, "x", get=lambda: 0.0, put=lambda v: None, allowed=allowed, hint="h")
+    given.refresh()
+    assert given.text.hint == "h"  # a hint given by the panel is kept
