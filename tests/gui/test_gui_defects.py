@@ -3,8 +3,12 @@ tests/e2e/test_gui_defects.py): notifications in plain text, tooltips that follo
 
 from __future__ import annotations
 
+import ast
+import json
+import re
 import socket
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 import viser
@@ -52,3 +56,35 @@ def test_the_tooltip_follows_the_range_allowed_now(server: viser.ViserServer) ->
     given = NumberField(server, "x", get=lambda: 0.0, put=lambda v: None, allowed=allowed, hint="h")
     given.refresh()
     assert given.text.hint == "h"  # a hint given by the panel is kept
+
+
+RESEARCH = re.compile(r"\b[Ss]eed \d{3}\b|\bFig\. ?\d|\bSec\. ?\d")
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _strings(tree: ast.AST) -> list[str]:
+    """Return the string literals of a module, docstrings left out (they are not shown)."""
+    docs = {
+        id(n.body[0].value)
+        for n in ast.walk(tree)
+        if isinstance(n, ast.Module | ast.ClassDef | ast.FunctionDef)
+        and n.body
+        and isinstance(n.body[0], ast.Expr)
+        and isinstance(n.body[0].value, ast.Constant)
+    }
+    return [
+        n.value
+        for n in ast.walk(tree)
+        if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docs
+    ]
+
+
+def test_the_gui_and_the_examples_speak_without_research_labels() -> None:
+    assert RESEARCH.search("Assembly cell (seed 003, Fig. 11)")  # the pattern finds the old one
+    shown = []
+    for path in sorted((ROOT / "workbench" / "gui").glob("*.py")):
+        shown += [(path.name, s) for s in _strings(ast.parse(path.read_text()))]
+    for path in sorted((ROOT / "projects").glob("*.json")):
+        data = json.loads(path.read_text())
+        shown += [(path.name, str(data.get(k, ""))) for k in ("name", "description")]
+    assert [(f, s) for f, s in shown if RESEARCH.search(s)] == []

@@ -125,7 +125,7 @@ class BendingPanel:
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
         self.export = ProgramDownload(s, lambda: self.app.wb, "bending")  # the plan's programs
-        self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)", visible=not self.has_press)
+        self.plot_folder = g.add_folder("Per-frame checks: tree vs flat loop", visible=not self.has_press)
         self.handles += [
             self.info,
             self.look,
