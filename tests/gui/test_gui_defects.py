@@ -88,3 +88,58 @@ def test_the_gui_and_the_examples_speak_without_research_labels() -> None:
         data = json.loads(path.read_text())
         shown += [(path.name, str(data.get(k, ""))) for k in ("name", "description")]
     assert [(f, s) for f, s in shown if RESEARCH.search(s)] == []
+
+
+def test_a_refused_plan_leaves_no_plan_to_export() -> None:
+    """A refused "Plan sequence" (or part) drops the last plan: the Assembly tab's Download
+    cannot write the previous plan's program; the Bending tab's Plan likewise."""
+    from workbench.errors import InputError as Refused
+    from workbench.service import Workbench
+
+    wb = Workbench.open(ROOT / "projects" / "assembly_cell.json")
+    a = wb.assembly
+    first = a.part_names[0]
+    plan = a.plan_sequence([first])
+    assert a.last_plan is plan and a.last_part_plan is not None
+    with pytest.raises(Refused, match="nope"):
+        a.plan_sequence(["nope"])
+    assert a.last_plan is None and a.last_part_plan is None
+
+
+class _Plan:
+    ok = False
+
+    def summary(self) -> str:
+        return "1 colliding sample"
+
+
+class _Wb:
+    def __init__(self) -> None:
+        self.forced: list[bool] = []
+
+    def default_program_format(self) -> str:
+        return "csv"
+
+    def export_program(self, fmt: str, workflow: str, *, force: bool = False) -> object:
+        self.forced.append(force)
+        return object()
+
+
+def test_a_refused_export_offers_export_anyway(
+    server: viser.ViserServer, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from workbench.errors import PlanningError
+    from workbench.gui import program_download
+
+    monkeypatch.setattr(program_download, "latest_plan", lambda wb, workflow: _Plan())
+    wb = _Wb()
+    d = program_download.ProgramDownload(server, lambda: wb, "assembly", disabled=False)  # type: ignore[arg-type,return-value]
+    assert not d.anyway.visible
+    with pytest.raises(PlanningError, match='press "Export anyway"') as refused:
+        d.export()
+    assert "--force" not in str(refused.value)  # the GUI has its own button
+    assert d.anyway.visible and wb.forced == []
+    d.export(force=True)
+    assert wb.forced == [True]
+    d.disabled = False  # a new plan: the button belongs to the refused one
+    assert not d.anyway.visible

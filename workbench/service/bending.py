@@ -205,6 +205,7 @@ class BendingService(SectionService[BendingSpec]):
         `pressbrake.transfer_plan.plan_transfer`), a `BendingResult`. `progress(fraction,
         message)` reports the stages; `cancel()` or `planning.time_limit` ends it."""
         plan: BendingResult
+        self._plan = None  # refused or not, the last plan is replaced: no stale export
         si = self.si()
         if si.press is not None:
             plan = process.plan_cycle(self, progress)
