@@ -143,3 +143,31 @@ def test_a_refused_export_offers_export_anyway(
     assert wb.forced == [True]
     d.disabled = False  # a new plan: the button belongs to the refused one
     assert not d.anyway.visible
+
+
+def test_no_box_of_the_gui_reads_a_comma_as_nothing() -> None:
+    """viser's number and vector boxes drop a ',' ("12,5" arrives as 125): the GUI types
+    numbers only in strict text boxes (`NumberField`), which refuse a decimal comma."""
+    from workbench.errors import InputError as Refused
+    from workbench.gui.fields import parse_number
+
+    lax = re.compile(r"\.add_(number|vector2|vector3)\(")
+    used = [p.name for p in (ROOT / "workbench" / "gui").glob("*.py") if lax.search(p.read_text())]
+    assert used == []
+    with pytest.raises(Refused, match="decimal comma"):
+        parse_number("12,5", "Obstacle at x [mm]")
+
+
+def test_the_obstacle_position_is_checked_by_the_projects_bounds() -> None:
+    from workbench.errors import InputError as Refused
+    from workbench.project.common import Pose
+    from workbench.service.project_imports import obstacle_coordinate
+
+    assert obstacle_coordinate(1, -12.5) == -12.5
+    big = 10 * max(
+        abs(v)
+        for v in Pose.model_json_schema()["properties"]["xyz"]["items"].values()
+        if isinstance(v, (int, float))
+    )
+    with pytest.raises(Refused, match=r"cell\.objects\[\]\.pose\.xyz\[2\]"):
+        obstacle_coordinate(2, big)
