@@ -171,3 +171,16 @@ def test_the_obstacle_position_is_checked_by_the_projects_bounds() -> None:
     )
     with pytest.raises(Refused, match=r"cell\.objects\[\]\.pose\.xyz\[2\]"):
         obstacle_coordinate(2, big)
+
+
+def test_the_example_dropdown_finds_the_open_example() -> None:
+    from workbench.gui.picker import example_index, examples
+
+    found = examples()
+    assert len(found) >= 2
+    for i, e in enumerate(found):  # the twin: the list's own order
+        assert example_index(found, e.path) == i
+        # the same file by another spelling of its path
+        assert example_index(found, e.path.parent / ".." / e.path.parent.name / e.path.name) == i
+    assert example_index(found, None) is None
+    assert example_index(found, ROOT / "README.md") is None
