@@ -1,5 +1,5 @@
 """The GUI defects of issue 30 part 4 in Chromium, one page per example (CI time): the
-logic behind each fix is unit-tested in tests/gui/test_gui_defects.py and
+logic behind each fix is unit-tested in tests/gui/test_gui_defect_logic.py and
 tests/service/test_die_view.py.
 
 - u_channel: no false "Problem: ... unreachable" on load (the die view is the cycle's), the
