@@ -20,7 +20,7 @@ from workbench.kinematics.model import RobotModel
 from workbench.pressbrake.airbend import short_flanges
 from workbench.pressbrake.bend_eval import fitting_station
 from workbench.pressbrake.bend_setup import Body
-from workbench.pressbrake.cycle import BendingCycle, check_cycle, cycle_die_placements
+from workbench.pressbrake.cycle import BendingCycle, check_cycle, die_placements, waypoint_joints
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
 from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.grasp import Grasp
@@ -93,12 +93,8 @@ class CycleRobot:
     def die_placements(
         self, part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell
     ) -> tuple[tuple[DiePlacement, ...], str]:
-        """Return each bend against its stop as `check_cycle` plans it (`cycle_die_placements`)."""
-        return cycle_die_placements(
-            part,
-            steps,
-            cell,
-            model=self.model,
-            T_world_base=self.T_world_base,
-            T_flange_tcp=self.T_flange_tcp,
-        )
+        """Return each bend against its stop as `check_cycle` plans it, and the arm
+        configuration's label (`cycle.waypoint_joints`, `cycle.die_placements`)."""
+        arm = (self.model, self.T_world_base, self.T_flange_tcp)
+        path, q_wp, label = waypoint_joints(part, steps, cell, arm)
+        return die_placements(part, path, q_wp, cell.press.T_world_die), label
