@@ -52,3 +52,48 @@ def test_the_time_tooltip_follows_the_plan(opened) -> None:  # type: ignore[no-u
     wait_for(lambda: app.timeline.motion is not None, what="the motion on the timeline")
     span = format_number(app.timeline.motion.duration)
     wait_for(lambda: field.text.hint == f"allowed [0, {span}] s", what="the tooltip's range")
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(900)
+def test_time_from_serve_to_controls_per_example(browser) -> None:  # type: ignore[no-untyped-def]
+    """Measure, per example, the seconds from starting `workbench serve` to the tabs visible in
+    Chromium (printed: issue 30 part 4 asks for 3 s; this records what it is here)."""
+    import os
+    import subprocess
+    import sys
+    import time
+
+    from browser_helpers import PAGE_TIMEOUT_MS, free_port
+
+    figures = {}
+    for project in sorted((ROOT / "projects").glob("*.json")):
+        port, token = free_port(), "t0ken" + project.stem.replace("_", "")
+        env = {**os.environ, "PYTHONPATH": str(ROOT)}
+        t0 = time.perf_counter()
+        proc = subprocess.Popen(
+            [sys.executable, "-m", "workbench", "serve", str(project), "--port", str(port)]
+            + ["--token", token],
+            env=env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
+        try:
+            assert proc.stdout is not None
+            for line in proc.stdout:
+                if "serving" in line:
+                    break
+            context = browser.new_context(viewport={"width": 1280, "height": 800})
+            page = context.new_page()
+            page.goto(f"http://127.0.0.1:{port}/?token={token}", timeout=PAGE_TIMEOUT_MS)
+            page.get_by_role("tab", name="Robot").wait_for(timeout=PAGE_TIMEOUT_MS)
+            figures[project.stem] = time.perf_counter() - t0
+            context.close()
+        finally:
+            proc.terminate()
+            proc.wait(timeout=30)
+    print("\nfrom `workbench serve` to the tabs visible [s]:")
+    for name, s in figures.items():
+        print(f"  {name:24s} {s:5.1f}")
+    assert len(figures) == len(list((ROOT / "projects").glob("*.json")))
