@@ -68,7 +68,7 @@ def test_time_from_serve_to_controls_per_example(browser) -> None:  # type: igno
 
     figures = {}
     for project in sorted((ROOT / "projects").glob("*.json")):
-        port, token = free_port(), "t0ken" + project.stem.replace("_", "")
+        port, token = free_port(), f"serve-timing-{project.stem}"  # 16 characters or more
         env = {**os.environ, "PYTHONPATH": str(ROOT)}
         t0 = time.perf_counter()
         proc = subprocess.Popen(
@@ -81,9 +81,13 @@ def test_time_from_serve_to_controls_per_example(browser) -> None:  # type: igno
         )
         try:
             assert proc.stdout is not None
+            said = []
             for line in proc.stdout:
+                said.append(line)
                 if "serving" in line:
                     break
+            else:
+                pytest.fail(f"{project.name}: the server did not start: {''.join(said)}")
             context = browser.new_context(viewport={"width": 1280, "height": 800})
             page = context.new_page()
             page.goto(f"http://127.0.0.1:{port}/?token={token}", timeout=PAGE_TIMEOUT_MS)
