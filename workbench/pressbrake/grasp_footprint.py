@@ -8,10 +8,10 @@ refused when its footprint
 - overlaps a hole of the flange (a cup over a hole leaks, a pad over one holds nothing); or
 - hangs over the flange's outline by more than `max_overhang`, a fraction of its area.
 
-`MAX_OVERHANG` = 0: a vacuum cup holds only when its whole sealing lip rests on the part
-(Schmalz, "Vacuum components: basics of vacuum technology", design of vacuum systems: the
-suction cup must rest completely on the workpiece surface), so none may hang over. A pad
-gripper may take a larger fraction (the project's `bending.grasp_grid.max_overhang`).
+`MAX_OVERHANG` = 0: a vacuum cup seals only where its whole lip rests on the part, so any
+overhang is a leak (the rule behind the vacuum makers' cup-selection guides, e.g. Schmalz's
+and Piab's; the page is not quoted here). A pad gripper may take a larger fraction (the
+project's `bending.grasp_grid.max_overhang`).
 """
 
 from __future__ import annotations

@@ -69,7 +69,7 @@ def check_holes(part: SheetMetalPart) -> None:
                 if f == fi:
                     p, q = fl.polygon[e], fl.polygon[(e + 1) % len(fl.polygon)]
                     zones.append((b.name, bend_zone_width(part, bi), shapely.LineString([p, q])))
-        shapes = []
+        shapes: list[shapely.Polygon] = []
         for hi, h in enumerate(fl.holes):
             where = f"flanges[{fi}] ('{fl.name}').holes[{hi}]"
             poly = shapely.Polygon(h)

@@ -54,11 +54,11 @@ def build_solid(state: FoldedState) -> trimesh.Trimesh:
             faces.append(np.array([[a + m, b + m, b], [a + m, b, a]]) + count)
         start = n
         for h in fl.holes:  # hole walls face into the hole: opposite winding to the outline's
-            k = len(h)
-            a = start + np.arange(k)
-            b = start + (np.arange(k) + 1) % k
-            faces.append(np.concatenate([np.c_[a + m, b, b + m], np.c_[a + m, a, b]]) + count)
-            start += k
+            nh = len(h)
+            ha = start + np.arange(nh)
+            hb = start + (np.arange(nh) + 1) % nh
+            faces.append(np.concatenate([np.c_[ha + m, hb, hb + m], np.c_[ha + m, ha, hb]]) + count)
+            start += nh
         count += 2 * m
 
     for i, bd in enumerate(part.bends):
