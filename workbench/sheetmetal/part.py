@@ -88,6 +88,16 @@ def _edge(poly: NDArray[np.float64], i: int) -> tuple[NDArray[np.float64], NDArr
     return poly[i], poly[(i + 1) % len(poly)]
 
 
+def _ring(value: Any, where: str) -> NDArray[np.float64]:
+    """Return `value` as (n, 2) floats; InputError naming `where` unless >= 3 finite points."""
+    ring = np.asarray(value, dtype=float)
+    if ring.ndim != 2 or ring.shape[1] != 2 or len(ring) < 3 or not np.all(np.isfinite(ring)):
+        raise InputError(
+            f"expected >= 3 finite [x, y] points [m], got shape {ring.shape}", field=where
+        )
+    return ring
+
+
 class SheetMetalPart:
     """A sheet-metal part: `thickness` [m], `flanges`, `bends` in sequence order."""
 
@@ -153,30 +163,11 @@ class SheetMetalPart:
             raise InputError(f"thickness: must be > 0 m, got {spec['thickness']!r}")
         flanges = []
         for i, f in enumerate(spec["flanges"]):
-            poly = np.asarray(f.get("polygon"), dtype=float)
-            if (
-                poly.ndim != 2
-                or poly.shape[1] != 2
-                or len(poly) < 3
-                or not np.all(np.isfinite(poly))
-            ):
-                raise InputError(
-                    f"flanges[{i}].polygon: expected >= 3 finite [x, y] points [m], got shape {poly.shape}"
-                )
-            holes = []
-            for j, h in enumerate(f.get("holes") or ()):
-                ring = np.asarray(h, dtype=float)
-                if (
-                    ring.ndim != 2
-                    or ring.shape[1] != 2
-                    or len(ring) < 3
-                    or not np.all(np.isfinite(ring))
-                ):
-                    raise InputError(
-                        f"flanges[{i}].holes[{j}]: expected >= 3 finite [x, y] points [m], got shape {ring.shape}",
-                        field=f"flanges[{i}].holes[{j}]",
-                    )
-                holes.append(ccw(ring))
+            poly = _ring(f.get("polygon"), f"flanges[{i}].polygon")
+            holes = [
+                ccw(_ring(h, f"flanges[{i}].holes[{j}]"))
+                for j, h in enumerate(f.get("holes") or ())
+            ]
             flanges.append(Flange(str(f.get("name", i)), poly, tuple(holes)))
         names = [f.name for f in flanges]
         if len(set(names)) != len(names):
