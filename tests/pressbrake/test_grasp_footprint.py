@@ -12,7 +12,7 @@ from workbench.pressbrake.grasp import Grasp
 from workbench.pressbrake.grasp_footprint import Footprint, footprint_problem, screen_grasps
 from workbench.pressbrake.grasp_grid import grasp_grid
 from workbench.sheetmetal import SheetMetalPart
-from workbench.sheetmetal.holes import circle
+from workbench.sheetmetal.holes import CHORD_TOLERANCE, circle
 
 T = 0.002
 
@@ -112,3 +112,25 @@ def test_a_part_whose_only_grasps_cover_holes_is_refused_naming_the_flange() -> 
         "covers hole H1 of flange F1",
         "covers hole H2 of flange F1",
     ]
+
+
+def test_holding_force_against_a_hand_computation() -> None:
+    from workbench.pressbrake.grasp_holding import holding
+
+    part = bracket()
+    cup = Footprint.cup(0.04)
+    h = holding(part, cup, peak_accel=5.0)
+    # by hand: area of the blank (two rectangles, the bend strip, less two holes) x t x 7850
+    strip = part.bend_allowances[0] * 0.12
+    holes = sum(
+        abs(np.cross(h_, np.roll(h_, -1, axis=0)).sum()) / 2 for h_ in part.flanges[0].holes
+    )
+    mass = (0.12 * 0.08 + 0.12 * 0.04 + strip - holes) * T * 7850.0
+    assert h.mass == pytest.approx(mass, rel=1e-12)
+    assert h.needed == pytest.approx(mass * (9.80665 + 5.0) * 1.5, rel=1e-12)
+    r = 0.02
+    # chorded cup: between the circles through its chords' midpoints and its vertices
+    assert np.pi * (r - CHORD_TOLERANCE) ** 2 * 60e3 < h.available <= np.pi * r**2 * 60e3
+    assert h.holds and "holds" in h.report()
+    weak = holding(part, Footprint.cup(0.004), peak_accel=5.0)
+    assert not weak.holds and "does NOT hold" in weak.report()
