@@ -9,9 +9,9 @@ refused when its footprint
 - hangs over the flange's outline by more than `max_overhang`, a fraction of its area.
 
 `MAX_OVERHANG` = 0: a vacuum cup seals only where its whole lip rests on the part, so any
-overhang is a leak (the rule behind the vacuum makers' cup-selection guides, e.g. Schmalz's
-and Piab's; the page is not quoted here). A pad gripper may take a larger fraction (the
-project's `bending.grasp_grid.max_overhang`).
+overhang is a leak. This is the seal's geometry, not a vendor's figure: the strictest
+choice, and the project's `bending.grasp_grid.max_overhang` relaxes it (a pad gripper may take
+a larger fraction).
 """
 
 from __future__ import annotations

@@ -2,13 +2,16 @@
 
 SI units. The cup pulls with F = Δp · A (pressure difference [Pa] times the cup's area
 [m²]); it must carry the part's weight and the robot's peak acceleration with a safety
-factor: F ≥ m · (g + a) · S (load case "horizontal cup, vertical movement" of the vacuum
-makers' holding-force calculation, e.g. Schmalz's vacuum knowledge pages on calculating the
-holding force: S ≥ 1.5 for smooth, non-porous parts such as sheet steel).
+factor: F ≥ m · (g + a) · S (load case I, "suction cup horizontal, direction of force
+vertical", of Schmalz's "Theoretical Holding Force of a Suction Cup", schmalz.com, vacuum
+knowledge > system design > calculation example: "The safety factor has a minimum value of 1.5
+for smooth and dense workpieces").
 
-`VACUUM_DIFFERENCE` = 60 kPa: the working vacuum (−0.6 bar against the atmosphere) such
-guides use for smooth, non-porous parts. `DENSITY` = 7850 kg/m³: structural steel (EN 1991-1-1
-Table A.4 gives 77–78.5 kN/m³). Both are defaults; a project that knows better passes its own.
+`VACUUM_DIFFERENCE` = 60 kPa: Schmalz's glossary, "Holding force" (schmalz.com/en/glossary):
+"It is usual to state the holding force of a suction cup with a relative vacuum of 60%" (60 % of
+the 101.3 kPa atmosphere, rounded down to 60 kPa). `DENSITY` = 7850 kg/m³: structural steel
+(EN 1991-1-1 Table A.4 gives 77–78.5 kN/m³). Both are defaults; a project that knows better
+passes its own.
 """
 
 from __future__ import annotations

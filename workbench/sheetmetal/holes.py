@@ -28,7 +28,9 @@ if TYPE_CHECKING:
     from workbench.sheetmetal.part import SheetMetalPart
 
 MIN_HOLE_GAP = 0.5e-3
-"""Smallest web [m] between a hole and the outline or another hole."""
+"""Smallest web [m] between a hole and the outline or another hole: a check of the model (a
+hole that touches the outline is a notch, and must be drawn as one), not a design rule; the
+manufacturing rules (e.g. hole-to-edge distance against thickness) are the designer's."""
 
 CHORD_TOLERANCE = 0.05e-3
 """Largest distance [m] between a chorded circle or arc and the true curve."""
