@@ -96,7 +96,8 @@ class OBB:
         Their values were checked when those boxes were made (finite, proper orthonormal,
         non-negative), so only the shapes are: an index that reached into a box's own
         coordinates goes through the full check and is refused there. The trees' traversals
-        index boxes tens of thousands of times per plan; checking each again cost ~15 % of it.
+        index boxes tens of thousands of times per plan (the seed part cell's cycle plan: 21.3 s
+        with this, 21.9-23.8 s checking each again, measured here).
         """
         batch = center.shape[:-1]
         if (
