@@ -92,6 +92,28 @@ def test_margin_verdict_equals_the_least_distance_verdict(
     assert verdicts == {True, False}  # both verdicts were met
 
 
+@pytest.mark.parametrize("with_engine", [False, True])
+def test_a_tie_is_named_by_its_first_sample(
+    wb: Workbench, spheres: CollisionEngine, with_engine: bool
+) -> None:
+    """The robot holds its nearest posture, to within nanometres, over three samples (a rigid
+    pair at one distance over a stretch of a plan): the clearance names the first of them, not
+    whichever rounding made least (a golden summary's time flipped between installs); the
+    distance is still the least.
+    Twin: the brute force's per-sample least distances, the first within the tie."""
+    mid = (Q0 + Q1) / 2
+    nearer = Q1 + 1e-7 * (Q1 - Q0)  # a hair further towards the block: nanometres nearer
+    qs = np.array([Q0, mid, Q1, nearer, nearer, mid, Q0])
+    t = np.arange(len(qs)) * 0.5
+    got = plan_clearance(wb.checker, t, qs, engine=spheres if with_engine else None)
+    per_sample = [_brute_force(wb, q[None], set())[0] for q in qs]
+    assert 0.0 < per_sample[2] - per_sample[3] < 1e-7  # sample 3 is least, by less than a tie
+    first = next(i for i, d in enumerate(per_sample) if d <= min(per_sample) + 1e-7)
+    assert got.index == first == 2  # the tie begins at sample 2 (the old argmin said 3)
+    assert got.time == t[2]
+    assert got.distance == pytest.approx(min(per_sample), abs=1e-12)  # the least, not sample 2's
+
+
 def test_exempt_pair_is_left_out_and_listed(wb: Workbench) -> None:
     """Twin: the brute force without the exempt pair; the description lists the exemption."""
     qs = np.linspace(Q0, Q1, 5)

@@ -101,12 +101,16 @@ def test_reorder_fold_plan_and_first_collision(launch, tmp_path: Path) -> None: 
     (ROOT / "docs").mkdir(exist_ok=True)
     save_screenshot(page, "bending.png")
 
-    # Download a colliding plan: refused, and (no --force in the GUI) the message says what a
-    # GUI user can do.
+    # Download a colliding plan: refused, the message says what a GUI user can do, and the
+    # GUI's own "Export anyway" writes it.
     wait_for(lambda: not app.bending.export.disabled, what="Download enabled by the plan")
     page.get_by_role("button", name="Download program").click()
-    page.get_by_text("The GUI writes only plans without problems").first.wait_for()
-    page.get_by_text("--workflow bending --force").first.wait_for()
+    page.get_by_text("the plan has problems").first.wait_for()
+    page.get_by_text('press "Export anyway"').first.wait_for()
+    with page.expect_download() as dl:
+        page.get_by_role("button", name="Export anyway").click()
+    assert dl.value.suggested_filename
+    wait_for(lambda: not app.bending.export.anyway.visible, what="Export anyway hidden again")
 
 
 def test_plan_and_download_the_bending_program(launch) -> None:  # type: ignore[no-untyped-def]

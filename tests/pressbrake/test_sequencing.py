@@ -41,6 +41,7 @@ from workbench.pressbrake.bend_eval import (
     SideEval,
     SweepContext,
     evaluate,
+    grasp_label,
     reach_where_part_rests,
 )
 from workbench.pressbrake.grasp_grid import GridSettings, grasp_grid
@@ -547,3 +548,15 @@ def test_via_home_the_wrist_goes_halfway_and_the_arm_home() -> None:
     lone[0] = [0.1, 0.2, 0.3, 1.0, -0.5, 2.0]
     _carry_the_wrist(lone, [0])
     np.testing.assert_array_equal(lone[1], home)
+
+
+def test_grasps_set_apart_by_their_footprint_head_the_rejected_table(
+    base_ctx: SweepContext,
+) -> None:
+    ctx = _few(base_ctx)
+    g = ctx.grasps[0]
+    refused = ((g, "covers hole H1 of flange F2"),)
+    result = find_sequences(dataclasses.replace(ctx, refused=refused), verify=None, time_limit=1e-9)
+    assert result.rejected[0] == ((), f"grasp {grasp_label(g)}: covers hole H1 of flange F2")
+    plain = find_sequences(ctx, verify=None, time_limit=1e-9)
+    assert all(why != result.rejected[0][1] for _, why in plain.rejected)

@@ -423,3 +423,21 @@ def test_a_bottom_grasp_puts_the_tcp_on_the_bottom_face_looking_up(
 def test_the_dataclass_defaults_keep_old_callers() -> None:
     si = si_of(example_dict())
     assert si.grasp.face == 1 and Grasp("1").face == 1
+
+
+def test_flange_holes_in_mm_reach_the_part_in_metres_and_a_part_without_keeps_its_json() -> None:
+    data = json.loads(SEED_PART.read_text())
+    plain = PartSpec.model_validate(data)
+    assert all(
+        "holes" not in f for f in plain.model_dump(mode="json", exclude_none=True)["flanges"]
+    )
+    x, y = np.asarray(data["flanges"][0]["polygon"], dtype=float).mean(axis=0)  # base centre [mm]
+    data["flanges"][0]["holes"] = [[[x - 5, y - 3], [x + 5, y - 3], [x + 5, y + 3], [x - 5, y + 3]]]
+    part = SheetMetalPart.from_spec(PartSpec.model_validate(data).to_si())
+    (hole,) = part.flanges[0].holes
+    np.testing.assert_allclose(hole.mean(axis=0), [x * 1e-3, y * 1e-3], atol=1e-15)
+    unholed = SheetMetalPart.from_spec(plain.to_si())
+    assert unholed.blank_area() - part.blank_area() == pytest.approx(60e-6, rel=1e-9)
+    data["flanges"][0]["holes"] = [[[0, 0], [1, 1]]]
+    with pytest.raises(ProjectError, match=r"flanges\[0\]\.holes\[0\]"):
+        PartSpec.checked(data, "bending.part_file", "seed_part.json")

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+import shapely
 
 from workbench import Workbench
 from workbench.errors import WorkbenchError
@@ -73,3 +74,22 @@ def test_a_grid_with_too_many_candidates_says_how_to_fix_it() -> None:
     wb = _open(spacing=2, inset=0)
     with pytest.raises(WorkbenchError, match=r"bending\.grasp_grid: .*widen the spacing"):
         wb.bending.find_sequences()
+
+
+def test_a_cup_footprint_sets_apart_the_grasps_over_an_edge_and_says_why() -> None:
+    wide = dict(spacing=40, inset=0, yaws=[0])
+    free = sweep_context(_open(**wide).bending)
+    ctx = sweep_context(_open(**wide, cup_diameter=30).bending)
+    assert not free.refused and ctx.refused
+    assert len(ctx.grasps) + len(ctx.refused) == len(free.grasps)
+    part = _open(**wide).bending.part
+    for g, why in ctx.refused:  # inset 0: every refused cup centre is within 15 mm of an edge
+        poly = shapely.Polygon(part.flanges[part.flange_index(g.flange)].polygon)
+        assert "hangs" in why and poly.exterior.distance(shapely.Point(*g.offset)) < 0.015
+    for g in ctx.grasps:
+        poly = shapely.Polygon(part.flanges[part.flange_index(g.flange)].polygon)
+        assert poly.exterior.distance(shapely.Point(*g.offset)) >= 0.015 - 1e-4  # chorded cup
+    half = sweep_context(_open(**wide, cup_diameter=30, max_overhang=0.5).bending)
+    assert len(half.refused) < len(ctx.refused)
+    with pytest.raises(WorkbenchError, match="cup_diameter or pad"):
+        _open(**wide, cup_diameter=30, pad=[20, 10])

@@ -7,8 +7,9 @@ What is read (R12 to R2018, ASCII or binary, model space, blocks inserted there 
 - Outline: the closed contours off the bend layers: closed LWPOLYLINE/POLYLINE (bulges
   included), CIRCLE, closed SPLINE/ELLIPSE, and LINE/ARC/open polyline chains joined end to end
   within `JOIN_TOL`; curves are flattened within `CHORD_TOL`. The largest contour is the
-  outline; contours inside it are holes (kept in `FlatPattern.holes`, not in the part: its
-  flanges have none); a contour outside it is refused (one part per file).
+  outline; contours inside it are holes (`FlatPattern.holes`; each becomes a hole of the
+  flange it falls in, `workbench.sheetmetal.flat_split`); a contour outside it is refused
+  (one part per file).
 - Bend lines: LINE entities on layer `bend_layer`, ``<bend_layer>_UP`` or ``<bend_layer>_DOWN``
   (case-insensitive; "-" or " " for "_"). The angle (and the direction, and optionally the
   inner radius) come from the bend note nearest the line (`workbench.cad.bend_notes`); the
@@ -166,8 +167,6 @@ def _outline(curves: list, name: str, field: str, unit: str, scale: float) -> tu
             field=field,
         )
     notes = []
-    if holes:
-        notes.append(f"{len(holes)} inner contour(s) (holes, cutouts) left out of the part")
     if chains:
         notes.append(f"{len(chains)} open curve chain(s) off the bend layers ignored")
     return polys[0][1], tuple(holes), notes

@@ -30,6 +30,9 @@ from workbench.errors import InputError
 
 FloatArray = NDArray[np.float64]
 Pair = tuple[str, str]
+#: Distances [m] this close to the least are one tie: the clearance names the first sample of
+#: a tie (0.1 um, a thousandth of the 0.1 mm a clearance is printed to; fcl's rounding is ~1e-12).
+TIE = 1e-7
 #: The largest margin [m] a plan may ask for (a clearance of a metre is no margin but a cell).
 MAX_MARGIN = 0.5
 
@@ -137,20 +140,23 @@ def plan_clearance(
     lower = _lower_bounds(checker, qs, engine)  # (N, P) [m]
     lower[:, ~keep] = np.inf
     order = np.argsort(lower, axis=None, kind="stable")
-    best, where = np.inf, (-1, -1)
+    best = np.inf
+    found: list[tuple[float, int, int]] = []  # (distance, sample, pair) of every one measured
     placed = -1
     for flat in order:
         i, k = divmod(int(flat), len(pairs))
-        if not lower[i, k] < best:
-            break  # every bound left is no smaller than the least distance found
+        if not lower[i, k] <= best + TIE:
+            break  # every bound left is farther than the least distance found (and its ties)
         if i != placed:
             scene.place(checker.world_poses(qs[i]))
             placed = i
         a, b = pairs[k]
         d = 0.0 if scene.collides(a, b) else scene.distance(a, b)
-        if d < best:
-            best, where = d, (i, k)
-    i, k = where
+        found.append((d, i, k))
+        best = min(best, d)
+    # Ties (a rigid pair at one distance over a stretch of the plan) are named by their first
+    # sample, not by whichever fcl's last-bit rounding made least: the time is reproducible.
+    i, k = min((i, k) for d, i, k in found if d <= best + TIE)
     return Clearance(float(best), pairs[k], float(t[i]), i, m, ex)
 
 

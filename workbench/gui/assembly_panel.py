@@ -373,7 +373,11 @@ class AssemblyPanel:
                     **self._options(),  # type: ignore[arg-type]
                 )
         except Exception:
+            # a refused plan leaves nothing to download (the service dropped the last plan;
+            # a plan refused as Busy never started and keeps it)
             self.result.content = ""
+            self.download.disabled = self.wb.assembly.last_part_plan is None
+            self.programs.disabled = self.wb.assembly.last_plan is None
             raise
         self.plan = plan
         pp = plan.tasks[0].part_plan if one else plan.tasks[-1].part_plan
@@ -393,7 +397,7 @@ class AssemblyPanel:
             state += f" (first contact: {plan.contacts[0].describe()})"
         self.result.content = f"{head}\n\nTimed motion: {plan.duration:.2f} s, {state}"
         self.download.disabled = False
-        self.prog_download.disabled = False
+        self.programs.disabled = False
         main = next(arm for arm in self.wb.assembly.arms.values() if arm.main)
         self.app.timeline.load(
             replace(plan.motions[main.name], name="Assembly" if not one else f"Assembly: {name}"),

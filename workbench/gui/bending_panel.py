@@ -125,7 +125,9 @@ class BendingPanel:
         self.progress = g.add_progress_bar(0.0, visible=False, animated=True)
         self.result = g.add_markdown("")
         self.export = ProgramDownload(s, lambda: self.app.wb, "bending")  # the plan's programs
-        self.plot_folder = g.add_folder("Per-frame checks (Fig. 12)", visible=not self.has_press)
+        self.plot_folder = g.add_folder(
+            "Per-frame checks: tree vs flat loop", visible=not self.has_press
+        )
         self.handles += [
             self.info,
             self.look,
@@ -366,10 +368,14 @@ class BendingPanel:
 
     def _on_plan(self, event: viser.GuiEvent) -> None:
         svc = self.app.wb.bending
-        with busy(
-            self.progress, [self.plan_button], self.result, what="planning the bending"
-        ) as progress:
-            plan = svc.plan(progress=progress)
+        try:
+            with busy(
+                self.progress, [self.plan_button], self.result, what="planning the bending"
+            ) as progress:
+                plan = svc.plan(progress=progress)
+        except Exception:
+            self.export.disabled = svc.last_plan is None  # a refused plan: nothing to export
+            raise
         self._show_plan(plan)
 
     def _show_plan(self, plan: BendingResult) -> None:

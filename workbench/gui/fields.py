@@ -111,8 +111,9 @@ class NumberField:
         self.delay = delay
         self._lock = threading.RLock()
         self._timer: threading.Timer | None = None
+        self._hint = hint
         text = self._text()
-        self.text = server.gui.add_text(label, text, hint=hint or f"allowed {allowed()}")
+        self.text = server.gui.add_text(label, text, hint=self.hint())
         self.text.on_update(self._on_text)
         self.slider: Any = None
         if slider is not None:
@@ -132,9 +133,17 @@ class NumberField:
         v = self.get()
         return "" if v is None else format_number(float(v), self.decimals)
 
+    def hint(self) -> str:
+        """Return the box's tooltip: the given hint, or the range allowed now."""
+        return self._hint or f"allowed {self.allowed()}"
+
     def refresh(self) -> None:
-        """Show the service's value in the box and on the slider (fires no commit)."""
+        """Show the service's value in the box and on the slider, and the tooltip of the
+        range allowed now (it follows the value's range: a planned motion's duration)."""
         with self._lock:
+            hint = self.hint()
+            if self.text.hint != hint:
+                self.text.hint = hint
             text = self._text()
             if self.text.value != text:
                 self.text.value = text  # type: ignore[misc]  # event.client None: ignored by _on_text

@@ -29,9 +29,11 @@ from workbench.gui.notify import guarded, notify
 from workbench.gui.uploads import safe_name
 from workbench.service.project_imports import (
     PartImportSpec,
+    Pose,
     add_cell_file,
     import_bending_part,
     import_settings,
+    obstacle_coordinate,
     robot_choices,
     use_robot,
 )
@@ -69,7 +71,9 @@ class ImportPanel:
                 icon=viser.Icon.UPLOAD,
                 hint="a STEP of the bent part, or a DXF flat pattern with its bend lines",
             )
-            self.at = g.add_vector3("Obstacle at [mm]", initial_value=(800.0, 0.0, 0.0), step=1.0)
+            # three strict boxes (viser's vector box reads "12,5" as 125: fields.py)
+            self.at_mm = [800.0, 0.0, 0.0]
+            self.at_fields = [self._at_field(i, axis) for i, axis in enumerate("xyz")]
             self.obstacle = g.add_upload_button(
                 "Import obstacle", icon=viser.Icon.UPLOAD, hint="a STEP, STL, OBJ or PLY file"
             )
@@ -109,6 +113,20 @@ class ImportPanel:
             allowed=lambda: "blank (not given) or " + schema_range(PartImportSpec(), key, "mm"),
             clear=lambda: put(None),
             hint=hint,
+        )
+
+    def _at_field(self, i: int, axis: str) -> NumberField:
+        def put(v: float) -> None:
+            self.at_mm[i] = obstacle_coordinate(i, v)
+
+        return NumberField(
+            self.server,
+            f"Obstacle at {axis} [mm]",
+            get=lambda: self.at_mm[i],
+            put=put,
+            allowed=lambda: schema_range(Pose(), "xyz", "mm"),
+            decimals=2,
+            hint=f"{axis} of the next imported obstacle's position in the world [mm]",
         )
 
     def settings(self) -> dict[str, float | str]:
@@ -168,7 +186,7 @@ class ImportPanel:
         wb = self.app.wb
         try:
             wb.folders = wb.folders.with_session(folder)
-            xyz = [float(v) for v in self.at.value]
+            xyz = list(self.at_mm)
             added = self._apply(
                 "importing an obstacle",
                 lambda: add_cell_file(wb, path, xyz_mm=xyz),

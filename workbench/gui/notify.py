@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import logging
+import re
 import traceback
 from collections.abc import Callable
 from typing import Any, TypeVar
@@ -17,6 +18,20 @@ log = logging.getLogger("workbench.gui")
 F = TypeVar("F", bound=Callable[..., Any])
 INFORMING = ("green", "blue")  # notification colours that close by themselves
 AUTO_CLOSE_S = 6.0  # [s] how long an informing notification stays
+_LINK = re.compile(r"\[([^\]]+)\]\(([^)\s]+)\)")
+_BOLD = re.compile(r"\*\*(.+?)\*\*")
+
+
+def plain_text(text: str) -> str:
+    """Return `text` without markdown marks: a notification shows its text as written.
+
+    Bold (`**x**`) and code marks (backticks) are dropped, a link `[x](url)`
+    becomes `x (url)`, a line break written as two trailing spaces a plain line break.
+    Everything else (a lone asterisk, underscores in a name) is kept.
+    """
+    out = _LINK.sub(r"\1 (\2)", text)
+    out = _BOLD.sub(r"\1", out)
+    return out.replace("`", "").replace("  \n", "\n")
 
 
 def notify(
@@ -31,8 +46,8 @@ def notify(
     targets = [client] if client is not None else list(server.get_clients().values())
     for c in targets:
         c.add_notification(
-            title,
-            body,
+            plain_text(title),
+            plain_text(body),
             color=color,
             with_close_button=True,  # type: ignore[call-overload]
             # what informs (green: done, blue: for your information) closes by itself;

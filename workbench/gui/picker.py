@@ -68,6 +68,18 @@ def examples() -> list[Example]:
     return []
 
 
+def example_index(found: list[Example], path: Path | None) -> int | None:
+    """Return the index in `found` of the example at `path` (the same file, however named),
+    or None when `path` is no example of the list (an upload, a saved copy, no file)."""
+    if path is None:
+        return None
+    real = Path(os.path.realpath(path))
+    for i, e in enumerate(found):
+        if Path(os.path.realpath(e.path)) == real:
+            return i
+    return None
+
+
 def is_example(path: Path | None) -> bool:
     """Return True when `path` lies in an example folder (read-only to "Save")."""
     if path is None:

@@ -2,8 +2,9 @@
 shows (Motion, Bending, Assembly, Polishing), one helper, `ProgramDownload`.
 
 The download is the service's export (`Workbench.export_program(fmt, workflow)`), so the file is
-the one `workbench export` writes. A plan with problems is refused with what a GUI user can do
-(the service's message names `force=True` / `--force`, which the GUI does not offer); notes of
+the one `workbench export` writes. A plan with problems is refused with what a GUI user can do,
+and an "Export anyway" button appears beside Download (the GUI's `--force`: the plan's
+problems are named again in the notes); a new plan hides it. Notes of
 the export come as a notification, and an export of a pressing process in a format without
 force control says, and keeps saying until closed, that its targets assume a compliant tool
 with D = F/k (`service.programs.contact_note`).
@@ -42,10 +43,9 @@ def refusal(workflow: str, summary: str) -> str:
     """Return why the GUI does not write a plan with problems and what its user can do."""
     tab = WORKFLOW_TITLES.get(workflow, workflow)
     return (
-        f"{workflow}: the plan has problems: {summary}. The GUI writes only plans without"
-        f" problems: fix what the summary names (in the project, or the {tab} tab's settings)"
-        " and plan again. To write this plan anyway, save the project and run"
-        f" `workbench export PROJECT --workflow {workflow} --force` on the command line."
+        f"{workflow}: the plan has problems: {summary}. Fix what the summary names (in the"
+        f' project, or the {tab} tab\'s settings) and plan again, or press "Export anyway"'
+        " to write this plan with its problems."
     )
 
 
@@ -78,8 +78,16 @@ class ProgramDownload:
             initial_value=wb().default_program_format() or "rapid",
         )
         self.button = g.add_button(label, icon=viser.Icon.DOWNLOAD, disabled=disabled, hint=hint)
+        self.anyway = g.add_button(
+            "Export anyway",
+            icon=viser.Icon.ALERT_TRIANGLE,
+            color="red",
+            visible=False,
+            hint="Write the refused plan with its problems (the command line's --force)",
+        )
         self.button.on_click(guarded(server, "Export")(self._on_click))
-        self.handles: list[Removable] = [self.format, self.button]
+        self.anyway.on_click(guarded(server, "Export anyway")(self._on_anyway))
+        self.handles: list[Removable] = [self.format, self.button, self.anyway]
 
     @property
     def disabled(self) -> bool:
@@ -88,20 +96,30 @@ class ProgramDownload:
 
     @disabled.setter
     def disabled(self, value: bool) -> None:
+        """Enable (a new plan) or disable (no plan) Download; either hides "Export anyway",
+        which belongs to the refused plan."""
         self.button.disabled = value
+        self.anyway.visible = False
 
-    def export(self) -> ExportedProgram:
+    def export(self, *, force: bool = False) -> ExportedProgram:
         """Return the workflow's latest plan (planned now if none) exported in the dropdown's
-        format; PlanningError with what a GUI user can do when the plan has problems."""
+        format; PlanningError with what a GUI user can do when the plan has problems, unless
+        `force` (then "Export anyway" shows until the next plan)."""
         wb, fmt = self.wb(), str(self.format.value)
         plan = latest_plan(wb, self.workflow)
-        if not plan.ok:
+        if not plan.ok and not force:
+            self.anyway.visible = True
             raise PlanningError(refusal(self.workflow, plan.summary()))
-        return wb.export_program(fmt, self.workflow)
+        return wb.export_program(fmt, self.workflow, force=force)
 
     def _on_click(self, event: viser.GuiEvent) -> None:
-        exported = self.export()
-        client = event.client
+        self._send(self.export(), event.client)
+
+    def _on_anyway(self, event: viser.GuiEvent) -> None:
+        self._send(self.export(force=True), event.client)
+        self.anyway.visible = False
+
+    def _send(self, exported: ExportedProgram, client: viser.ClientHandle | None) -> None:
         if client is not None:
             name, data = download_of(exported, self.stem())
             client.send_file_download(name, data, save_immediately=True)

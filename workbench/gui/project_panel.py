@@ -26,7 +26,7 @@ import viser
 from workbench.errors import InputError
 from workbench.gui import project_upload
 from workbench.gui.notify import guarded, notify
-from workbench.gui.picker import Example, examples, is_example
+from workbench.gui.picker import Example, example_index, examples, is_example
 from workbench.service.project_files import save_target
 from workbench.service.project_save import SavedProject, save_project_file
 from workbench.service.project_zip import zip_stem
@@ -105,6 +105,9 @@ class ProjectPanel:
         else:
             where = f"`{wb.path}`"
         self.info.content = f"**{wb.project.name}**  \n{where}"
+        shown = example_index(self.examples, wb.path)
+        if shown is not None:  # the dropdown shows the example open (else the last chosen)
+            self.example.value = self.example.options[shown]  # type: ignore[misc]
         self.where.content = f"Writes in `{self.folder}`"
         self.save.disabled = wb.path is None or is_example(wb.path)
         self.save.label = f"Save to {wb.path.name}" if wb.path is not None else "Save"

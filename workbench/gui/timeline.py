@@ -105,6 +105,7 @@ class Timeline:
             self._plot_folder.remove()
         self.plots = self._make_plots(motion)
         self._pose(0.0)
+        self.time_field.refresh()  # the box's tooltip: the new motion's range
 
     def clear(self) -> None:
         """Drop the loaded motion and its plots (the project it came from was replaced)."""

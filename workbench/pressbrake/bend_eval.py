@@ -144,6 +144,7 @@ class SweepContext:
     lift: float = 0.0  # [m] approach height at the stack and the pallet
     approach: F64 | None = None  # (3,) [m] die frame: the pose before the stop, and after
     T_world_regrip: F64 | None = None  # the part's pose on the regrip station (None: no check)
+    refused: tuple[tuple[Grasp, str], ...] = ()  # grid candidates set apart by their footprint
 
     def part(self) -> SheetMetalPart:
         """Return the part (built once per process and context)."""

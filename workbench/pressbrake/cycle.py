@@ -52,6 +52,7 @@ from workbench.pressbrake.cycle_path import (
     T_part_tcp,
     cycle_path,
 )
+from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.obstacles import Obstacles, cell_obstacles
 from workbench.pressbrake.press_check import PartHit, check_states
 from workbench.pressbrake.press_signals import PressEvent, press_events
@@ -366,6 +367,39 @@ def _frame_times(traj: Trajectory, dt: float) -> F64:
     return np.unique(np.concatenate([grid, marks, [traj.duration]]))
 
 
+def waypoint_joints(
+    part: SheetMetalPart,
+    steps: list[CycleStep],
+    cell: CycleCell,
+    robot: tuple[RobotModel, F64, F64],
+) -> tuple[CyclePath, F64, str]:
+    """Return the cycle's path, the joints (N, dof) [rad] at its waypoints and the
+    configuration's label: the cycle's own inverse kinematics (the home branch, one
+    configuration throughout) of `robot` (model, T_world_base, T_flange_tcp), before any
+    detour. UnreachableError names the first waypoint the robot cannot reach."""
+    model, T_world_base, T_flange_tcp = robot
+    path = cycle_path(part, steps, cell)
+    branch = home_branch(model, cell.q_home)
+    q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
+    return path, q_wp, label
+
+
+def die_placements(
+    part: SheetMetalPart, path: CyclePath, q_wp: F64, T_world_die: F64
+) -> tuple[DiePlacement, ...]:
+    """Return each bend of the cycle `path` against its back-gauge stop, as `check_cycle`
+    plans it: the step's grasp and station, the joints `q_wp` (N, dof) [rad] at the stop."""
+    starts = {ph.bend: ph.start for ph in path.phases if ph.kind == "bend"}
+    out = []
+    for k, b in enumerate(part.bends):
+        i = starts[k]  # the stop: where the bend's phase starts
+        T_tcp = path.waypoints[i].T_world_tcp
+        assert T_tcp is not None  # a stop at the die is a pose, never home
+        T_part = T_world_die @ path.bend_poses[k][0].T_die_part
+        out.append(DiePlacement(b.name, k, T_part, T_tcp, q_wp[i]))
+    return tuple(out)
+
+
 def check_cycle(
     part: SheetMetalPart,
     steps: list[CycleStep],
@@ -385,11 +419,8 @@ def check_cycle(
     part's checks; `checker` holds the robot against the cell and the press.
     """
     report = progress or (lambda f, m: None)
-    report(0.0, "building the cycle's waypoints")
-    path = cycle_path(part, steps, cell)
-    report(0.05, "inverse kinematics")
-    branch = home_branch(model, cell.q_home)
-    q_wp, label = cycle_joints(model, T_world_base, T_flange_tcp, path, cell.q_home, branch)
+    report(0.0, "building the cycle's waypoints and their inverse kinematics")
+    path, q_wp, label = waypoint_joints(part, steps, cell, (model, T_world_base, T_flange_tcp))
     # The gripper's contacts where it handles the part are exempt from the clearance margin.
     handling = [q_wp[i] for i, w in enumerate(path.waypoints) if w.action in HANDLING]
     policy = policy.exempting(gripper_contacts(checker, handling))

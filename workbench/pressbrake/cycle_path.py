@@ -175,6 +175,14 @@ def T_part_tcp(
     return state.T_part_flange[g] @ T_flange_grasp(part, grasp)  # type: ignore[no-any-return]
 
 
+def T_world_part_on_die(part: SheetMetalPart, k: int, st: CycleStep, press: PressBrake) -> F64:
+    """Return T_world_part (4, 4) [m] of bend k against its stop as the cycle puts it on the
+    die: the step's station and grasp (whose flange faces the robot), the bend not begun."""
+    state = fold_state(part, k, check=False)
+    pose = bend_pose(state, k, st.grasp, press, press.station(st.station))
+    return press.T_world_die @ pose.T_die_part  # type: ignore[no-any-return]
+
+
 def cycle_path(part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell) -> CyclePath:
     """Return the waypoints and phases of one cycle of `part` (its bends in sequence order,
     one `CycleStep` per bend). InputError: steps that do not match the sequence, a station

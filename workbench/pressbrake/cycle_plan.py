@@ -20,8 +20,9 @@ from workbench.kinematics.model import RobotModel
 from workbench.pressbrake.airbend import short_flanges
 from workbench.pressbrake.bend_eval import fitting_station
 from workbench.pressbrake.bend_setup import Body
-from workbench.pressbrake.cycle import BendingCycle, check_cycle
+from workbench.pressbrake.cycle import BendingCycle, check_cycle, die_placements, waypoint_joints
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.die import DiePlacement
 from workbench.pressbrake.grasp import Grasp
 from workbench.pressbrake.press import PressBrake
 from workbench.sheetmetal.part import SheetMetalPart
@@ -88,3 +89,12 @@ class CycleRobot:
             cell_bodies=self.cell_bodies,
             progress=progress,
         )
+
+    def die_placements(
+        self, part: SheetMetalPart, steps: list[CycleStep], cell: CycleCell
+    ) -> tuple[tuple[DiePlacement, ...], str]:
+        """Return each bend against its stop as `check_cycle` plans it, and the arm
+        configuration's label (`cycle.waypoint_joints`, `cycle.die_placements`)."""
+        arm = (self.model, self.T_world_base, self.T_flange_tcp)
+        path, q_wp, label = waypoint_joints(part, steps, cell, arm)
+        return die_placements(part, path, q_wp, cell.press.T_world_die), label

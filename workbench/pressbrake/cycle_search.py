@@ -22,7 +22,7 @@ from workbench.pressbrake.bend_eval import Reach, SweepContext
 from workbench.pressbrake.cycle import PartScene
 from workbench.pressbrake.cycle_path import CycleCell, CycleStep
 from workbench.pressbrake.cycle_plan import CycleRobot, reordered
-from workbench.pressbrake.grasp_grid import GridSettings, grasp_grid
+from workbench.pressbrake.grasp_grid import GridSettings, screened_grid
 from workbench.pressbrake.press import PressBrake
 from workbench.pressbrake.sequencing import (
     Rejected,
@@ -61,7 +61,7 @@ def sweep_context(
     )
     g = grid
     try:
-        grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
+        grasps, refused = screened_grid(part, g)
     except InputError as exc:
         said = exc.detail if exc.field in ("grasp grid", "grasp spacing") else str(exc)
         where = ".spacing" if exc.field == "grasp spacing" else ""
@@ -78,6 +78,7 @@ def sweep_context(
         lift=lift,
         approach=approach,
         T_world_regrip=T_world_regrip,
+        refused=tuple(refused),
     )
 
 

@@ -3,7 +3,9 @@
 SI units. A flange's candidates are its centroid and the points of a square grid of
 `spacing` [m] (aligned with the flange's frame) that lie at least `inset` [m] inside its
 polygon, each with every yaw [rad] and face (+1 top, -1 bottom) asked for. The order is
-fixed (flange, then point, then yaw, then face), so a search is repeatable.
+fixed (flange, then point, then yaw, then face), so a search is repeatable. With a gripper
+`footprint` the candidates whose cup or pad covers a hole or hangs over an edge are set apart
+with why (`workbench.pressbrake.grasp_footprint`, `screened_grid`).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.pressbrake.grasp import Grasp
+from workbench.pressbrake.grasp_footprint import MAX_OVERHANG, Footprint, screen_grasps
 from workbench.sheetmetal.part import SheetMetalPart
 
 #: Most candidates a search takes (each is checked by IK at every bend it could serve).
@@ -30,13 +33,26 @@ counted from `bending.grasp_grid.spacing` before any is made."""
 @dataclass(frozen=True)
 class GridSettings:
     """The candidate grid of a search (SI): `spacing` and `inset` [m], the gripper's `yaws`
-    [rad] about the flange normal and the `faces` held (+1 top, -1 bottom); the project's
-    `bending.grasp_grid`."""
+    [rad] about the flange normal and the `faces` held (+1 top, -1 bottom), the gripper's
+    `footprint` (None: not checked against holes and edges) and the fraction of it that may
+    hang over an edge, `max_overhang`; the project's `bending.grasp_grid`."""
 
     spacing: float = 0.025
     inset: float = 0.008
     yaws: tuple[float, ...] = (0.0, np.pi / 2, np.pi, -np.pi / 2)
     faces: tuple[int, ...] = (1,)
+    footprint: Footprint | None = None
+    max_overhang: float = MAX_OVERHANG
+
+
+def screened_grid(
+    part: SheetMetalPart, g: GridSettings
+) -> tuple[list[Grasp], list[tuple[Grasp, str]]]:
+    """Return the candidates of grid `g` whose footprint holds, and the others with why."""
+    grasps = grasp_grid(part, spacing=g.spacing, inset=g.inset, yaws=g.yaws, faces=g.faces)
+    if g.footprint is None:
+        return grasps, []
+    return screen_grasps(part, grasps, g.footprint, g.max_overhang)
 
 
 def grasp_grid(

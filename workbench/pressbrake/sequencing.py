@@ -550,7 +550,9 @@ class _Search:
         self.evals: dict[tuple[tuple[int, ...], int], BendEval] = {}
         self.station_free: dict[tuple[int, ...], NDArray[np.bool_]] = {}
         self.tally = _Tally()
-        self.rejected: list[tuple[tuple[str, ...], str]] = []
+        self.rejected: list[tuple[tuple[str, ...], str]] = [
+            ((), f"grasp {grasp_label(g)}: {why}") for g, why in ctx.refused
+        ]
         self.plans: list[SequencePlan] = []
         self.verified = 0
         self.note = ""

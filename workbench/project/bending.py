@@ -121,11 +121,28 @@ def _check_sequence(seq: list[str], bends: list[str], where: str) -> None:
         raise ValueError(f"{where}: {problem}")
 
 
+def _holes(v: list[list[list[float]]] | None) -> list[list[list[float]]] | None:
+    if v is not None and len(v) > B.MAX_ITEMS:
+        raise ValueError(f"at most {B.MAX_ITEMS} holes per flange, got {len(v)}")
+    return v
+
+
 class FlangeSpec(StrictModel):
-    """A planar flange: a counter-clockwise polygon [mm] in its own frame."""
+    """A planar flange: a counter-clockwise polygon [mm] in its own frame, and its holes.
+
+    `holes` are inner loops [mm] in the same frame, each a polygon of at least 3 points (cut
+    through the sheet; `workbench.sheetmetal.holes` checks where they may lie); None: none.
+    """
 
     name: str
     polygon: Annotated[list[list[Coordinate]], AfterValidator(_polygon)]
+    holes: (
+        Annotated[
+            list[Annotated[list[list[Coordinate]], AfterValidator(_polygon)]],
+            AfterValidator(_holes),
+        ]
+        | None
+    ) = None
 
 
 class BendSpec(StrictModel):
@@ -239,7 +256,14 @@ class PartSpec(StrictModel):
             name=self.name,
             thickness=self.thickness * MM,
             k_factor=self.k_factor,
-            flanges=tuple(FlangeSI(f.name, np.asarray(f.polygon) * MM) for f in self.flanges),
+            flanges=tuple(
+                FlangeSI(
+                    f.name,
+                    np.asarray(f.polygon) * MM,
+                    tuple(np.asarray(h) * MM for h in f.holes or ()),
+                )
+                for f in self.flanges
+            ),
             bends=tuple(
                 BendSI(
                     name=b.name,
@@ -260,10 +284,11 @@ class PartSpec(StrictModel):
 
 @dataclass(frozen=True, eq=False)
 class FlangeSI:
-    """A flange in SI: its polygon (n, 2) [m]."""
+    """A flange in SI: its polygon (n, 2) [m] and its holes, each (k, 2) [m]."""
 
     name: str
     polygon: NDArray[np.float64]
+    holes: tuple[NDArray[np.float64], ...] = ()
 
 
 @dataclass(frozen=True)

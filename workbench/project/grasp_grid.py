@@ -2,15 +2,20 @@
 
 Per flange its centroid and a square grid of `spacing` [mm] at least `inset` [mm] inside its
 polygon, each with every yaw [deg] and face listed (`workbench.pressbrake.grasp_grid`).
-`GraspGridSpec.to_si` returns the `GridSettings` in SI units.
+`GraspGridSpec.to_si` returns the `GridSettings` in SI units. `cup_diameter` [mm] or `pad`
+[length, width mm] name the gripper's footprint: candidates whose cup or pad covers a hole
+or hangs over an edge by more than `max_overhang` (a fraction of its area; default 0, since
+a vacuum cup must rest whole on the part: `workbench.pressbrake.grasp_footprint`) are left
+out, each listed in the search's rejected table. Neither given: no footprint check.
 """
 
 from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import AfterValidator, Field
+from pydantic import AfterValidator, Field, model_validator
 
+from workbench.pressbrake.grasp_footprint import MAX_OVERHANG, Footprint
 from workbench.pressbrake.grasp_grid import GridSettings
 from workbench.project import bounds as B
 from workbench.project.common import Angle, StrictModel
@@ -39,11 +44,31 @@ class GraspGridSpec(StrictModel):
         Field(default_factory=lambda: list[Face](["top"]))
     )
 
+    cup_diameter: Annotated[float, Field(gt=0, le=1000)] | None = None
+    pad: (
+        Annotated[list[Annotated[float, Field(gt=0, le=1000)]], Field(min_length=2, max_length=2)]
+        | None
+    ) = None
+    max_overhang: Annotated[float, Field(ge=0, le=1)] | None = None  # None: MAX_OVERHANG
+
+    @model_validator(mode="after")
+    def _one_footprint(self) -> GraspGridSpec:
+        if self.cup_diameter is not None and self.pad is not None:
+            raise ValueError("give cup_diameter or pad, not both")
+        return self
+
     def to_si(self) -> GridSettings:
         """Return the grid in SI units (m, rad; faces +1 top, -1 bottom)."""
+        footprint = None
+        if self.cup_diameter is not None:
+            footprint = Footprint.cup(self.cup_diameter * MM)
+        elif self.pad is not None:
+            footprint = Footprint.pad(self.pad[0] * MM, self.pad[1] * MM)
         return GridSettings(
             spacing=self.spacing * MM,
             inset=self.inset * MM,
             yaws=tuple(y * DEG for y in self.yaws),
             faces=tuple(1 if f == "top" else -1 for f in self.faces),
+            footprint=footprint,
+            max_overhang=MAX_OVERHANG if self.max_overhang is None else self.max_overhang,
         )

@@ -66,6 +66,17 @@ def _setting(field: str, message: str, prefix: str = "bending.part_import") -> P
     return ProjectError(message, field=f"{prefix}.{field}")
 
 
+def _flange_mm(f: dict[str, Any], mm: Any) -> dict[str, Any]:
+    """Return flange `f` (SI spec) in mm; `holes` only when it has any (older files unchanged)."""
+    out: dict[str, Any] = {
+        "name": str(f["name"]),
+        "polygon": [[mm(x), mm(y)] for x, y in f["polygon"]],
+    }
+    if f.get("holes"):
+        out["holes"] = [[[mm(x), mm(y)] for x, y in h] for h in f["holes"]]
+    return out
+
+
 def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str) -> PartSpec:
     """Return the `PartSpec` (mm/deg) of SI part `spec` (`SheetMetalPart.from_spec`'s form).
 
@@ -102,10 +113,7 @@ def part_spec_from_si(spec: dict[str, Any], *, name: str, note: str, where: str)
         "note": note,
         "thickness": mm(spec["thickness"]),
         "k_factor": spec.get("k_factor"),
-        "flanges": [
-            {"name": str(f["name"]), "polygon": [[mm(x), mm(y)] for x, y in f["polygon"]]}
-            for f in spec["flanges"]
-        ],
+        "flanges": [_flange_mm(f, mm) for f in spec["flanges"]],
         "bends": bends,
     }
     if spec.get("sequence") is not None:

@@ -190,9 +190,11 @@ class AssemblyService(SectionService[AssemblySpec]):
     ) -> PartPlan:
         """Return the PartPlan of part `name` from its start to its goal, with its robot's joints.
 
+        A refused plan leaves no last part plan (an export never writes an older one).
         planner: one of PLANNER_CHOICES (default: the section's); options override the
         section's planner options (SI); see `workbench.assembly.part_moves.plan_move`.
         """
+        self.last_part_plan = None
         planner = planner or self.si.planner.name
         opts = {**self.si.planner.options(planner), **options}
         plan = plan_move(
@@ -216,6 +218,9 @@ class AssemblyService(SectionService[AssemblySpec]):
 
         parts: only these parts' tasks (default: all); planner, cell_size, options: `plan_part`.
         """
+        # a new plan replaces the last one, refused or not: an export never writes a plan
+        # older than the last request
+        self.last_plan = self.last_part_plan = None
         if not (np.isfinite(dt) and 0 < dt <= 0.1):
             raise InputError(f"dt: {dt!r} s must be in (0, 0.1]")
         sequence = self.sequence(parts)

@@ -18,7 +18,7 @@ from workbench.collision import Solid
 from workbench.errors import InputError
 from workbench.motion import SampledMotion
 from workbench.pressbrake.cycle import BendingCycle as BendingCycle  # re-exported (gui)
-from workbench.pressbrake.die import DiePlacement, bend_on_die, die_part_pose
+from workbench.pressbrake.die import DiePlacement, bend_on_die
 from workbench.pressbrake.grasp import (
     Grasp,
     T_flange_grasp,
@@ -32,7 +32,7 @@ from workbench.pressbrake.program import RobotProgram
 from workbench.pressbrake.result import BendingResult
 from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
 from workbench.pressbrake.transfer import transfer_poses, world_tcp
-from workbench.pressbrake.transfer_plan import placements, plan_transfer
+from workbench.pressbrake.transfer_plan import plan_transfer
 from workbench.project.bending import BendingSI, BendingSpec, PartSI, PartSpec
 from workbench.project.program_io import program_settings
 from workbench.service import bending_process as process
@@ -165,8 +165,8 @@ class BendingService(SectionService[BendingSpec]):
         return bend_on_die(step, len(self.part.bends))
 
     def die_part_pose(self, step: int) -> NDArray[np.float64]:
-        """Return T_world_part (4, 4) [m] with bend `step` on the die (`sheetmetal.die`)."""
-        return die_part_pose(self.part, step, self.si().die, self.grasp)
+        """Return T_world_part (4, 4) [m] with bend `step` on the die (a press: the cycle's)."""
+        return process.die_part_pose(self, step)
 
     def world_tcp(self, q: NDArray[np.float64]) -> NDArray[np.float64]:
         """Return the TCP's world poses (..., 4, 4) [m] at joints (..., dof) [rad]."""
@@ -174,11 +174,9 @@ class BendingService(SectionService[BendingSpec]):
         return world_tcp(self.wb.robot, setup.T_world_base, setup.T_flange_tcp, q)
 
     def placements(self) -> tuple[tuple[DiePlacement, ...], str]:
-        """Return each bend's die placement with one arm configuration, and its label.
-
-        Raises UnreachableError naming the bend the robot cannot hold on the die.
-        """
-        return placements(self.wb.setup, self.part, self.si().die, self.grasp, self.wb.setup.q0)
+        """Return each bend's die placement with one arm configuration, and its label (a
+        press: as the cycle's plan holds it); UnreachableError names what is out of reach."""
+        return process.die_placements(self)
 
     def transfer_poses(self, last: DiePlacement) -> tuple[NDArray[np.float64], list[str]]:
         """Return TCP poses (N, 4, 4) [m] of the transfer: retract, via poses, pallet; with names."""
@@ -196,6 +194,7 @@ class BendingService(SectionService[BendingSpec]):
         `pressbrake.transfer_plan.plan_transfer`), a `BendingResult`. `progress(fraction,
         message)` reports the stages; `cancel()` or `planning.time_limit` ends it."""
         plan: BendingResult
+        self._plan = None  # a refused plan leaves no stale export
         si = self.si()
         if si.press is not None:
             plan = process.plan_cycle(self, progress)

@@ -10,22 +10,29 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+import numpy as np
+from numpy.typing import NDArray
+
 from workbench.batch import check_engine
 from workbench.errors import InputError
 from workbench.pressbrake.bend_eval import SweepContext
 from workbench.pressbrake.cycle import BendingCycle
-from workbench.pressbrake.cycle_path import CycleCell, CycleStep
+from workbench.pressbrake.cycle_path import CycleCell, CycleStep, T_world_part_on_die
 from workbench.pressbrake.cycle_plan import CycleRobot, checked_press, default_steps
 from workbench.pressbrake.cycle_search import search_cycles
 from workbench.pressbrake.cycle_search import sweep_context as search_context
+from workbench.pressbrake.die import DiePlacement
+from workbench.pressbrake.die import die_part_pose as transfer_die_pose
 from workbench.pressbrake.press import PressBrake
 from workbench.pressbrake.sequencing import SearchResult, SearchSettings, SequencePlan
+from workbench.pressbrake.transfer_plan import placements
 from workbench.project.bending import BendingSI, BendStepSI
 
 if TYPE_CHECKING:
     from workbench.service.bending import BendingService
 
 Progress = Callable[[float, str], None]
+F64 = NDArray[np.float64]
 
 
 def press_of(si: BendingSI) -> PressBrake:
@@ -105,6 +112,25 @@ def cycle_steps(svc: BendingService) -> list[CycleStep]:
 def plan_cycle(svc: BendingService, progress: Progress | None = None) -> BendingCycle:
     """Return the planned and checked cycle of the project's sequence and steps."""
     return cycle_robot(svc).check_cycle(svc.part, cycle_steps(svc), cycle_cell(svc), progress)
+
+
+def die_placements(svc: BendingService) -> tuple[tuple[DiePlacement, ...], str]:
+    """Return each bend on the die with one arm configuration, and its label: with a press,
+    against its stop as `plan_cycle` plans it (the steps' grasps and stations, the cycle's
+    inverse kinematics); without, on the section's die with its grasp (what Plan uses).
+    UnreachableError names what the robot cannot reach."""
+    si, setup = svc.si(), svc.wb.setup
+    if si.press is None:
+        return placements(setup, svc.part, si.die, svc.grasp, setup.q0)
+    return cycle_robot(svc).die_placements(svc.part, cycle_steps(svc), cycle_cell(svc))
+
+
+def die_part_pose(svc: BendingService, k: int) -> F64:
+    """Return T_world_part (4, 4) [m] of bend k on the die (as `die_placements` puts it)."""
+    si = svc.si()
+    if si.press is None:
+        return transfer_die_pose(svc.part, k, si.die, svc.grasp)
+    return T_world_part_on_die(svc.part, k, cycle_steps(svc)[k], press_of(si))
 
 
 def search(

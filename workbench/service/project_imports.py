@@ -13,9 +13,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pydantic import ValidationError
+
 from workbench.errors import InputError
 from workbench.kinematics.robot_library import LIBRARY, library_robot
 from workbench.project import project_from_dict
+from workbench.project.common import Pose
 from workbench.project.part_import import (
     PartImportSpec,
     cad_kind,
@@ -99,6 +102,19 @@ def add_cell_file(
     objects.append(obj)
     _switch(wb, data, f"cell object {unique}")
     return unique
+
+
+def obstacle_coordinate(axis: int, value_mm: float) -> float:
+    """Return coordinate `axis` (0 x, 1 y, 2 z) [mm] of an obstacle's position, checked by the
+    project's bounds for a pose (`cell.objects[].pose.xyz`); InputError naming the field."""
+    xyz = [0.0, 0.0, 0.0]
+    xyz[axis] = value_mm
+    try:
+        return float(Pose(xyz=xyz).xyz[axis])
+    except ValidationError as exc:
+        raise InputError(
+            f"cell.objects[].pose.xyz[{axis}]: {value_mm:g} mm: {exc.errors()[0]['msg']}"
+        ) from None
 
 
 def import_settings(settings: dict[str, Any], name: str = "") -> PartImportSpec:

@@ -15,11 +15,11 @@ if TYPE_CHECKING:
 
 
 def flat_pattern_of_part(part: SheetMetalPart) -> FlatPattern:
-    """Return the flat pattern of `part` [m]: its flat blank's outline and bend lines, part frame.
+    """Return the flat pattern of `part` [m]: its flat blank's outline, bend lines and holes.
 
     The outline is the union of the flanges placed flat (`part.fold(0)`) and the bend zones;
     each bend line runs along the middle of its zone, half a bend allowance off the parent's
-    edge.
+    edge. The holes are the flanges' own, placed flat, then any gap the union leaves.
     """
     from workbench.sheetmetal.folding import edge_frame
 
@@ -48,6 +48,11 @@ def flat_pattern_of_part(part: SheetMetalPart) -> FlatPattern:
     blank = blank.buffer(-1e-8, join_style="mitre")
     if not isinstance(blank, shapely.Polygon):
         raise InputError("part: its flat blank is not one piece")
-    holes = tuple(ccw_ring(np.asarray(r.coords)[:-1]) for r in blank.interiors)
+    own = tuple(
+        ccw_ring(h @ T[f, :2, :2].T + T[f, :2, 3])
+        for f, fl in enumerate(part.flanges)
+        for h in fl.holes
+    )
+    holes = own + tuple(ccw_ring(np.asarray(r.coords)[:-1]) for r in blank.interiors)
     outline = ccw_ring(np.asarray(blank.exterior.coords)[:-1])
     return FlatPattern(outline, tuple(lines), holes)

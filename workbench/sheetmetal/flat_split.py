@@ -158,7 +158,36 @@ def split_flanges(
                 field=field,
             )
         rings[k], edges[k] = moved, found
-    return _spec(rings, edges, sides, lines, radii, t, k_factor)
+    holes = _holes_of_regions(pattern, rings, zones, field)
+    return _spec(rings, edges, sides, lines, radii, t, k_factor, holes)
+
+
+def _holes_of_regions(
+    pattern: FlatPattern,
+    rings: list[NDArray[np.float64]],
+    zones: list[shapely.Polygon],
+    field: str,
+) -> list[list[NDArray[np.float64]]]:
+    """Return each region's holes (pattern frame); a hole reaching into a bend zone is refused."""
+    polys = [shapely.Polygon(r) for r in rings]
+    out: list[list[NDArray[np.float64]]] = [[] for _ in rings]
+    for j, hole in enumerate(pattern.holes):
+        h = shapely.Polygon(hole)
+        c = h.centroid
+        at = f"inner contour {j + 1} (centre {c.x * 1e3:.4g}, {c.y * 1e3:.4g} mm)"
+        for i, zone in enumerate(zones):
+            if zone.intersection(h).area > TOUCH_TOL**2:
+                raise FlatPatternError(
+                    f"{at} reaches into the bend zone of {bend_label(i, pattern.bend_lines[i])}; "
+                    "a hole across a bend is not sheet metal the model can fold: move it off "
+                    "the zone or remove it",
+                    field=field,
+                )
+        k = [i for i, p in enumerate(polys) if p.contains(h)]
+        if not k:
+            raise FlatPatternError(f"{at} lies in no flange", field=field)
+        out[k[0]].append(np.asarray(hole, dtype=float))
+    return out
 
 
 def _spec(
@@ -169,6 +198,7 @@ def _spec(
     radii: list[float],
     t: float,
     k_factor: float | None,
+    holes: list[list[NDArray[np.float64]]],
 ) -> dict:
     base = int(np.argmax([signed_area(r) for r in rings]))
     order, parent_of = [base], {base: (-1, -1)}
@@ -182,14 +212,20 @@ def _spec(
     flanges, edge_of = [], [dict(e) for e in edges]
     for k in order:
         ring, bend = rings[k], parent_of[k][1]
+        inner = holes[k]
         if bend >= 0:  # a child: its bend edge becomes edge 0, from the origin along +x
             shift = edge_of[k][bend]
             ring = np.roll(ring, -shift, axis=0)
             edge_of[k] = {i: (e - shift) % len(ring) for i, e in edge_of[k].items()}
             d = (ring[1] - ring[0]) / np.linalg.norm(ring[1] - ring[0])
             rel = ring - ring[0]
-            ring = np.column_stack([rel @ d, rel @ np.array([-d[1], d[0]])])
-        flanges.append({"name": name[k], "polygon": ring.tolist()})
+            n = np.array([-d[1], d[0]])
+            inner = [np.column_stack([(h - ring[0]) @ d, (h - ring[0]) @ n]) for h in inner]
+            ring = np.column_stack([rel @ d, rel @ n])
+        flange: dict = {"name": name[k], "polygon": ring.tolist()}
+        if inner:
+            flange["holes"] = [h.tolist() for h in inner]
+        flanges.append(flange)
     bends = []
     for i, ln in enumerate(lines):
         child = sides[i][0] if parent_of[sides[i][0]][1] == i else sides[i][1]

@@ -7,7 +7,8 @@ mm/deg)::
       "thickness": 0.002,                 # [m], > 0
       "k_factor": None,                   # optional K override for every bend, else Table 1
       "flanges": [                        # flanges[0] is the base: its frame is the part frame
-        {"name": "1", "polygon": [[x, y], ...]},   # [m], counter-clockwise, simple
+        {"name": "1", "polygon": [[x, y], ...],    # [m], counter-clockwise, simple
+         "holes": [[[x, y], ...], ...]},          # optional inner loops [m] (sheetmetal.holes)
         ...
       ],
       "bends": [
@@ -38,6 +39,7 @@ from numpy.typing import NDArray
 
 from workbench.errors import InputError
 from workbench.geometry.polygon import signed_area
+from workbench.sheetmetal.holes import ccw, check_holes
 from workbench.sheetmetal.kfactor import MIN_R_OVER_T, bend_allowance, k_factor
 from workbench.sheetmetal.sequence import check_sequence
 
@@ -47,10 +49,15 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True, eq=False)
 class Flange:
-    """A planar flange: `polygon` (n, 2) [m] counter-clockwise in the flange's own frame."""
+    """A planar flange: `polygon` (n, 2) [m] counter-clockwise in the flange's own frame.
+
+    `holes` are its inner loops (k, 2) [m], counter-clockwise, in the same frame; they go
+    through the sheet (checked by `sheetmetal.holes.check_holes`).
+    """
 
     name: str
     polygon: NDArray[np.float64]
+    holes: tuple[NDArray[np.float64], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -79,6 +86,16 @@ class Bend:
 
 def _edge(poly: NDArray[np.float64], i: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     return poly[i], poly[(i + 1) % len(poly)]
+
+
+def _ring(value: Any, where: str) -> NDArray[np.float64]:
+    """Return `value` as (n, 2) floats; InputError naming `where` unless >= 3 finite points."""
+    ring = np.asarray(value, dtype=float)
+    if ring.ndim != 2 or ring.shape[1] != 2 or len(ring) < 3 or not np.all(np.isfinite(ring)):
+        raise InputError(
+            f"expected >= 3 finite [x, y] points [m], got shape {ring.shape}", field=where
+        )
+    return ring
 
 
 class SheetMetalPart:
@@ -146,17 +163,12 @@ class SheetMetalPart:
             raise InputError(f"thickness: must be > 0 m, got {spec['thickness']!r}")
         flanges = []
         for i, f in enumerate(spec["flanges"]):
-            poly = np.asarray(f.get("polygon"), dtype=float)
-            if (
-                poly.ndim != 2
-                or poly.shape[1] != 2
-                or len(poly) < 3
-                or not np.all(np.isfinite(poly))
-            ):
-                raise InputError(
-                    f"flanges[{i}].polygon: expected >= 3 finite [x, y] points [m], got shape {poly.shape}"
-                )
-            flanges.append(Flange(str(f.get("name", i)), poly))
+            poly = _ring(f.get("polygon"), f"flanges[{i}].polygon")
+            holes = [
+                ccw(_ring(h, f"flanges[{i}].holes[{j}]"))
+                for j, h in enumerate(f.get("holes") or ())
+            ]
+            flanges.append(Flange(str(f.get("name", i)), poly, tuple(holes)))
         names = [f.name for f in flanges]
         if len(set(names)) != len(names):
             raise InputError(f"flanges: names must be unique, got {names}")
@@ -277,6 +289,7 @@ class SheetMetalPart:
         if len(seen_child) != nf - 1:
             loose = [f.name for i, f in enumerate(self.flanges) if i and i not in seen_child]
             raise InputError(f"bends: flanges {loose} are not connected to the base flange")
+        check_holes(self)
 
     # ------------------------------------------------------------------ queries
     def flange_index(self, flange: int | str) -> int:
@@ -289,8 +302,10 @@ class SheetMetalPart:
         raise InputError(f"flange: no flange {flange!r}; valid are {names} or 0..{len(names) - 1}")
 
     def blank_area(self) -> float:
-        """Return the area [m²] of the flat blank: flange polygons plus bend-allowance strips."""
-        flanges = sum(signed_area(f.polygon) for f in self.flanges)
+        """Return the area [m²] of the flat blank: flange polygons less holes, plus bend strips."""
+        flanges = sum(
+            signed_area(f.polygon) - sum(signed_area(h) for h in f.holes) for f in self.flanges
+        )
         return float(flanges + np.sum(self.bend_allowances * self.bend_lengths))
 
     def fold(self, step: float, fraction: float = 0.0) -> FoldedState:

@@ -1,5 +1,8 @@
 """Watertight triangle mesh of a folded sheet-metal part: flange prisms joined by bend arcs.
 
+A flange's holes go through its prism: its caps are triangulated around them and each hole
+has its own wall.
+
 Vertices are shared by index (no merging by distance): a bend's first cross-section reuses
 its parent's edge corners and its last one the child's, so the mesh closes exactly.
 """
@@ -13,6 +16,7 @@ import trimesh
 
 from workbench.geometry.polygon import triangulate
 from workbench.sheetmetal.folding import axis_angle, bend_profile
+from workbench.sheetmetal.holes import cap_triangles
 
 if TYPE_CHECKING:
     from workbench.sheetmetal.folding import FoldedState
@@ -29,26 +33,38 @@ def build_solid(state: FoldedState) -> trimesh.Trimesh:
     bend_edges = {(b.parent, b.parent_edge) for b in part.bends} | {
         (b.child, b.child_edge) for b in part.bends
     }
+    ring_count: list[int] = []  # vertices per face of each flange: outline then its holes
     for f, fl in enumerate(part.flanges):
         poly = fl.polygon
         n = len(poly)
-        local = np.concatenate([np.c_[poly, np.full(n, t / 2)], np.c_[poly, np.full(n, -t / 2)]])
+        pts = np.concatenate([poly, *fl.holes]) if fl.holes else poly
+        m = len(pts)
+        local = np.concatenate([np.c_[pts, np.full(m, t / 2)], np.c_[pts, np.full(m, -t / 2)]])
         T = state.T_part_flange[f]
         verts.append(local @ T[:3, :3].T + T[:3, 3])
         base.append(count)
-        caps = triangulate(poly)
+        ring_count.append(m)
+        caps = cap_triangles(poly, fl.holes) if fl.holes else triangulate(poly)
         faces.append(caps + count)
-        faces.append(caps[:, ::-1] + count + n)
+        faces.append(caps[:, ::-1] + count + m)
         for e in range(n):
             if (f, e) in bend_edges:
                 continue
             a, b = e, (e + 1) % n
-            faces.append(np.array([[a + n, b + n, b], [a + n, b, a]]) + count)
-        count += 2 * n
+            faces.append(np.array([[a + m, b + m, b], [a + m, b, a]]) + count)
+        start = n
+        for h in fl.holes:  # hole walls face into the hole: opposite winding to the outline's
+            nh = len(h)
+            ha = start + np.arange(nh)
+            hb = start + (np.arange(nh) + 1) % nh
+            faces.append(np.concatenate([np.c_[ha + m, hb, hb + m], np.c_[ha + m, ha, hb]]) + count)
+            start += nh
+        count += 2 * m
 
     for i, bd in enumerate(part.bends):
         npar = len(part.flanges[bd.parent].polygon)
         nch = len(part.flanges[bd.child].polygon)
+        mpar, mch = ring_count[bd.parent], ring_count[bd.child]
         top = bd.direction > 0  # inner surface is the +z (top) face when bending up
         p0, p1 = bd.parent_edge, (bd.parent_edge + 1) % npar
         c_a, c_b = (
@@ -56,8 +72,8 @@ def build_solid(state: FoldedState) -> trimesh.Trimesh:
             bd.child_edge,
         )  # child corner at the parent's a / b end
 
-        def corner(f: int, v: int, n: int, inner: bool, top: bool = top) -> int:
-            return base[f] + v + (0 if inner == top else n)
+        def corner(f: int, v: int, m: int, inner: bool, top: bool = top) -> int:
+            return base[f] + v + (0 if inner == top else m)
 
         geo = state.bend_cross_section(i)
         th, r = state.angles[i], state.radii[i]
@@ -65,16 +81,16 @@ def build_solid(state: FoldedState) -> trimesh.Trimesh:
         T = state.T_part_flange[bd.parent]
         rows = np.empty((N + 1, 4), dtype=np.int64)  # inner_a, inner_b, outer_a, outer_b
         rows[0] = [
-            corner(bd.parent, p0, npar, True),
-            corner(bd.parent, p1, npar, True),
-            corner(bd.parent, p0, npar, False),
-            corner(bd.parent, p1, npar, False),
+            corner(bd.parent, p0, mpar, True),
+            corner(bd.parent, p1, mpar, True),
+            corner(bd.parent, p0, mpar, False),
+            corner(bd.parent, p1, mpar, False),
         ]
         rows[N] = [
-            corner(bd.child, c_a, nch, True),
-            corner(bd.child, c_b, nch, True),
-            corner(bd.child, c_a, nch, False),
-            corner(bd.child, c_b, nch, False),
+            corner(bd.child, c_a, mch, True),
+            corner(bd.child, c_b, mch, True),
+            corner(bd.child, c_a, mch, False),
+            corner(bd.child, c_b, mch, False),
         ]
         if N > 1:
             k = np.arange(1, N)
