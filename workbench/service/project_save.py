@@ -113,7 +113,9 @@ class _Placer:
         if _inside(src, self.folder):  # 1
             return Path(os.path.relpath(src, self.folder)).as_posix(), None
         session = [_real(f) for f in self.old.session]
-        temporary = any(_inside(src, f) for f in session) or _inside(src, temporary_root())
+        temporary = any(_inside(src, f) for f in session) or (
+            _inside(src, temporary_root()) and not _bundled(src)  # a checkout may lie in /tmp
+        )
         if self.mode == "rebase":
             kept = self._rebased(where, given, src, temporary)
             if kept is not None:
