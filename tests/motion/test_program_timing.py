@@ -65,6 +65,31 @@ def test_fit_linear_speed_gives_the_duration_at_the_slowest_speed() -> None:
     assert fit_linear_speed(model, np.eye(4), Q0, T, 1e-3, 2.0) == 2.0
 
 
+def test_fit_linear_speed_on_the_joint_limited_plateau_is_the_slowest_speed() -> None:
+    """A duration the joints' limits set (the top speed's time): every speed above some v*
+    takes it within the tolerance. Twin: a scan of 150 speeds on a log grid; the fit is the
+    slowest speed within the tolerance (the scan's first, to one grid step), the same for a
+    duration off by a last bit (the bisection met some speed of the plateau before)."""
+    model = preset_robot("mz07")
+    T = _line_target(model, -0.3)
+
+    def took(v: float) -> float:
+        prog = Program("p", (Move.linear(T, speed=v),))
+        return float(planner_durations(model, prog, Q0, np.eye(4))[0])
+
+    wanted = took(2.0)
+    most = wanted * (1 + FIT_TOLERANCE)
+    grid = np.geomspace(0.05, 2.0, 150)
+    within = [v for v in grid if took(float(v)) <= most]
+    assert len(within) > 15  # a plateau: many speeds take the time
+    v = fit_linear_speed(model, np.eye(4), Q0, T, wanted, 2.0)
+    step = grid[1] / grid[0]
+    assert within[0] / step <= v <= within[0]
+    assert took(v) <= most < took(v * (1 - 1e-6))
+    again = fit_linear_speed(model, np.eye(4), Q0, T, wanted * (1 + 1e-15), 2.0)
+    assert again == pytest.approx(v, rel=1e-8)
+
+
 def test_corner_zones_keep_the_blend_within_the_tolerance() -> None:
     tol = 0.05e-3
     straight = np.array([[0, 0, 0], [0.01, 0, 0], [0.02, 0, 0]], float)
