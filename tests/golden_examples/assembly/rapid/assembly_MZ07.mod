@@ -180,7 +180,7 @@ MODULE assembly_MZ07
     PROC main()
         ! task 1: plate_a
         MoveJ t1_approach, [250,45,5000,1000], fine, gripper\WObj:=wobj0;
-        MoveL t1_pick, [579.9643,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t1_pick, [278.5499,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -229,13 +229,13 @@ MODULE assembly_MZ07
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t1_retreat, [233.6577,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t1_retreat, [233.451,500,5000,1000], fine, gripper\WObj:=wobj0;
         MoveAbsJ t1_home, v1000\T:=0.4512, fine, gripper\WObj:=wobj0;
         WaitSyncTask sync1, task_list1;
         WaitSyncTask sync2, task_list2;
         ! task 3: screw_0
         MoveJ t3_approach, v1000\T:=0.4645, fine, gripper\WObj:=wobj0;
-        MoveL t3_pick, [171.464,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t3_pick, [171.1587,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -286,11 +286,11 @@ MODULE assembly_MZ07
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t3_retreat, [264.9617,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t3_retreat, [262.9688,500,5000,1000], fine, gripper\WObj:=wobj0;
         MoveAbsJ t3_home, v1000\T:=0.4457, fine, gripper\WObj:=wobj0;
         ! task 4: screw_1
         MoveJ t4_approach, v1000\T:=0.4612, fine, gripper\WObj:=wobj0;
-        MoveL t4_pick, [176.5117,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t4_pick, [175.2114,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -321,13 +321,13 @@ MODULE assembly_MZ07
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t4_retreat, [264.9617,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t4_retreat, [262.9688,500,5000,1000], fine, gripper\WObj:=wobj0;
         MoveAbsJ t4_home, v1000\T:=0.4457, fine, gripper\WObj:=wobj0;
         WaitSyncTask sync3, task_list1;
         WaitSyncTask sync4, task_list2;
         ! task 7: screw_4
         MoveJ t7_approach, v1000\T:=0.4688, fine, gripper\WObj:=wobj0;
-        MoveL t7_pick, [171.464,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t7_pick, [168.9861,500,5000,1000], fine, gripper\WObj:=wobj0;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -378,7 +378,7 @@ MODULE assembly_MZ07
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t7_retreat, [190.7109,500,5000,1000], fine, gripper\WObj:=wobj0;
+        MoveL t7_retreat, [190.1998,500,5000,1000], fine, gripper\WObj:=wobj0;
         MoveAbsJ t7_home, v1000\T:=0.4584, fine, gripper\WObj:=wobj0;
     ENDPROC
 ENDMODULE

@@ -136,7 +136,7 @@ MODULE assembly_MZ07_B
         WaitSyncTask sync1, task_list1;
         ! task 2: plate_b
         MoveJ t2_approach, [250,45,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
-        MoveL t2_pick, [579.9643,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t2_pick, [278.5499,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -185,13 +185,13 @@ MODULE assembly_MZ07_B
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t2_retreat, [210.0766,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t2_retreat, [209.4183,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         MoveAbsJ t2_home, v1000\T:=0.4557, fine, MZ07_B_tool\WObj:=MZ07_B_base;
         WaitSyncTask sync2, task_list2;
         WaitSyncTask sync3, task_list1;
         ! task 5: screw_2
         MoveJ t5_approach, v1000\T:=0.4645, fine, MZ07_B_tool\WObj:=MZ07_B_base;
-        MoveL t5_pick, [171.464,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t5_pick, [171.1587,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -222,11 +222,11 @@ MODULE assembly_MZ07_B
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t5_retreat, [264.9617,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t5_retreat, [262.9688,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         MoveAbsJ t5_home, v1000\T:=0.4457, fine, MZ07_B_tool\WObj:=MZ07_B_base;
         ! task 6: screw_3
         MoveJ t6_approach, v1000\T:=0.4716, fine, MZ07_B_tool\WObj:=MZ07_B_base;
-        MoveL t6_pick, [176.5117,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t6_pick, [175.2114,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         ! gripper close
         SetDO grip, 1;
         WaitDI gripper_closed, 1\MaxTime:=2;
@@ -277,7 +277,7 @@ MODULE assembly_MZ07_B
         SetDO grip, 0;
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
-        MoveL t6_retreat, [579.9643,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
+        MoveL t6_retreat, [262.9688,500,5000,1000], fine, MZ07_B_tool\WObj:=MZ07_B_base;
         MoveAbsJ t6_home, v1000\T:=0.5794, fine, MZ07_B_tool\WObj:=MZ07_B_base;
         WaitSyncTask sync4, task_list2;
     ENDPROC
