@@ -24,6 +24,11 @@ def _pose_mm(T: np.ndarray) -> str:
     return f"x {x:7.1f}  y {y:7.1f}  z {z:7.1f} mm"
 
 
+def _deg(q: np.ndarray, digits: int) -> list[float]:
+    """Return joints [rad] as rounded degrees (+ 0.0: no -0.0)."""
+    return (np.round(np.degrees(q), digits) + 0.0).tolist()
+
+
 def _collision(wb: Workbench) -> str:
     report = wb.collision_status()
     if report.in_collision:
@@ -36,9 +41,11 @@ def main(project: str | Path = PROJECT) -> None:
     wb = Workbench.open(project)
     print(f"project: {wb.project.name}")
 
-    # Jog: joints are given in radians; the GUI shows degrees.
-    wb.set_joints(np.radians([20.0, 10.0, -5.0, 0.0, -60.0, 0.0]))
-    print(f"joints [deg]: {np.round(np.degrees(wb.joints), 2).tolist()}")
+    # Jog: the robot takes the model's joints [rad]; the controller's values (the pendant's,
+    # the project file's, the GUI's) map to them through the robot's joint convention.
+    conv = wb.robot.convention
+    wb.set_joints(conv.to_model(np.radians([20.0, 100.0, -5.0, 0.0, -30.0, 0.0])))
+    print(f"joints [deg]: {_deg(conv.to_controller(wb.joints), 2)} (controller)")
     T = wb.tcp_pose()
     print(f"TCP:  {_pose_mm(T)}")
     print(f"      {_collision(wb)}")
@@ -49,7 +56,7 @@ def main(project: str | Path = PROJECT) -> None:
     solutions = wb.ik_solutions(target)
     print(f"{len(solutions)} configurations reach the pose 50 mm lower:")
     for k, s in enumerate(solutions):
-        print(f"  {k}: {s.label:24s} joints [deg] {(np.round(np.degrees(s.q), 1) + 0.0).tolist()}")
+        print(f"  {k}: {s.label:24s} joints [deg] {_deg(conv.to_controller(s.q), 1)}")
 
     # Move there in the nearest configuration, then in the second one: the TCP stays put.
     for configuration in (None, solutions[-1].label):

@@ -51,8 +51,8 @@ def main(project: str | Path = PROJECT) -> None:
     # (a project with a press plans its whole cycle instead: see 06_bending_sweep.py)
     for p in getattr(plan, "placements", ()):
         print(
-            f"  bend {p.bend} on the die: joints [deg]",
-            (np.round(np.degrees(p.q), 1) + 0.0).tolist(),
+            f"  bend {p.bend} on the die: joints [deg]",  # the controller's values
+            (np.round(np.degrees(wb.robot.convention.to_controller(p.q)), 1) + 0.0).tolist(),
         )
     first = getattr(plan, "first_collision", None)
     if first is not None:

@@ -30,6 +30,18 @@ def test_check_example_is_collision_free() -> None:
     assert "collision-free" in res.stdout
 
 
+def test_check_prints_the_controllers_joint_values(tmp_path: Path) -> None:
+    """`check` shows the joints as the project file and the pendant hold them (the MZ07's
+    model values of this posture are (0, 0, 0, 0, -0, -0): issue 28)."""
+    data = json.loads((ROOT / "projects" / "mz07_cell.json").read_text())
+    data["robot"]["joints"] = [0, 90, 0, 0, -90, 0]  # controller degrees
+    path = tmp_path / "upright.json"
+    path.write_text(json.dumps(data))
+    res = run_cli("check", str(path))
+    assert "Traceback" not in res.stderr
+    assert "at [0.00, 90.00, 0.00, 0.00, -90.00, 0.00] deg (controller)" in res.stdout
+
+
 def test_check_bad_project_gives_one_line_reason(tmp_path: Path) -> None:
     bad = tmp_path / "bad.json"
     bad.write_text(json.dumps({"schema_version": 1, "robot": {"preset": "mz07", "bogus": 1}}))

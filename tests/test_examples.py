@@ -38,12 +38,12 @@ def _run(name: str, capsys: pytest.CaptureFixture[str], *args: object) -> tuple[
 
 def check_01_jog_and_ik(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     _, out = _run("01_jog_and_ik", capsys)
-    assert "joints [deg]: [20.0, 10.0, -5.0, 0.0, -60.0, 0.0]" in out
+    assert "joints [deg]: [20.0, 100.0, -5.0, 0.0, -30.0, 0.0] (controller)" in out
     found = re.search(r"(\d+) configurations reach the pose 50 mm lower", out)
     assert found is not None, out
     n = int(found.group(1))
     wb = Workbench.open(ROOT / "projects" / "mz07_cell.json")
-    wb.set_joints(np.radians([20.0, 10.0, -5.0, 0.0, -60.0, 0.0]))
+    wb.set_joints(wb.robot.convention.to_model(np.radians([20.0, 100.0, -5.0, 0.0, -30.0, 0.0])))
     target = wb.tcp_pose()
     target[2, 3] -= 0.050
     labels = [s.label for s in wb.ik_solutions(target)]

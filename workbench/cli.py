@@ -350,9 +350,13 @@ def _check(args: argparse.Namespace) -> int:
 
     wb = Workbench.open(args.project, allowed_dirs=args.allow_dir)
     report = wb.collision_status()
-    q = ", ".join(f"{v:.2f}" for v in to_deg(wb.joints))
+    # the controller's joint values, as the project file and the pendant hold them (+ 0.0:
+    # no "-0.00" of a value that rounds to zero)
+    qc = to_deg(wb.robot.convention.to_controller(wb.joints))
+    q = ", ".join(f"{round(float(v), 2) + 0.0:.2f}" for v in qc)
     print(
-        f"{args.project}: valid; robot {wb.project.robot.name} ({wb.robot.dof} joints) at [{q}] deg"
+        f"{args.project}: valid; robot {wb.project.robot.name} ({wb.robot.dof} joints) at [{q}]"
+        " deg (controller)"
     )
     if report.in_collision:
         pairs = ", ".join(f"{a}–{b}" for a, b in report.colliding)

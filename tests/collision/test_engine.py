@@ -14,7 +14,7 @@ from workbench.service import Workbench
 
 PROJECT = block_cell()
 Q_FREE = np.zeros(6)
-Q_HIT = np.array([0.0, -0.69, 0.691, 0.0, 0.0, 0.0])  # the tool 50 mm deep in the block
+Q_HIT = np.array([0.0, -0.68, 0.595, 0.0, -0.085, 0.0])  # the tool 50 mm deep in the block
 
 
 @pytest.fixture(scope="module")

@@ -145,7 +145,7 @@ def post_cell(engine_cache: Path) -> tuple[Workbench, CollisionEngine]:
 
 def _long_walk(copies: int) -> np.ndarray:
     """A free joint walk beside the post, run there and back `copies` times (chord motion)."""
-    walk = np.linspace([-0.7, -0.69, 0.691, 0, 0, 0], [-1.2, -0.3, 0.3, 0.3, 0.2, 0.1], 40)
+    walk = np.linspace([-0.7, -0.68, 0.595, 0, -0.085, 0], [-1.2, -0.3, 0.3, 0.3, 0.2, 0.1], 40)
     return np.concatenate([walk if k % 2 == 0 else walk[::-1] for k in range(copies)])
 
 
@@ -158,7 +158,7 @@ def test_a_touching_interval_in_a_long_program_is_still_reported(
     sample (all are free) and of the reported configuration (colliding)."""
     wb, eng = post_cell
     qs = _long_walk(160)
-    sweep = np.array([[-0.7, -0.69, 0.691, 0, 0, 0], [0.7, -0.69, 0.691, 0, 0, 0]])
+    sweep = np.array([[-0.7, -0.68, 0.595, 0, -0.085, 0], [0.7, -0.68, 0.595, 0, -0.085, 0]])
     k = 40 * 75 + 39  # the end of a backward copy: the walk's start, the sweep's near end
     assert np.allclose(qs[k], sweep[0])
     qs = np.concatenate([qs[: k + 1], sweep[1:], sweep[:1], qs[k + 1 :]])

@@ -79,15 +79,15 @@ def test_fk_batch_shapes(robot: DHRobot) -> None:
 
 
 def test_mz07_home_pose_by_hand(robot: DHRobot) -> None:
-    # q = 0: upper arm vertical (330 mm on top of d1 = 340 mm and a1 = 50 mm), elbow offset
-    # 45 mm up, forearm 340 mm along +x, wrist bent down, flange 90 mm below the wrist centre.
+    # q = 0: upper arm vertical (330 mm on top of d1 = 355 mm and a1 = 50 mm), elbow offset
+    # 45 mm up, forearm 340 mm along +x, wrist bent down, flange 78 mm below the wrist centre.
     T = robot.fk(np.zeros(6))
     np.testing.assert_allclose(
-        T[:3, 3], [0.050 + 0.340, 0.0, 0.340 + 0.330 + 0.045 - 0.090], atol=1e-15
+        T[:3, 3], [0.050 + 0.340, 0.0, 0.355 + 0.330 + 0.045 - 0.078], atol=1e-15
     )
     np.testing.assert_allclose(T[:3, :3], np.diag([1.0, -1.0, -1.0]), atol=1e-15)
     wc = robot.link_transforms(np.zeros(6))[4, :3, 3]
-    np.testing.assert_allclose(wc, [0.390, 0.0, 0.715], atol=1e-15)
+    np.testing.assert_allclose(wc, [0.390, 0.0, 0.730], atol=1e-15)
 
 
 def test_mz07_reach_to_wrist_centre_is_723_mm(robot: DHRobot) -> None:
@@ -97,7 +97,7 @@ def test_mz07_reach_to_wrist_centre_is_723_mm(robot: DHRobot) -> None:
     q[2] = math.atan2(0.340, 0.045)
     wc = robot.link_transforms(q)[4, :3, 3]
     reach = 0.050 + 0.330 + math.hypot(0.340, 0.045)
-    np.testing.assert_allclose(wc, [reach, 0.0, 0.340], atol=1e-12)
+    np.testing.assert_allclose(wc, [reach, 0.0, 0.355], atol=1e-12)
     assert round(reach * 1000) == 723
     # No random configuration reaches farther from the joint-1 axis.
     wcs = robot.link_transforms(random_q(robot, 20000))[:, 4, :3, 3]
@@ -109,11 +109,15 @@ def test_seed_table_equals_flange_plus_seed_tool(robot: DHRobot) -> None:
     T_seed = dh_fk(MZ07_SEED_DH, Q)
     Rx_pi = np.eye(4)
     Rx_pi[:3, :3] = rot_x(math.pi)
-    np.testing.assert_allclose(T_seed, robot.fk(Q) @ MZ07_SEED_TOOL @ Rx_pi, atol=1e-12)
+    # the seed's base is 15 mm lower (J2 axis 340 mm above it, the real MZ07F's 355 mm)
+    Tz = np.eye(4)
+    Tz[2, 3] = -0.015
+    np.testing.assert_allclose(T_seed, Tz @ robot.fk(Q) @ MZ07_SEED_TOOL @ Rx_pi, atol=1e-12)
     # Same tip position with the tool alone; 516.9 mm from the wrist centre at home.
     np.testing.assert_allclose(
-        T_seed[:, :3, 3], (robot.fk(Q) @ MZ07_SEED_TOOL)[:, :3, 3], atol=1e-12
+        T_seed[:, :3, 3], (Tz @ robot.fk(Q) @ MZ07_SEED_TOOL)[:, :3, 3], atol=1e-12
     )
+    np.testing.assert_allclose(MZ07_SEED_TOOL[:3, 3], [0, 0, 0.5169 - 0.078], atol=1e-15)
     np.testing.assert_allclose(
         dh_fk(MZ07_SEED_DH, np.zeros(6))[:3, 3], [0.39, 0, 0.715 - 0.5169], atol=1e-15
     )

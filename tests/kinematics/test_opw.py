@@ -132,7 +132,7 @@ def test_wrist_singular_pose_keeps_joint4_near_reference(robot: DHRobot) -> None
 def test_shoulder_singular_pose_wrist_centre_on_axis(robot: DHRobot) -> None:
     # Flange pointing along +x, wrist centre on the joint-1 axis at 0.8 m (q5 = 0).
     T = np.array(
-        [[0.0, 0.0, 1.0, 0.09], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8], [0, 0, 0, 1.0]]
+        [[0.0, 0.0, 1.0, 0.078], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8], [0, 0, 0, 1.0]]
     )
     sols = robot.ik(T)
     assert len(sols) >= 1

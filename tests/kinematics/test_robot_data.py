@@ -153,7 +153,7 @@ PINNED_X_AXIS = [
 PINNED_LIMITS = [
     [-2.9670597283903604, 2.9670597283903604],
     [-2.356194490192345, 1.3962634015954636],
-    [-2.0943951023931953, 2.792526803190927],
+    [-1.1344640137963142, 3.3161255787892263],  # issue 28: J3 -65..190 (was -120..160)
     [-3.3161255787892263, 3.3161255787892263],
     [-3.6651914291880923, 0.5235987755982988],
     [-6.283185307179586, 6.283185307179586],
@@ -162,14 +162,14 @@ PINNED_VELOCITY = [
     7.853981633974483, 6.632251157578453, 9.075712110370514,
     9.599310885968812, 9.599310885968812, 17.453292519943297,
 ]  # fmt: skip
-PINNED_MESHES = [  # (vertices, volume [m^3])
-    (48, 0.006622412204904871),
-    (76, 0.012066909588245854),
-    (72, 0.009667322884159286),
-    (48, 0.003293812080100001),
-    (72, 0.0025610963738125366),
-    (48, 0.0008280233556598034),
-    (48, 3.3817415726707926e-05),
+PINNED_MESHES = [  # (vertices, volume [m^3]), re-pinned for issue 28's real MZ07F frames
+    (48, 0.006948896499020133),
+    (76, 0.01245478307488041),
+    (72, 0.00971645166469614),
+    (48, 0.0033190073552236917),
+    (72, 0.002571771530037798),
+    (48, 0.0007928196266859621),
+    (48, 2.2951919117403884e-05),
 ]
 
 
@@ -178,7 +178,11 @@ def test_mz07_matches_the_table_pinned_before_the_change() -> None:
     assert robot.limits.tolist() == PINNED_LIMITS
     assert robot.max_velocity.tolist() == PINNED_VELOCITY
     T = robot.fk(np.array(PINNED_Q))
-    assert np.allclose(T[:, :3, 3], PINNED_FLANGE_M, rtol=0.0, atol=1e-15)
+    # Issue 28 moved the preset to the real MZ07F (J2 axis 355 mm up, not 340; flange 78 mm
+    # from the wrist centre, not 90): the same orientation, the flange 15 mm higher and
+    # 12 mm back towards the wrist along its own z.
+    moved = np.array(PINNED_FLANGE_M) + [0.0, 0.0, 0.015] - 0.012 * T[:, :3, 2]
+    assert np.allclose(T[:, :3, 3], moved, rtol=0.0, atol=1e-15)
     assert np.allclose(T[:, 0, :3], PINNED_X_AXIS, rtol=0.0, atol=1e-15)
     meshes = robot.link_meshes()
     assert [len(m.vertices) for m in meshes] == [n for n, _ in PINNED_MESHES]

@@ -48,7 +48,7 @@ def test_elbow_singular_when_arm_is_stretched(robot: DHRobot) -> None:
 def test_shoulder_singular_when_wrist_centre_is_on_joint1_axis(robot: DHRobot) -> None:
     # Flange pointing along +x, wrist centre on the joint-1 axis at 0.8 m (q5 = 0).
     T = np.array(
-        [[0.0, 0.0, 1.0, 0.09], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8], [0, 0, 0, 1.0]]
+        [[0.0, 0.0, 1.0, 0.078], [0.0, 1.0, 0.0, 0.0], [-1.0, 0.0, 0.0, 0.8], [0, 0, 0, 1.0]]
     )
     q = robot.ik(T)[0]
     s = robot.singularities(q)

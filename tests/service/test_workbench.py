@@ -33,6 +33,10 @@ def test_set_joints_validates(wb: Workbench) -> None:
     q0 = wb.joints
     with pytest.raises(JointLimitError, match="joint 1"):
         wb.set_joints(np.r_[np.radians(200.0), np.zeros(5)])
+    # told in the controller's values: the MZ07's model J2 = -140 deg is the pendant's -50
+    # (upright = 90), below its -45..170 deg
+    with pytest.raises(JointLimitError, match=r"joint 2: -50\.000 deg .*\[-45\.000, 170\.000\]"):
+        wb.set_joints(np.radians([0, -140, 0, 0, -90, 0]))
     with pytest.raises(InputError, match="finite"):
         wb.set_joints([np.nan] * 6)
     with pytest.raises(InputError, match="expected 6"):

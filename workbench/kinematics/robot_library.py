@@ -15,33 +15,56 @@ through in radians) and for FANUC except J3: the FANUC controller shows J3 as th
 angle to the horizontal, ROS the angle between forearm and upper arm, ros_j3 = ctrl_j3 +
 ctrl_j2 (the fanuc driver's J23 correction).
 
-Sources (lengths in mm, angles in deg, speeds in deg/s):
+Sources (lengths in mm, angles in deg, speeds in deg/s). Each robot's kinematic chain is
+checked against the description named first, stored as a plain URDF under
+tests/data/robot_descriptions/ (repository, path and commit in its header), by
+tests/kinematics/test_robot_descriptions.py: flange pose equal within 0.1 mm and 0.01 deg at
+50 random joints within limits, in the controller's base frame.
 
 - ABB IRB 1200-7/0.7: a1 0, a2 -42, b 0, c1 399.1, c2 350, c3 351, c4 82; offsets (0, 0,
   -90, 0, 0, 0); signs all +1: ros-industrial/abb, abb_irb1200_support/urdf/
-  irb1200_7_70_macro.xacro (as tabulated in CEAD-group/py-opw-kinematics,
-  parameters_robots.rs ``irb1200_7_70``). Limits and speeds: ABB product specification IRB
-  1200 (3HAC046982): axis 1 +-170, 2 -100..+135, 3 -200..+70, 4 +-270, 5 +-130, 6 +-400;
-  288, 240, 297, 400, 405, 600 deg/s; payload 7 kg, reach 703 mm.
+  irb1200_7_70_macro.xacro (commit 30e6c442cd14), joint_1..joint_6 origins (0.3991 / 0 /
+  0.350 / 0.042 / 0.351 / 0.082 m) and the link_6-tool0 joint (tool0 = ABB tool0).
+  Limits: axis 1 +-170, 2 -100..+135, 3 -200..+70, 4 +-270, 5 +-130 deg: the same xacro's
+  <limit> (2.967, -1.745..2.356, -3.491..1.222, 4.712, 2.269 rad); axis 6 +-400 deg: ABB
+  product specification IRB 1200 (3HAC046982-001), "Robot motion" (the xacro stops at
+  +-360). Speeds 288, 240, 297, 400, 405, 600 deg/s: the same product specification,
+  "Robot motion", IRB 1200-7/0.7 (the xacro's velocity limits 5.027, 4.189, 5.236, 6.981,
+  7.069, 10.472 rad/s are 288, 240, 300, 400, 405, 600: axis 3 rounded up). Payload 7 kg,
+  reach 703 mm: the model name (IRB 1200-7/0.7) and the same specification.
 - KUKA KR 6 R900-2 (KR AGILUS): a1 25, a2 -25, b 0, c1 400, c2 455, c3 420, c4 90; offsets
   (0, -90, 0, 0, 0, 0); signs (-1, 1, 1, -1, 1, -1): ros-industrial/kuka_experimental,
-  kuka_kr6_support/config/opw_parameters_kr6r900_2.yaml. Limits and speeds: KUKA KR AGILUS
-  specification (KR 6 R900-2): A1 +-170, A2 -190..+45, A3 -120..+156, A4 +-185, A5 +-120,
-  A6 +-350; 360, 300, 360, 381, 388, 615 deg/s; payload 6 kg, reach 901 mm.
+  kuka_kr6_support/config/opw_parameters_kr6r900_2.yaml and urdf/kr6r900_2_macro.xacro
+  (commit b4b53f4fb7f4), joint_a1..joint_a6 origins and flange-tool0 (tool0 = $FLANGE).
+  Limits A1 +-170, A2 -190..+45, A3 -120..+156, A4 +-185, A5 +-120, A6 +-350 deg and speeds
+  360, 300, 360, 450, 450, 540 deg/s: the same xacro's <limit> lower/upper/velocity
+  (radians(...) of those degrees), and KUKA's own ROS 2 description, kroshu/
+  kuka_robot_descriptions, kuka_agilus_support/config/kr6_r900_2_joint_limits.yaml (commit
+  0b788db8df49): max_velocity 6.2832, 5.236, 6.2832, 7.854, 7.854, 9.4248 rad/s. (Until
+  issue 28 the library had A4-A6 381, 388, 615 deg/s: the older KR 6 R900 sixx's, the same
+  repository's kr6_r900_sixx_joint_limits.yaml.) KUKA's specification "Spez KR AGILUS-2"
+  itself could not be read here (only its title page is reachable), so its page is not
+  cited. Payload 6 kg, reach 901 mm: KUKA's data sheet of the KR 6 R900-2.
 - FANUC M-10iA: a1 150, a2 -200, b 0, c1 450, c2 600, c3 640, c4 100; offsets (0, 0, -90,
   0, 0, 180); signs (1, 1, -1, -1, -1, -1): ros-industrial/fanuc, fanuc_m10ia_support/
-  config/opw_parameters_m10ia.yaml. Limits and speeds: the same package's
-  urdf/m10ia_macro.xacro (J1 +-180, J2 -90..+160, J3 -180..+264, J4 +-190, J5 +-190, J6
-  +-360; 210, 190, 210, 400, 400, 600 deg/s, FANUC's M-10iA data sheet values), J3 taken
-  as the controller's (coupled) value; payload 10 kg, reach 1420 mm. CHECK J3's range
-  against the robot's manual: the data sheet gives the range, not which zero it counts from.
+  config/opw_parameters_m10ia.yaml and urdf/m10ia_macro.xacro (commit e9bafced8e1f):
+  joint_1..joint_6 origins, base_link-base (FANUC world frame 450 mm up) and link_6-tool0.
+  Limits J1 +-180, J2 -90..+160, J3 -180..+264, J4 +-190, J5 +-190, J6 +-360 deg and speeds
+  210, 190, 210, 400, 400, 600 deg/s: the same xacro's <limit> (3.14, -1.57..2.79,
+  -3.14..4.61, 3.31, 3.31, 6.28 rad; 3.67, 3.32, 3.67, 6.98, 6.98, 10.47 rad/s), J3 taken
+  as the controller's (coupled) value; payload 10 kg, reach 1420 mm: FANUC's M-10iA data
+  sheet. CHECK J3's range against the robot's manual: the xacro gives the range, not which
+  zero it counts from.
 - Universal Robots UR5e: d1 162.5, a2 -425, a3 -392.2, d4 133.3, d5 99.7, d6 99.6, alpha
-  (90, 0, 0, 90, -90, 0): UR's published DH parameters ("DH parameters for calculations of
-  kinematics and dynamics", universal-robots.com; UniversalRobots/
-  Universal_Robots_ROS2_Description config/ur5e/default_kinematics.yaml). Controller joints
-  are the DH angles (no offsets, no sign changes). Limits +-360 every joint, speeds 180 deg/s
-  every joint, payload 5 kg, reach 850 mm (UR5e technical specifications).
-- NACHI MZ07: `presets.py` (seed 003 and the sources named there).
+  (90, 0, 0, 90, -90, 0): UniversalRobots/Universal_Robots_ROS2_Description,
+  config/ur5e/default_kinematics.yaml (commit 2221ec0f720f), and UR's "DH parameters for
+  calculations of kinematics and dynamics" (universal-robots.com). Controller joints are the
+  DH angles (no offsets, no sign changes). Limits +-360 deg and speeds 180 deg/s every joint:
+  the same repository's config/ur5e/joint_limits.yaml (its sources: UR5e User Manual,
+  version 5.8; it cuts the elbow to +-180 for planning only); payload 5 kg, reach 850 mm:
+  UR5e technical specifications.
+- NACHI MZ07: `presets.py` (a real MZ07F's teach-pendant data and the chain fitted to it,
+  with each number's source there).
 
 The model's base is the robot's foot (ROS-Industrial's base_link); programs state work
 objects in the controller's base frame, `LibraryRobot.T_base_controller`: the same frame for
@@ -183,7 +206,7 @@ def _convention(
 _FANUC_COUPLING = np.zeros((6, 6))
 _FANUC_COUPLING[2, 1] = -1.0  # ctrl J3 = ros J3 - ros J2 = s3 q3 - s2 q2, s2 = +1
 
-_UR5E_DH = np.array(
+_UR5E_DH = np.array(  # config/ur5e/default_kinematics.yaml (module docstring)
     [
         [0.0, 0.1625, 0.0, math.pi / 2],
         [0.0, 0.0, -0.425, 0.0],
@@ -199,7 +222,9 @@ _ROBOTS = (
         name="irb1200_7_70",
         title="ABB IRB 1200-7/0.7",
         vendor="abb",
+        # irb1200_7_70_macro.xacro joint origins (module docstring)
         dh=opw_dh(0.0, -0.042, 0.0, 0.3991, 0.350, 0.351, 0.082, (0, 0, -math.pi / 2, 0, 0, 0)),
+        # xacro <limit>, axis 6 and the speeds: ABB product specification IRB 1200
         controller_limits_deg=np.array(
             [[-170, 170], [-100, 135], [-200, 70], [-270, 270], [-130, 130], [-400, 400]], float
         ),
@@ -208,31 +233,37 @@ _ROBOTS = (
         payload_kg=7.0,
         reach_mm=703.0,
         home_deg=np.zeros(6),
-        source="ros-industrial/abb abb_irb1200_support (URDF); ABB product specification IRB 1200",
+        source="ros-industrial/abb abb_irb1200_support irb1200_7_70_macro.xacro;"
+        " ABB product specification IRB 1200 (3HAC046982-001)",
     ),
     LibraryRobot(
         name="kr6_r900_2",
         title="KUKA KR 6 R900-2",
         vendor="kuka",
+        # opw_parameters_kr6r900_2.yaml = kr6r900_2_macro.xacro joint origins
         dh=opw_dh(0.025, -0.025, 0.0, 0.400, 0.455, 0.420, 0.090, (0, -math.pi / 2, 0, 0, 0, 0)),
+        # kr6r900_2_macro.xacro <limit lower upper>
         controller_limits_deg=np.array(
             [[-170, 170], [-190, 45], [-120, 156], [-185, 185], [-120, 120], [-350, 350]], float
         ),
-        max_velocity_deg_s=np.array([360, 300, 360, 381, 388, 615], float),
+        # xacro <limit velocity> and kroshu kr6_r900_2_joint_limits.yaml (module docstring)
+        max_velocity_deg_s=np.array([360, 300, 360, 450, 450, 540], float),
         convention=_convention((-1, 1, 1, -1, 1, -1)),
         payload_kg=6.0,
         reach_mm=901.0,
         home_deg=np.array([0.0, -90.0, 90.0, 0.0, 0.0, 0.0]),
-        source="ros-industrial/kuka_experimental kuka_kr6_support opw_parameters_kr6r900_2.yaml;"
-        " KUKA KR AGILUS specification",
+        source="ros-industrial/kuka_experimental kuka_kr6_support kr6r900_2_macro.xacro;"
+        " kroshu/kuka_robot_descriptions kr6_r900_2_joint_limits.yaml",
     ),
     LibraryRobot(
         name="m10ia",
         title="FANUC M-10iA",
         vendor="fanuc",
+        # opw_parameters_m10ia.yaml = m10ia_macro.xacro joint origins
         dh=opw_dh(
             0.150, -0.200, 0.0, 0.450, 0.600, 0.640, 0.100, (0, 0, -math.pi / 2, 0, 0, math.pi)
         ),
+        # m10ia_macro.xacro <limit lower upper> and <limit velocity> (module docstring)
         controller_limits_deg=np.array(
             [[-180, 180], [-90, 160], [-180, 264], [-190, 190], [-190, 190], [-360, 360]], float
         ),
@@ -241,7 +272,7 @@ _ROBOTS = (
         payload_kg=10.0,
         reach_mm=1420.0,
         home_deg=np.zeros(6),
-        source="ros-industrial/fanuc fanuc_m10ia_support (opw_parameters_m10ia.yaml, URDF)",
+        source="ros-industrial/fanuc fanuc_m10ia_support m10ia_macro.xacro",
         controller_base_m=(0.0, 0.0, 0.450),  # URDF base_link-base: FANUC world coordinates
     ),
     LibraryRobot(
@@ -255,7 +286,8 @@ _ROBOTS = (
         payload_kg=5.0,
         reach_mm=850.0,
         home_deg=np.zeros(6),
-        source="Universal Robots DH parameters; Universal_Robots_ROS2_Description ur5e",
+        source="Universal_Robots_ROS2_Description config/ur5e (default_kinematics.yaml,"
+        " joint_limits.yaml); Universal Robots DH parameters",
     ),
     LibraryRobot(
         name="mz07",
@@ -266,9 +298,10 @@ _ROBOTS = (
         max_velocity_deg_s=presets.MZ07_MAX_VELOCITY_DEG_S,
         convention=presets.MZ07_CONVENTION,
         payload_kg=7.0,
-        reach_mm=723.0,
+        reach_mm=723.0,  # to the wrist centre: 50 + 330 + hypot(340, 45) of the table
         home_deg=presets.MZ07_CONTROLLER_UPRIGHT_DEG,
-        source="seed 003 Table 2; see presets.py",
+        source="a real MZ07F's teach-pendant data, gstorm-b/RobotKinematics nachi-mz07f.md;"
+        " see presets.py",
         model_limits_deg=presets.MZ07_LIMITS_DEG,
     ),
 )

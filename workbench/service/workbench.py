@@ -162,11 +162,12 @@ class Workbench:
         q = joint_vector(q, model.dof, "joints")
         lo, hi = model.limits[:, 0], model.limits[:, 1]
         bad = np.flatnonzero((q < lo - 1e-9) | (q > hi + 1e-9))
-        if bad.size:
-            j = int(bad[0])
+        if bad.size:  # told in the controller's values, as the jog panel shows them
+            j, conv = int(bad[0]), model.convention
+            qc, lim = conv.to_controller(q), conv.limits_to_controller(model.limits)
             raise JointLimitError(
-                f"joint {j + 1}: {to_deg(q[j]):.3f} deg is outside its limits"
-                f" [{to_deg(lo[j]):.3f}, {to_deg(hi[j]):.3f}] deg"
+                f"joint {j + 1}: {to_deg(qc[j]):.3f} deg is outside its limits"
+                f" [{to_deg(lim[j, 0]):.3f}, {to_deg(lim[j, 1]):.3f}] deg (controller)"
             )
         with self._lock:
             self._q = np.clip(q, lo, hi)

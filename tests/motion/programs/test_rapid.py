@@ -171,10 +171,10 @@ def test_cfx_against_the_manuals_rows():
 
 
 def _wrist_centre_in_front(model, q_model) -> bool:  # noqa: ANN001
-    """Independent of arm_configuration: the wrist centre (flange - 90 mm along its z) against
-    the horizontal direction of axis 1 (q1)."""
+    """Independent of arm_configuration: the wrist centre (flange - 78 mm along its z, the
+    MZ07's) against the horizontal direction of axis 1 (q1)."""
     T = model.fk(q_model)
-    wc = T[:3, 3] - 0.090 * T[:3, 2]
+    wc = T[:3, 3] - 0.078 * T[:3, 2]
     q1 = float(model.convention.to_controller(q_model)[0])
     return float(wc[:2] @ [np.cos(q1), np.sin(q1)]) > 0.0
 

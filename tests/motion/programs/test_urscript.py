@@ -205,13 +205,9 @@ def test_malformed_files_name_the_line() -> None:
             {"demo.script": text.replace("fixture = p[0.6, -0.1, 0.2,", "fixture = p[0.6, -0.1,")}
         )
     with pytest.raises(InputError, match=r"line \d+: pose_trans of 'table'"):
-        read_urscript(
-            {
-                "demo.script": text.replace(
-                    "pose_trans(fixture, p[0.195", "pose_trans(table, p[0.195"
-                )
-            }
-        )
+        bad = text.replace("pose_trans(fixture, p[", "pose_trans(table, p[", 1)
+        assert bad != text
+        read_urscript({"demo.script": bad})
     with pytest.raises(InputError, match="no 'def"):
         read_urscript({"x.script": "movej([0,0,0,0,0,0])\n"})
     with pytest.raises(InputError, match="exactly one .script"):

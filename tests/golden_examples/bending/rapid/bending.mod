@@ -86,7 +86,7 @@ MODULE bending
         ! transfer to the pallet as planned (checked)
         MoveJ transfer1, v1000\T:=0.4227, z5, suction_gripper\WObj:=wobj0;
         MoveJ transfer2, v1000\T:=0.3189, z5, suction_gripper\WObj:=wobj0;
-        MoveJ pallet, v1000\T:=0.3236, fine, suction_gripper\WObj:=wobj0;
+        MoveJ pallet, v1000\T:=0.3295, fine, suction_gripper\WObj:=wobj0;
         ! unload
         ! gripper open
         SetDO vacuum, 0;

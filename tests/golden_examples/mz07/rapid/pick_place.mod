@@ -29,6 +29,6 @@ MODULE pick_place
         WaitDI gripper_opened, 1\MaxTime:=2;
         WaitTime 0.2;
         MoveL retract, [250,500,5000,1000], fine, gripper\WObj:=wobj0;
-        MoveAbsJ home, v1000\T:=0.3449, fine, gripper\WObj:=wobj0;
+        MoveAbsJ home, v1000\T:=0.3127, fine, gripper\WObj:=wobj0;
     ENDPROC
 ENDMODULE
