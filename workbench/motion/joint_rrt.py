@@ -136,8 +136,8 @@ def plan_joint_rrt_connect(
             raise InputError(f"{name} must be {space.dof} finite joint values [rad], got {q}")
         if not space.valid(q):
             raise CollisionError(
-                f"{name.split('_')[1]} configuration {np.round(np.degrees(q), 1).tolist()} deg "
-                f"is not valid: {space.explain(q)}; move the {name.split('_')[1]} pose or the grasp"
+                f"the {name.split('_')[1]} configuration is not valid: {space.explain(q)}; move"
+                f" the {name.split('_')[1]} pose or the grasp"  # no joints: only the caller knows its convention
             )
     lo, hi = space.limits[:, 0], space.limits[:, 1]
     step = 0.1 * float(space.distance(lo, hi)) if range_ is None else float(range_)

@@ -10,6 +10,8 @@ robot and part lies within REACH of every joint axis), and brute-force pairs for
 
 from __future__ import annotations
 
+import re
+
 import fcl
 import numpy as np
 import pytest
@@ -25,7 +27,7 @@ from workbench.assembly.planners.joint_rrt import (
     plan_carried_path,
 )
 from workbench.collision import RobotCollisionChecker, Solid
-from workbench.errors import CollisionError, PlanningError, UnreachableError
+from workbench.errors import CollisionError, InputError, PlanningError, UnreachableError
 from workbench.geometry.transforms import xyz_rpy_to_transform
 from workbench.kinematics import link_meshes
 from workbench.kinematics.robot_library import preset_robot
@@ -219,6 +221,17 @@ def test_goal_out_of_reach_is_named(scene):
     far = xyz_rpy_to_transform([1.8, 0.0, 0.3], [0.0, 0.0, 0.0])
     with pytest.raises(UnreachableError, match=r"goal: .*out of reach.*TCP at \[1800\.0, 0\.0"):
         plan_carried_path(space, START, far, Q_HOME)
+
+
+def test_a_start_that_does_not_hold_the_part_is_named_in_controller_joints(scene):
+    """The refusal shows the joints as the pendant does (the preset's convention), not the
+    model's: twin, the convention's own `to_controller` of the same joints."""
+    _, _, _, space = scene
+    wrong = Q_HOME + np.array([0.3, 0.2, -0.1, 0.0, 0.4, 0.0])
+    shown = np.round(np.degrees(ROBOT.convention.to_controller(wrong)), 2).tolist()
+    assert shown != np.round(np.degrees(wrong), 2).tolist()  # the two conventions differ here
+    with pytest.raises(InputError, match=re.escape(f"q_start (controller joints {shown} deg)")):
+        plan_carried_path(space, START, GOAL, Q_HOME, q_start=wrong)
 
 
 def test_a_configuration_in_collision_or_no_path_in_time_says_why(scene):

@@ -288,7 +288,9 @@ def carry_ends(
         qs0 = np.asarray(q_start, float).reshape(-1)
         if qs0.shape != (space.dof,) or np.abs(space.part_poses(qs0)[0] - S).max() > 1e-6:
             raise InputError(
-                f"q_start {np.round(np.degrees(qs0), 2).tolist()} deg does not hold the part "
+                "q_start (controller joints"
+                f" {np.round(np.degrees(space.model.convention.to_controller(qs0)), 2).tolist()}"
+                " deg) does not hold the part "
                 "at its start pose; give the configuration where the approach ended"
             )
         rs, bs = sols["start"]
