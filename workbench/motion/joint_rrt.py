@@ -135,9 +135,10 @@ def plan_joint_rrt_connect(
         if q.shape != (space.dof,) or not np.all(np.isfinite(q)):
             raise InputError(f"{name} must be {space.dof} finite joint values [rad], got {q}")
         if not space.valid(q):
+            # No joint values: only the caller knows the controller's convention.
             raise CollisionError(
                 f"the {name.split('_')[1]} configuration is not valid: {space.explain(q)}; move"
-                f" the {name.split('_')[1]} pose or the grasp"  # no joints: only the caller knows its convention
+                f" the {name.split('_')[1]} pose or the grasp"
             )
     lo, hi = space.limits[:, 0], space.limits[:, 1]
     step = 0.1 * float(space.distance(lo, hi)) if range_ is None else float(range_)

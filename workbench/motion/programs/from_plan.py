@@ -136,7 +136,8 @@ def planner_durations(
     return move_durations(path, traj, len(program.moves))
 
 
-#: `fit_linear_speed` stops when the planned time is this close (relative) to the wanted one.
+#: `fit_linear_speed` takes the slowest speed whose planned time is at most this much
+#: (relative) above the wanted one.
 FIT_TOLERANCE = 1e-3
 
 
